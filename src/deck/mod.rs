@@ -1,0 +1,310 @@
+//! Radioss block-format reader (starter `NAME_0000.rad`, engine `NAME_0001.rad`).
+//!
+//! `source` turns files into keyword blocks, `fields` reads fixed-column
+//! fields, and one file per keyword family turns blocks into typed cards that
+//! keep their file:line. Nothing here resolves ids: that is `model::build`.
+
+pub mod error;
+pub mod fields;
+pub mod source;
+
+mod conditions;
+mod controls;
+mod engine;
+mod interfaces;
+mod materials;
+mod mesh;
+mod parts;
+mod sets;
+
+pub use conditions::*;
+pub use controls::*;
+pub use engine::*;
+pub use error::{DeckError, DeckResult, Loc, Warning};
+pub use interfaces::*;
+pub use materials::*;
+pub use mesh::*;
+pub use parts::*;
+pub use sets::*;
+
+use fields::Cards;
+use serde::{Deserialize, Serialize};
+use source::Block;
+use std::path::{Path, PathBuf};
+
+/// An entity id as written in the deck (strictly positive).
+pub type Id = u64;
+
+/// Everything read from a starter deck (and its engine file, if any).
+#[derive(Clone, Debug, Default, Serialize, Deserialize)]
+pub struct Deck {
+    pub path: PathBuf,
+    pub begin: Option<Begin>,
+    pub title: String,
+    pub controls: Controls,
+    pub nodes: Vec<NodeCard>,
+    pub elements: Elements,
+    pub parts: Vec<PartCard>,
+    pub materials: Vec<MaterialCard>,
+    pub properties: Vec<PropertyCard>,
+    pub def_shell: Option<DefShell>,
+    pub def_solid: Option<DefSolid>,
+    pub functions: Vec<FunctionCard>,
+    pub added_masses: Vec<AddedMassCard>,
+    pub node_groups: Vec<NodeGroupCard>,
+    pub shell_groups: Vec<ShellGroupCard>,
+    pub surfaces: Vec<SurfaceCard>,
+    pub subsets: Vec<SubsetCard>,
+    pub bcs: Vec<BcsCard>,
+    pub imposed_velocities: Vec<ImposedMotionCard>,
+    pub imposed_displacements: Vec<ImposedMotionCard>,
+    pub initial_velocities: Vec<InitialVelocityCard>,
+    pub concentrated_loads: Vec<ConcentratedLoadCard>,
+    pub gravity: Vec<GravityCard>,
+    pub rigid_walls: Vec<RigidWallCard>,
+    pub rigid_bodies: Vec<RigidBodyCard>,
+    pub sections: Vec<SectionCard>,
+    pub interfaces: Vec<InterfaceCard>,
+    pub time_histories: Vec<TimeHistoryCard>,
+    pub animations: Vec<AnimCard>,
+    pub engine: Option<Engine>,
+    pub warnings: Vec<Warning>,
+}
+
+/// Reading options.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct ReadOptions {
+    /// Unknown keywords are errors instead of warnings.
+    pub strict: bool,
+}
+
+/// Reads a starter deck, and the engine file `NAME_0001.rad` beside it when
+/// `engine` is `Auto` and it exists (or the given file).
+pub fn read_deck(starter: &Path, engine: EngineFile, opts: ReadOptions) -> DeckResult<Deck> {
+    let src = source::read(starter)?;
+    let mut deck = Deck {
+        path: starter.to_path_buf(),
+        ..Default::default()
+    };
+    for block in &src.blocks {
+        parse_starter_block(block, &mut deck, opts)?;
+    }
+    if src.end.is_none() {
+        let loc = src
+            .blocks
+            .last()
+            .map(|b| {
+                b.lines
+                    .last()
+                    .map(|l| l.loc.clone())
+                    .unwrap_or(b.loc.clone())
+            })
+            .unwrap_or(Loc {
+                file: starter.to_path_buf(),
+                line: 0,
+            });
+        return Err(DeckError::new(
+            loc,
+            "/END",
+            "",
+            "the starter deck ends without /END (truncated file?); expected /END as its last keyword",
+        ));
+    }
+    if deck.begin.is_none() {
+        return Err(DeckError::new(
+            Loc {
+                file: starter.to_path_buf(),
+                line: src.blocks.first().map(|b| b.loc.line).unwrap_or(1),
+            },
+            "/BEGIN",
+            "",
+            "no /BEGIN block; a starter deck opens with /BEGIN (title, version, units)",
+        ));
+    }
+    let engine_path = match engine {
+        EngineFile::None => None,
+        EngineFile::Given(p) => Some(p),
+        EngineFile::Auto => engine_beside(starter).filter(|p| p.is_file()),
+    };
+    if let Some(p) = engine_path {
+        deck.engine = Some(read_engine(&p, &mut deck.warnings, opts)?);
+    }
+    Ok(deck)
+}
+
+/// Which engine file to read with the starter.
+#[derive(Clone, Debug)]
+pub enum EngineFile {
+    /// `NAME_0001.rad` beside `NAME_0000.rad`, if present.
+    Auto,
+    None,
+    Given(PathBuf),
+}
+
+/// `dir/NAME_0001.rad` for `dir/NAME_0000.rad`.
+pub fn engine_beside(starter: &Path) -> Option<PathBuf> {
+    let name = starter.file_name()?.to_str()?;
+    let stem = name
+        .strip_suffix("_0000.rad")
+        .or_else(|| name.strip_suffix("_0000.RAD"))?;
+    Some(starter.with_file_name(format!("{stem}_0001.rad")))
+}
+
+/// Reads an engine file (`NAME_0001.rad`).
+pub fn read_engine(
+    path: &Path,
+    warnings: &mut Vec<Warning>,
+    opts: ReadOptions,
+) -> DeckResult<Engine> {
+    let src = source::read(path)?;
+    let mut eng = Engine::default();
+    for block in &src.blocks {
+        if !engine::parse_engine_block(block, &mut eng)? {
+            unknown_keyword(block, warnings, opts, "engine")?;
+        }
+    }
+    Ok(eng)
+}
+
+fn unknown_keyword(
+    block: &Block,
+    warnings: &mut Vec<Warning>,
+    opts: ReadOptions,
+    file_kind: &str,
+) -> DeckResult<()> {
+    let msg = format!(
+        "keyword not supported in the {file_kind} file; its {} line(s) are skipped",
+        block.lines.len()
+    );
+    if opts.strict {
+        return Err(DeckError::new(
+            block.loc.clone(),
+            &block.header,
+            "",
+            format!("keyword not supported in the {file_kind} file (--strict)"),
+        ));
+    }
+    warnings.push(Warning {
+        loc: block.loc.clone(),
+        keyword: block.header.clone(),
+        message: msg,
+    });
+    Ok(())
+}
+
+/// Dispatches one starter block to its family's parser.
+fn parse_starter_block(block: &Block, deck: &mut Deck, opts: ReadOptions) -> DeckResult<()> {
+    let p: Vec<&str> = block.parts.iter().map(String::as_str).collect();
+    let handled = match p[0] {
+        "BEGIN" => controls::parse_begin(block, deck).map(|_| true)?,
+        "TITLE" => {
+            deck.title = Cards::new(block).title();
+            true
+        }
+        "ANALY" | "SPMD" | "IOFLAG" | "RANDOM" | "SHFRA" => controls::parse_control(block, deck)?,
+        "TH" => controls::parse_th(block, deck)?,
+        "ANIM" => controls::parse_anim(block, deck)?,
+        "NODE" => mesh::parse_nodes(block, deck).map(|_| true)?,
+        "SHELL" | "SH3N" | "BRICK" | "TETRA4" | "SPRING" | "TRUSS" | "BEAM" => {
+            mesh::parse_elements(block, deck).map(|_| true)?
+        }
+        "PART" => parts::parse_part(block, deck).map(|_| true)?,
+        "MAT" => materials::parse_material(block, deck)?,
+        "PROP" => parts::parse_property(block, deck)?,
+        "DEF_SHELL" | "DEF_SOLID" => parts::parse_defaults(block, deck).map(|_| true)?,
+        "FUNCT" => parts::parse_function(block, deck).map(|_| true)?,
+        "ADMAS" => parts::parse_admas(block, deck)?,
+        "GRNOD" | "GRSHEL" | "SURF" | "SUBSET" => sets::parse_set(block, deck)?,
+        "BCS" | "IMPVEL" | "IMPDISP" | "INIVEL" | "CLOAD" | "GRAV" | "RWALL" | "RBODY" | "SECT" => {
+            conditions::parse_condition(block, deck)?
+        }
+        "INTER" => interfaces::parse_interface(block, deck)?,
+        _ => false,
+    };
+    if !handled {
+        unknown_keyword(block, &mut deck.warnings, opts, "starter")?;
+    }
+    Ok(())
+}
+
+/// The id that follows the keyword name in the header (`/PART/12` → 12),
+/// at position `idx` of the header parts. Must be a positive integer.
+pub(crate) fn header_id(block: &Block, idx: usize, name: &str) -> DeckResult<Id> {
+    let t = block.parts.get(idx).map(String::as_str).unwrap_or("");
+    if t.is_empty() {
+        return Err(DeckError::new(
+            block.loc.clone(),
+            &block.header,
+            name,
+            format!(
+                "missing {name} in the keyword line; expected e.g. {}/1",
+                block.header
+            ),
+        ));
+    }
+    match fields::parse_int(t) {
+        Ok(v) if v > 0 => Ok(v as Id),
+        _ => Err(DeckError::new(
+            block.loc.clone(),
+            &block.header,
+            name,
+            format!("'{t}' in the keyword line: expected a positive integer id"),
+        )),
+    }
+}
+
+/// An optional id in the header (unit_ID etc.): 0 when absent.
+pub(crate) fn header_id_opt(block: &Block, idx: usize, name: &str) -> DeckResult<Id> {
+    match block.parts.get(idx).map(|s| s.trim()) {
+        None | Some("") => Ok(0),
+        Some(t) => match fields::parse_int(t) {
+            Ok(v) if v >= 0 => Ok(v as Id),
+            _ => Err(DeckError::new(
+                block.loc.clone(),
+                &block.header,
+                name,
+                format!("'{t}' in the keyword line: expected a non-negative integer"),
+            )),
+        },
+    }
+}
+
+impl<'a> fields::Card<'a> {
+    /// A 10-column id field that must be given and positive.
+    pub fn id(&self, col: usize, name: &str) -> DeckResult<Id> {
+        match self.int_opt(col, 10, name)? {
+            Some(v) if v > 0 => Ok(v as Id),
+            Some(v) => Err(self.err(name, format!("{v}: expected a positive id"))),
+            None => Err(self.err(name, "blank: expected a positive id")),
+        }
+    }
+
+    /// A 10-column optional id field: 0 (or blank) means none.
+    pub fn id_opt(&self, col: usize, name: &str) -> DeckResult<Id> {
+        match self.int_opt(col, 10, name)? {
+            None | Some(0) => Ok(0),
+            Some(v) if v > 0 => Ok(v as Id),
+            Some(v) => Err(self.err(name, format!("{v}: expected a positive id or 0"))),
+        }
+    }
+
+    /// A 10-column flag that must be one of `allowed` (blank → `default`).
+    pub fn flag(&self, col: usize, name: &str, default: i64, allowed: &[i64]) -> DeckResult<i64> {
+        let v = self.int(col, name, default)?;
+        if allowed.contains(&v) {
+            Ok(v)
+        } else {
+            Err(self.err(name, format!("{v}: expected one of {allowed:?}")))
+        }
+    }
+
+    /// A 20-column real that must be > 0 (`what` says what it is).
+    pub fn positive_real(&self, col: usize, name: &str, what: &str) -> DeckResult<f64> {
+        let v = self.real(col, name, 0.0)?;
+        if v > 0.0 {
+            Ok(v)
+        } else {
+            Err(self.err(name, format!("{v}: {what} must be > 0")))
+        }
+    }
+}

@@ -1,0 +1,501 @@
+//! /PART, /PROP/TYPE1 (SHELL), /PROP/TYPE14 (SOLID), /PROP/TYPE4 (SPRING),
+//! /PROP/TYPE13 (SPR_BEAM), /DEF_SHELL, /DEF_SOLID, /FUNCT, /ADMAS.
+//! Values are kept as written (0 = "default"); `model::build` resolves the
+//! defaults that depend on other cards (/DEF_SHELL, the material law).
+
+use super::error::{DeckError, DeckResult, Loc};
+use super::fields::Cards;
+use super::source::Block;
+use super::{header_id, header_id_opt, Deck, Id};
+use serde::{Deserialize, Serialize};
+
+/// `/PART/part_ID`: title; prop_ID (1-10), mat_ID (11-20), subset_ID (21-30), Thick (31-50).
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct PartCard {
+    pub id: Id,
+    pub title: String,
+    pub prop: Id,
+    pub mat: Id,
+    pub subset: Id,
+    /// Part thickness overriding the property's (0 = none).
+    pub thick: f64,
+    pub loc: Loc,
+}
+
+pub(super) fn parse_part(block: &Block, deck: &mut Deck) -> DeckResult<()> {
+    let id = header_id(block, 1, "part_ID")?;
+    let mut cards = Cards::new(block);
+    let title = cards.title();
+    let c = cards.next("the card with prop_ID, mat_ID, subset_ID")?;
+    let prop = c.id_opt(1, "prop_ID")?;
+    let mat = c.id_opt(11, "mat_ID")?;
+    let subset = c.id_opt(21, "subset_ID")?;
+    let thick = c.real(31, "Thick", 0.0)?;
+    if thick < 0.0 {
+        return Err(c.err(
+            "Thick",
+            format!("{thick}: part thickness must be >= 0 (0 = property thickness)"),
+        ));
+    }
+    deck.parts.push(PartCard {
+        id,
+        title,
+        prop,
+        mat,
+        subset,
+        thick,
+        loc: c.loc(),
+    });
+    Ok(())
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct PropertyCard {
+    pub id: Id,
+    pub unit_id: Id,
+    pub title: String,
+    pub kind: PropertyKind,
+    pub loc: Loc,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub enum PropertyKind {
+    Shell(ShellProperty),
+    Solid(SolidProperty),
+    Spring(SpringProperty),
+    SpringBeam(SpringBeamProperty),
+}
+
+/// /PROP/TYPE1 (/PROP/SHELL), as written (0 = default).
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct ShellProperty {
+    pub ishell: i64,
+    pub ismstr: i64,
+    pub ish3n: i64,
+    pub idrill: i64,
+    pub p_thick_fail: f64,
+    pub hm: f64,
+    pub hf: f64,
+    pub hr: f64,
+    pub dm: f64,
+    pub dn: f64,
+    /// Integration points through the thickness (0 = global/default).
+    pub n: i64,
+    pub istrain: i64,
+    pub thick: f64,
+    pub ashear: f64,
+    pub ithick: i64,
+    pub iplas: i64,
+}
+
+/// /PROP/TYPE14 (/PROP/SOLID), as written (0 = default).
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct SolidProperty {
+    pub isolid: i64,
+    pub ismstr: i64,
+    pub icpre: i64,
+    pub itetra10: i64,
+    /// Integration points, packed ijk (Isolid 14/16).
+    pub inpts: i64,
+    pub itetra4: i64,
+    pub iframe: i64,
+    pub dn: f64,
+    /// Quadratic bulk viscosity (0 → 1.1).
+    pub qa: f64,
+    /// Linear bulk viscosity (0 → 0.05).
+    pub qb: f64,
+    /// Hourglass coefficient (0 → 0.1).
+    pub h: f64,
+    pub lambda_v: f64,
+    pub mu_v: f64,
+    pub dtmin: f64,
+    pub istrain: i64,
+}
+
+/// /PROP/TYPE4 (/PROP/SPRING): axial spring, linear or through functions.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct SpringProperty {
+    pub mass: f64,
+    pub sens_id: Id,
+    pub isflag: i64,
+    pub ileng: i64,
+    pub k: f64,
+    pub c: f64,
+    pub a: f64,
+    pub b: f64,
+    pub d: f64,
+    pub fct_id1: Id,
+    pub h: i64,
+    pub fct_id2: Id,
+    pub fct_id3: Id,
+    /// Failure elongations (0 → none).
+    pub delta_min: f64,
+    pub delta_max: f64,
+    pub fscale: f64,
+    pub e: f64,
+    pub ascale: f64,
+}
+
+/// /PROP/TYPE13 (/PROP/SPR_BEAM): six-degree-of-freedom spring beam.
+/// Read: mass, inertia and per-direction K, C (six blocks of three cards:
+/// K C A B D / fct_ID1 H fct_ID2 fct_ID3 fct_ID4 δmin δmax / F E Ascale Hscale).
+/// The function and scale cards are not interpreted yet.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct SpringBeamProperty {
+    pub mass: f64,
+    pub inertia: f64,
+    pub skew_id: Id,
+    pub sens_id: Id,
+    pub isflag: i64,
+    pub ifail: i64,
+    pub ileng: i64,
+    /// Stiffness per direction (tension, shear s, shear t, torsion, bending y, bending z).
+    pub k: [f64; 6],
+    /// Damping per direction.
+    pub c: [f64; 6],
+}
+
+/// Returns false for a property type this reader does not support.
+pub(super) fn parse_property(block: &Block, deck: &mut Deck) -> DeckResult<bool> {
+    let ty = block.parts.get(1).map(String::as_str).unwrap_or("");
+    let which = match ty {
+        "TYPE1" | "SHELL" => 1,
+        "TYPE14" | "SOLID" => 14,
+        "TYPE4" | "SPRING" => 4,
+        "TYPE13" | "SPR_BEAM" => 13,
+        _ => return Ok(false),
+    };
+    let id = header_id(block, 2, "prop_ID")?;
+    let unit_id = header_id_opt(block, 3, "unit_ID")?;
+    let mut cards = Cards::new(block);
+    let title = cards.title();
+    let kind = match which {
+        1 => PropertyKind::Shell(read_shell(&mut cards)?),
+        14 => PropertyKind::Solid(read_solid(&mut cards)?),
+        4 => PropertyKind::Spring(read_spring(&mut cards)?),
+        _ => PropertyKind::SpringBeam(read_spring_beam(&mut cards)?),
+    };
+    deck.properties.push(PropertyCard {
+        id,
+        unit_id,
+        title,
+        kind,
+        loc: block.loc.clone(),
+    });
+    Ok(true)
+}
+
+fn read_shell(cards: &mut Cards) -> DeckResult<ShellProperty> {
+    // Ishell (1-10) Ismstr (11-20) Ish3n (21-30) Idrill (31-40) P_thick_fail (61-80)
+    let c1 = cards.next("the card with Ishell, Ismstr, Ish3n, Idrill")?;
+    // hm (1-20) hf (21-40) hr (41-60) dm (61-80) dn (81-100)
+    let c2 = cards.next("the card with hm, hf, hr, dm, dn")?;
+    // N (1-10) Istrain (11-20) Thick (21-40) Ashear (41-60) Ithick (71-80) Iplas (81-90)
+    let c3 = cards.next("the card with N, Istrain, Thick, Ashear, Ithick, Iplas")?;
+    let n = c3.int(1, "N", 0)?;
+    if !(0..=10).contains(&n) {
+        return Err(c3.err(
+            "N",
+            format!("{n}: expected 0 to 10 integration points through the thickness"),
+        ));
+    }
+    let thick = c3.positive_real(21, "Thick", "shell thickness")?;
+    let p = ShellProperty {
+        ishell: c1.int(1, "Ishell", 0)?,
+        ismstr: c1.int(11, "Ismstr", 0)?,
+        ish3n: c1.int(21, "Ish3n", 0)?,
+        idrill: c1.int(31, "Idrill", 0)?,
+        p_thick_fail: c1.real(61, "P_thick_fail", 0.0)?,
+        hm: c2.real(1, "hm", 0.0)?,
+        hf: c2.real(21, "hf", 0.0)?,
+        hr: c2.real(41, "hr", 0.0)?,
+        dm: c2.real(61, "dm", 0.0)?,
+        dn: c2.real(81, "dn", 0.0)?,
+        n,
+        istrain: c3.int(11, "Istrain", 0)?,
+        thick,
+        ashear: c3.real(41, "Ashear", 0.0)?,
+        ithick: c3.int(71, "Ithick", 0)?,
+        iplas: c3.int(81, "Iplas", 0)?,
+    };
+    for (v, name) in [(p.hm, "hm"), (p.hf, "hf"), (p.hr, "hr")] {
+        if v < 0.0 {
+            return Err(c2.err(name, format!("{v}: hourglass coefficient must be >= 0")));
+        }
+    }
+    Ok(p)
+}
+
+fn read_solid(cards: &mut Cards) -> DeckResult<SolidProperty> {
+    // Isolid (1-10) Ismstr (11-20) Icpre (31-40) Itetra10 (41-50) Inpts (51-60) Itetra4 (61-70) Iframe (71-80) dn (81-100)
+    let c1 =
+        cards.next("the card with Isolid, Ismstr, Icpre, Itetra10, Inpts, Itetra4, Iframe, dn")?;
+    // qa (1-20) qb (21-40) h (41-60) LAMBDA_v (61-80) MU_v (81-100)
+    let c2 = cards.next("the card with qa, qb, h, LAMBDA_v, MU_v")?;
+    // dtmin (1-20) Istrain (21-30) Ihkt (31-40) — optional
+    let c3 = cards.next_opt();
+    let or = |v: f64, d: f64| if v == 0.0 { d } else { v };
+    let p = SolidProperty {
+        isolid: c1.int(1, "Isolid", 0)?,
+        ismstr: c1.int(11, "Ismstr", 0)?,
+        icpre: c1.int(31, "Icpre", 0)?,
+        itetra10: c1.int(41, "Itetra10", 0)?,
+        inpts: c1.int(51, "Inpts", 0)?,
+        itetra4: c1.int(61, "Itetra4", 0)?,
+        iframe: c1.int(71, "Iframe", 0)?,
+        dn: c1.real(81, "dn", 0.0)?,
+        qa: or(c2.real(1, "qa", 0.0)?, 1.1),
+        qb: or(c2.real(21, "qb", 0.0)?, 0.05),
+        h: or(c2.real(41, "h", 0.0)?, 0.1),
+        lambda_v: c2.real(61, "LAMBDA_v", 0.0)?,
+        mu_v: c2.real(81, "MU_v", 0.0)?,
+        dtmin: match c3 {
+            Some(c) => c.real(1, "dtmin", 0.0)?,
+            None => 0.0,
+        },
+        istrain: match c3 {
+            Some(c) => c.int(21, "Istrain", 0)?,
+            None => 0,
+        },
+    };
+    for (v, name, card) in [(p.qa, "qa", c2), (p.qb, "qb", c2), (p.h, "h", c2)] {
+        if v < 0.0 {
+            return Err(card.err(name, format!("{v}: expected a value >= 0")));
+        }
+    }
+    Ok(p)
+}
+
+fn read_spring(cards: &mut Cards) -> DeckResult<SpringProperty> {
+    // Mass (1-20) sens_ID (51-60) Isflag (61-70) Ileng (71-80)
+    let c1 = cards.next("the card with Mass, sens_ID, Isflag, Ileng")?;
+    // K (1-20) C (21-40) A (41-60) B (61-80) D (81-100)
+    let c2 = cards.next("the card with K, C, A, B, D")?;
+    // fct_ID1 (1-10) H (11-20) fct_ID2 (21-30) fct_ID3 (31-40) delta_min (61-80) delta_max (81-100)
+    let c3 = cards.next_opt();
+    // Fscale (1-20) E (21-40) Ascale (41-60)
+    let c4 = cards.next_opt();
+    let mass = c1.real(1, "Mass", 0.0)?;
+    if mass < 0.0 {
+        return Err(c1.err("Mass", format!("{mass}: spring mass must be >= 0")));
+    }
+    let k = c2.real(1, "K", 0.0)?;
+    if k < 0.0 {
+        return Err(c2.err("K", format!("{k}: spring stiffness must be >= 0")));
+    }
+    let (fct_id1, h, fct_id2, fct_id3, delta_min, delta_max) = match c3 {
+        Some(c) => (
+            c.id_opt(1, "fct_ID1")?,
+            c.int(11, "H", 0)?,
+            c.id_opt(21, "fct_ID2")?,
+            c.id_opt(31, "fct_ID3")?,
+            c.real(61, "delta_min", 0.0)?,
+            c.real(81, "delta_max", 0.0)?,
+        ),
+        None => (0, 0, 0, 0, 0.0, 0.0),
+    };
+    let (fscale, e, ascale) = match c4 {
+        Some(c) => (
+            c.real(1, "Fscale", 0.0)?,
+            c.real(21, "E", 0.0)?,
+            c.real(41, "Ascale", 0.0)?,
+        ),
+        None => (0.0, 0.0, 0.0),
+    };
+    Ok(SpringProperty {
+        mass,
+        sens_id: c1.id_opt(51, "sens_ID")?,
+        isflag: c1.int(61, "Isflag", 0)?,
+        ileng: c1.int(71, "Ileng", 0)?,
+        k,
+        c: c2.real(21, "C", 0.0)?,
+        a: or1(c2.real(41, "A", 0.0)?),
+        b: c2.real(61, "B", 0.0)?,
+        d: or1(c2.real(81, "D", 0.0)?),
+        fct_id1,
+        h,
+        fct_id2,
+        fct_id3,
+        delta_min,
+        delta_max,
+        fscale: or1(fscale),
+        e,
+        ascale: or1(ascale),
+    })
+}
+
+fn or1(v: f64) -> f64 {
+    if v == 0.0 {
+        1.0
+    } else {
+        v
+    }
+}
+
+fn read_spring_beam(cards: &mut Cards) -> DeckResult<SpringBeamProperty> {
+    // Mass (1-20) Inertia (21-40) skew_ID (41-50) sens_ID (51-60) Isflag (61-70) Ifail (71-80) Ileng (81-90)
+    let c1 = cards.next("the card with Mass, Inertia, skew_ID, sens_ID, Isflag, Ifail, Ileng")?;
+    let mut k = [0.0; 6];
+    let mut c = [0.0; 6];
+    // Then per direction (tension, shear s, shear t, torsion, bending y, bending z)
+    // a card K, C, A, B, D and a card fct_ID1, H, fct_ID2, fct_ID3, fct_ID4, delta_min, delta_max,
+    // then one card Fscale, E, Ascale, Hscale: 3 cards per direction.
+    for d in 0..6 {
+        let Some(kc) = cards.next_opt() else { break };
+        k[d] = kc.real(1, "K", 0.0)?;
+        c[d] = kc.real(21, "C", 0.0)?;
+        if k[d] < 0.0 {
+            return Err(kc.err("K", format!("{}: spring stiffness must be >= 0", k[d])));
+        }
+        let _functions = cards.next_opt();
+        let _scales = cards.next_opt();
+    }
+    Ok(SpringBeamProperty {
+        mass: c1.real(1, "Mass", 0.0)?,
+        inertia: c1.real(21, "Inertia", 0.0)?,
+        skew_id: c1.id_opt(41, "skew_ID")?,
+        sens_id: c1.id_opt(51, "sens_ID")?,
+        isflag: c1.int(61, "Isflag", 0)?,
+        ifail: c1.int(71, "Ifail", 0)?,
+        ileng: c1.int(81, "Ileng", 0)?,
+        k,
+        c,
+    })
+}
+
+/// /DEF_SHELL: global shell defaults (used where a /PROP/SHELL field is 0).
+#[derive(Clone, Debug, Serialize, Deserialize, Default, PartialEq)]
+pub struct DefShell {
+    pub ishell: i64,
+    pub ismstr: i64,
+    pub ithick: i64,
+    pub iplas: i64,
+    pub istrain: i64,
+    pub ish3n: i64,
+    pub idrill: i64,
+}
+
+/// /DEF_SOLID: global solid defaults.
+#[derive(Clone, Debug, Serialize, Deserialize, Default, PartialEq)]
+pub struct DefSolid {
+    pub isolid: i64,
+    pub ismstr: i64,
+    pub istrain: i64,
+    pub iframe: i64,
+}
+
+pub(super) fn parse_defaults(block: &Block, deck: &mut Deck) -> DeckResult<()> {
+    let mut cards = Cards::new(block);
+    if block.parts[0] == "DEF_SHELL" {
+        // ISHELL (1-10) ISMSTR (11-20) ITHICK (21-30) IPLAS (31-40) ISTRAIN (41-50) I_SH3N (71-80) IDRIL (81-90)
+        let c =
+            cards.next("the card with ISHELL, ISMSTR, ITHICK, IPLAS, ISTRAIN, I_SH3N, IDRIL")?;
+        deck.def_shell = Some(DefShell {
+            ishell: c.int(1, "ISHELL", 0)?,
+            ismstr: c.int(11, "ISMSTR", 0)?,
+            ithick: c.int(21, "ITHICK", 0)?,
+            iplas: c.int(31, "IPLAS", 0)?,
+            istrain: c.int(41, "ISTRAIN", 0)?,
+            ish3n: c.int(71, "I_SH3N", 0)?,
+            idrill: c.int(81, "IDRIL", 0)?,
+        });
+    } else {
+        // I_SOLID (1-10) ISMSTR (11-20) ISTRAIN (31-40) IFRAME (81-90)
+        let c = cards.next("the card with I_SOLID, ISMSTR, ISTRAIN, IFRAME")?;
+        deck.def_solid = Some(DefSolid {
+            isolid: c.int(1, "I_SOLID", 0)?,
+            ismstr: c.int(11, "ISMSTR", 0)?,
+            istrain: c.int(31, "ISTRAIN", 0)?,
+            iframe: c.int(81, "IFRAME", 0)?,
+        });
+    }
+    Ok(())
+}
+
+/// /FUNCT/fct_ID: title, then (X, Y) pairs (X 1-20, Y 21-40), X strictly increasing.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct FunctionCard {
+    pub id: Id,
+    pub title: String,
+    pub x: Vec<f64>,
+    pub y: Vec<f64>,
+    pub loc: Loc,
+}
+
+pub(super) fn parse_function(block: &Block, deck: &mut Deck) -> DeckResult<()> {
+    let id = header_id(block, 1, "fct_ID")?;
+    let mut cards = Cards::new(block);
+    let title = cards.title();
+    let (mut x, mut y) = (Vec::new(), Vec::new());
+    while let Some(c) = cards.next_nonblank() {
+        let xi = c.real(1, "X", 0.0)?;
+        let yi = c.real(21, "Y", 0.0)?;
+        if let Some(&prev) = x.last() {
+            if xi <= prev {
+                return Err(c.err(
+                    "X",
+                    format!("{xi} after {prev}: abscissas must increase strictly"),
+                ));
+            }
+        }
+        x.push(xi);
+        y.push(yi);
+    }
+    if x.is_empty() {
+        return Err(DeckError::new(
+            block.loc.clone(),
+            &block.header,
+            "X",
+            "function has no points; expected at least one (X, Y) line",
+        ));
+    }
+    deck.functions.push(FunctionCard {
+        id,
+        title,
+        x,
+        y,
+        loc: block.loc.clone(),
+    });
+    Ok(())
+}
+
+/// /ADMAS/type/admas_ID: added mass on nodes or parts.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct AddedMassCard {
+    pub id: Id,
+    /// 0: MASS on each node of the group; 1: MASS distributed over the group's
+    /// nodes by their mass; 2..: per-part variants (see `target`).
+    pub kind: i64,
+    pub title: String,
+    pub mass: f64,
+    /// Node group (kind 0, 1) or part id.
+    pub target: Id,
+    pub loc: Loc,
+}
+
+/// Returns false for an /ADMAS type that is not supported.
+pub(super) fn parse_admas(block: &Block, deck: &mut Deck) -> DeckResult<bool> {
+    let kind = match block.parts.get(1).map(|s| super::fields::parse_int(s)) {
+        Some(Ok(k)) if k == 0 || k == 1 => k,
+        _ => return Ok(false),
+    };
+    let id = header_id(block, 2, "admas_ID")?;
+    let mut cards = Cards::new(block);
+    let title = cards.title();
+    // MASS (1-20), grnd_ID (21-30)
+    let c = cards.next("the card with MASS and grnd_ID")?;
+    let mass = c.real(1, "MASS", 0.0)?;
+    if mass < 0.0 {
+        return Err(c.err("MASS", format!("{mass}: added mass must be >= 0")));
+    }
+    let target = c.id(21, "grnd_ID")?;
+    deck.added_masses.push(AddedMassCard {
+        id,
+        kind,
+        title,
+        mass,
+        target,
+        loc: c.loc(),
+    });
+    Ok(true)
+}

@@ -1,0 +1,186 @@
+//! Sets: /GRNOD/NODE, /GRNOD/GRNOD, /GRNOD/PART, /GRSHEL/SHEL, /SURF/PART,
+//! /SURF/SEG, /SURF/GRSHEL, /SUBSET. Each is a title line then a list of ids,
+//! ten 10-column fields a line, until the next keyword (/SURF/SEG: one
+//! segment a line). Ids are resolved by `model::build`.
+
+use super::error::{DeckError, DeckResult, Loc};
+use super::fields::Cards;
+use super::source::Block;
+use super::{header_id, Deck, Id};
+use serde::{Deserialize, Serialize};
+
+/// What the ids of a node group's list name.
+#[derive(Clone, Copy, Debug, Serialize, Deserialize, PartialEq, Eq)]
+pub enum NodeGroupKind {
+    /// /GRNOD/NODE: node ids.
+    Node,
+    /// /GRNOD/GRNOD: other node groups (union).
+    Grnod,
+    /// /GRNOD/PART: every node of the parts' elements.
+    Part,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct NodeGroupCard {
+    pub id: Id,
+    pub title: String,
+    pub kind: NodeGroupKind,
+    /// The listed ids; negative = remove that item from the group.
+    pub items: Vec<i64>,
+    pub loc: Loc,
+}
+
+/// /GRSHEL/SHEL: a list of 4-node shell ids.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct ShellGroupCard {
+    pub id: Id,
+    pub title: String,
+    pub items: Vec<i64>,
+    pub loc: Loc,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub enum SurfaceDef {
+    /// /SURF/PART: the shell faces of the parts (negative id: normals reversed).
+    Parts(Vec<i64>),
+    /// /SURF/GRSHEL: the faces of the shells of the groups (negative: reversed).
+    ShellGroups(Vec<i64>),
+    /// /SURF/SEG: explicit segments (n4 = n3 or 0 for a triangle).
+    Segments(Vec<SegmentCard>),
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct SegmentCard {
+    pub id: Id,
+    pub nodes: [Id; 4],
+    pub loc: Loc,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct SurfaceCard {
+    pub id: Id,
+    pub title: String,
+    pub def: SurfaceDef,
+    pub loc: Loc,
+}
+
+/// /SUBSET: a title and a list of child subset ids (parts join a subset
+/// through their subset_ID field).
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct SubsetCard {
+    pub id: Id,
+    pub title: String,
+    pub children: Vec<Id>,
+    pub loc: Loc,
+}
+
+/// Returns false for a set type this reader does not support.
+pub(super) fn parse_set(block: &Block, deck: &mut Deck) -> DeckResult<bool> {
+    let p0 = block.parts[0].as_str();
+    let p1 = block.parts.get(1).map(String::as_str).unwrap_or("");
+    match (p0, p1) {
+        ("GRNOD", "NODE" | "GRNOD" | "PART") => {
+            let kind = match p1 {
+                "NODE" => NodeGroupKind::Node,
+                "GRNOD" => NodeGroupKind::Grnod,
+                _ => NodeGroupKind::Part,
+            };
+            let id = header_id(block, 2, "grnd_ID")?;
+            let mut cards = Cards::new(block);
+            let title = cards.title();
+            let items = id_list(&mut cards, "item_ID")?;
+            deck.node_groups.push(NodeGroupCard {
+                id,
+                title,
+                kind,
+                items,
+                loc: block.loc.clone(),
+            });
+        }
+        ("GRSHEL", "SHEL") => {
+            let id = header_id(block, 2, "grshel_ID")?;
+            let mut cards = Cards::new(block);
+            let title = cards.title();
+            let items = id_list(&mut cards, "shell_ID")?;
+            deck.shell_groups.push(ShellGroupCard {
+                id,
+                title,
+                items,
+                loc: block.loc.clone(),
+            });
+        }
+        ("SURF", "PART" | "GRSHEL" | "SEG") => {
+            let id = header_id(block, 2, "surf_ID")?;
+            let mut cards = Cards::new(block);
+            let title = cards.title();
+            let def = match p1 {
+                "PART" => SurfaceDef::Parts(id_list(&mut cards, "part_ID")?),
+                "GRSHEL" => SurfaceDef::ShellGroups(id_list(&mut cards, "grshel_ID")?),
+                _ => {
+                    let mut segs = Vec::new();
+                    // seg_ID (1-10) node_ID1..4 (11-50)
+                    while let Some(c) = cards.next_nonblank() {
+                        let sid = c.id_opt(1, "seg_ID")?;
+                        let n1 = c.id(11, "node_ID1")?;
+                        let n2 = c.id(21, "node_ID2")?;
+                        let n3 = c.id(31, "node_ID3")?;
+                        let n4 = c.id_opt(41, "node_ID4")?;
+                        let n4 = if n4 == 0 { n3 } else { n4 };
+                        segs.push(SegmentCard {
+                            id: sid,
+                            nodes: [n1, n2, n3, n4],
+                            loc: c.loc(),
+                        });
+                    }
+                    SurfaceDef::Segments(segs)
+                }
+            };
+            deck.surfaces.push(SurfaceCard {
+                id,
+                title,
+                def,
+                loc: block.loc.clone(),
+            });
+        }
+        ("SUBSET", _) => {
+            let id = header_id(block, 1, "subset_ID")?;
+            let mut cards = Cards::new(block);
+            let title = cards.title();
+            let mut children = Vec::new();
+            for v in id_list(&mut cards, "subset_ID")? {
+                if v < 0 {
+                    return Err(DeckError::new(
+                        block.loc.clone(),
+                        &block.header,
+                        "subset_ID",
+                        format!("{v}: expected a positive subset id"),
+                    ));
+                }
+                children.push(v as Id);
+            }
+            deck.subsets.push(SubsetCard {
+                id,
+                title,
+                children,
+                loc: block.loc.clone(),
+            });
+        }
+        _ => return Ok(false),
+    }
+    Ok(true)
+}
+
+/// Ten 10-column ids a line until the block ends; blank and 0 fields are skipped.
+fn id_list(cards: &mut Cards, name: &str) -> DeckResult<Vec<i64>> {
+    let mut out = Vec::new();
+    while let Some(c) = cards.next_nonblank() {
+        for k in 0..10 {
+            if let Some(v) = c.int_opt(1 + 10 * k, 10, name)? {
+                if v != 0 {
+                    out.push(v);
+                }
+            }
+        }
+    }
+    Ok(out)
+}

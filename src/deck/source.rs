@@ -1,0 +1,319 @@
+//! Reading deck text: files, `#include`, comment lines, line hygiene, and the
+//! split into keyword blocks. Nothing here knows what a keyword means.
+//!
+//! Rules (Radioss block format):
+//! - a line whose first character is `#` or `$` is a comment, except `#include FILE`,
+//!   which is replaced by the lines of FILE (a path relative to the including
+//!   file's folder); `#enddata` ends the input like `/END`;
+//! - a line whose first character is `/` starts a keyword block;
+//! - every other line belongs to the block above it (blank lines too: in a
+//!   fixed-card block a blank line is a card whose fields all take defaults).
+
+use super::error::{DeckError, DeckResult, Loc};
+use std::path::{Path, PathBuf};
+
+/// Longest line accepted. Block-format cards use 100 columns (titles a few more);
+/// anything this long is not a deck line.
+pub const MAX_LINE_BYTES: usize = 4096;
+/// Deepest `#include` nesting accepted.
+pub const MAX_INCLUDE_DEPTH: usize = 32;
+/// Largest input file accepted.
+pub const MAX_FILE_BYTES: u64 = 4 << 30;
+
+/// One physical input line with where it came from.
+#[derive(Clone, Debug)]
+pub struct Line {
+    pub text: String,
+    pub loc: Loc,
+}
+
+/// A keyword and the lines under it.
+#[derive(Clone, Debug)]
+pub struct Block {
+    /// The keyword line as written, trailing blanks removed (e.g. `/MAT/PLAS_JOHNS/1`).
+    pub header: String,
+    /// The header split at `/`, upper-cased, e.g. `["MAT", "PLAS_JOHNS", "1"]`.
+    pub parts: Vec<String>,
+    pub loc: Loc,
+    pub lines: Vec<Line>,
+}
+
+impl Block {
+    /// The keyword name without trailing numeric ids, e.g. `/MAT/PLAS_JOHNS`.
+    pub fn name(&self) -> String {
+        let mut n = String::new();
+        for p in &self.parts {
+            if !p.is_empty() && p.bytes().all(|b| b.is_ascii_digit() || b == b'-') {
+                break;
+            }
+            n.push('/');
+            n.push_str(p);
+        }
+        n
+    }
+}
+
+/// The result of reading one top-level file with its includes.
+#[derive(Debug)]
+pub struct Source {
+    pub blocks: Vec<Block>,
+    /// Where `/END` (or `#enddata`) was met, if it was.
+    pub end: Option<Loc>,
+    /// Every file that was read, top-level first.
+    pub files: Vec<PathBuf>,
+}
+
+/// Reads `path` and everything it includes, and splits it into blocks.
+/// Whether `/END` was met is in [`Source::end`]; the caller decides if it is required
+/// (after the blocks are parsed, so that a truncated card is reported as such).
+pub fn read(path: &Path) -> DeckResult<Source> {
+    let mut lines = Vec::new();
+    let mut files = Vec::new();
+    let mut stack = Vec::new();
+    let mut end = None;
+    read_file(path, None, &mut stack, &mut lines, &mut files, &mut end)?;
+    let blocks = split_blocks(lines)?;
+    Ok(Source { blocks, end, files })
+}
+
+fn read_file(
+    path: &Path,
+    included_from: Option<&Loc>,
+    stack: &mut Vec<PathBuf>,
+    out: &mut Vec<Line>,
+    files: &mut Vec<PathBuf>,
+    end: &mut Option<Loc>,
+) -> DeckResult<()> {
+    let here = Loc {
+        file: path.to_path_buf(),
+        line: 0,
+    };
+    let (err_loc, kw) = match included_from {
+        Some(l) => (l.clone(), "#include"),
+        None => (here.clone(), ""),
+    };
+    let canon = std::fs::canonicalize(path).map_err(|e| {
+        DeckError::new(
+            err_loc.clone(),
+            kw,
+            "",
+            format!("cannot open '{}': {}", path.display(), io_reason(&e)),
+        )
+    })?;
+    if stack.contains(&canon) {
+        let chain: Vec<String> = stack
+            .iter()
+            .chain(std::iter::once(&canon))
+            .map(|p| p.display().to_string())
+            .collect();
+        return Err(DeckError::new(
+            err_loc,
+            kw,
+            "",
+            format!("#include cycle: {}", chain.join(" -> ")),
+        ));
+    }
+    if stack.len() >= MAX_INCLUDE_DEPTH {
+        return Err(DeckError::new(
+            err_loc,
+            kw,
+            "",
+            format!("#include nested deeper than {MAX_INCLUDE_DEPTH} files"),
+        ));
+    }
+    let meta = std::fs::metadata(&canon).map_err(|e| {
+        DeckError::new(
+            err_loc.clone(),
+            kw,
+            "",
+            format!("cannot read '{}': {}", path.display(), io_reason(&e)),
+        )
+    })?;
+    if meta.is_dir() {
+        return Err(DeckError::new(
+            err_loc,
+            kw,
+            "",
+            format!("'{}' is a directory, expected a deck file", path.display()),
+        ));
+    }
+    if meta.len() > MAX_FILE_BYTES {
+        return Err(DeckError::new(
+            err_loc,
+            kw,
+            "",
+            format!(
+                "'{}' is {} bytes, larger than the {} accepted",
+                path.display(),
+                meta.len(),
+                MAX_FILE_BYTES
+            ),
+        ));
+    }
+    let bytes = std::fs::read(&canon).map_err(|e| {
+        DeckError::new(
+            err_loc.clone(),
+            kw,
+            "",
+            format!("cannot read '{}': {}", path.display(), io_reason(&e)),
+        )
+    })?;
+    stack.push(canon);
+    files.push(path.to_path_buf());
+    let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
+    for (i, raw) in bytes.split(|&b| b == b'\n').enumerate() {
+        if end.is_some() {
+            break;
+        }
+        let loc = Loc {
+            file: path.to_path_buf(),
+            line: i + 1,
+        };
+        let raw = raw.strip_suffix(b"\r").unwrap_or(raw);
+        if raw.first() == Some(&b'$') {
+            continue; // old-style comment line
+        }
+        if raw.first() == Some(&b'#') {
+            let text = decode_line(raw, &loc, true)?;
+            if let Some(target) = include_target(&text) {
+                let target = target.ok_or_else(|| {
+                    DeckError::new(
+                        loc.clone(),
+                        "#include",
+                        "FILE",
+                        "expected a file name after #include",
+                    )
+                })?;
+                read_file(&dir.join(target), Some(&loc), stack, out, files, end)?;
+            } else if text.trim_end().eq_ignore_ascii_case("#enddata") {
+                *end = Some(loc);
+            }
+            continue;
+        }
+        let text = decode_line(raw, &loc, false)?;
+        let t = text.trim_end();
+        if t.eq_ignore_ascii_case("/END") {
+            *end = Some(loc);
+            break;
+        }
+        out.push(Line {
+            text: t.to_string(),
+            loc,
+        });
+    }
+    stack.pop();
+    Ok(())
+}
+
+fn io_reason(e: &std::io::Error) -> String {
+    match e.kind() {
+        std::io::ErrorKind::NotFound => "no such file".into(),
+        std::io::ErrorKind::PermissionDenied => "permission denied".into(),
+        _ => e.to_string(),
+    }
+}
+
+/// `Some(Some(file))` for `#include file`, `Some(None)` for a bare `#include`,
+/// `None` for any other comment.
+fn include_target(text: &str) -> Option<Option<&str>> {
+    let rest = text.strip_prefix('#')?;
+    let kw = rest.get(..7)?;
+    if !kw.eq_ignore_ascii_case("include") {
+        return None;
+    }
+    let tail = &rest[7..];
+    if !tail.is_empty() && !tail.starts_with([' ', '\t']) {
+        return None; // e.g. "#included by ..." is an ordinary comment
+    }
+    let name = tail.trim();
+    let name = name.trim_matches('"');
+    Some(if name.is_empty() { None } else { Some(name) })
+}
+
+/// Checks a raw line and turns it into text. Control bytes mean the file is not
+/// text; bytes that are not UTF-8 are taken as Latin-1 (older decks carry
+/// accented titles). Comments may hold tabs; data lines may not, because the
+/// block format is positional and a tab has no column.
+fn decode_line(raw: &[u8], loc: &Loc, comment: bool) -> DeckResult<String> {
+    if raw.len() > MAX_LINE_BYTES {
+        return Err(DeckError::new(
+            loc.clone(),
+            "",
+            "",
+            format!(
+                "line is {} bytes long; deck lines are at most 100 columns (limit {} bytes) — is this a deck file?",
+                raw.len(),
+                MAX_LINE_BYTES
+            ),
+        ));
+    }
+    if let Some(pos) = raw
+        .iter()
+        .position(|&b| (b < 0x20 && b != b'\t') || b == 0x7f)
+    {
+        return Err(DeckError::new(
+            loc.clone(),
+            "",
+            "",
+            format!(
+                "binary data (byte 0x{:02x} at column {}); expected text in Radioss block format",
+                raw[pos],
+                pos + 1
+            ),
+        ));
+    }
+    if !comment {
+        if let Some(pos) = raw.iter().position(|&b| b == b'\t') {
+            return Err(DeckError::new(
+                loc.clone(),
+                "",
+                "",
+                format!(
+                    "tab character at column {}; block-format fields are positional, use spaces",
+                    pos + 1
+                ),
+            ));
+        }
+    }
+    Ok(match std::str::from_utf8(raw) {
+        Ok(s) => s.to_string(),
+        Err(_) => raw.iter().map(|&b| b as char).collect(),
+    })
+}
+
+fn split_blocks(lines: Vec<Line>) -> DeckResult<Vec<Block>> {
+    let mut blocks: Vec<Block> = Vec::new();
+    for line in lines {
+        if line.text.starts_with('/') {
+            let header = line.text.trim_end().to_string();
+            let parts: Vec<String> = header[1..]
+                .split('/')
+                .map(|p| p.trim().to_ascii_uppercase())
+                .collect();
+            if parts.first().is_none_or(|p| p.is_empty()) {
+                return Err(DeckError::new(
+                    line.loc,
+                    &header,
+                    "",
+                    "expected a keyword name after '/'",
+                ));
+            }
+            blocks.push(Block {
+                header,
+                parts,
+                loc: line.loc,
+                lines: Vec::new(),
+            });
+        } else if let Some(b) = blocks.last_mut() {
+            b.lines.push(line);
+        } else if !line.text.trim().is_empty() {
+            return Err(DeckError::new(
+                line.loc,
+                "",
+                "",
+                "data line before the first keyword; expected a line starting with '/' (e.g. /BEGIN)",
+            ));
+        }
+    }
+    Ok(blocks)
+}

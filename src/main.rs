@@ -1,0 +1,234 @@
+//! The `crashsim` command line.
+
+use clap::{Parser, Subcommand};
+use crashsim::deck::{self, EngineFile, ReadOptions};
+use crashsim::domain;
+use crashsim::model::{self, Model};
+use crashsim::parallel::World;
+use crashsim::summary::Summary;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+/// Exit code for bad input (deck, arguments, files).
+const EXIT_INPUT: u8 = 2;
+
+#[derive(Parser)]
+#[command(
+    name = "crashsim",
+    version,
+    about = "Distributed explicit crash solver for Radioss block-format decks"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(clap::Args)]
+struct DeckArgs {
+    /// Starter deck NAME_0000.rad
+    deck: PathBuf,
+    /// Engine file (default: NAME_0001.rad beside the starter, if present)
+    #[arg(long)]
+    engine: Option<PathBuf>,
+    /// Unsupported keywords are errors instead of warnings
+    #[arg(long)]
+    strict: bool,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Read a deck and print what it holds (counts, masses, interfaces, warnings)
+    Check {
+        #[command(flatten)]
+        deck: DeckArgs,
+        /// Print one JSON object instead of the table
+        #[arg(long)]
+        json: bool,
+    },
+    /// Partition a deck's elements over N ranks (METIS k-way) and report the quality
+    Partition {
+        #[command(flatten)]
+        deck: DeckArgs,
+        /// Number of ranks
+        #[arg(long, value_parser = clap::value_parser!(u32).range(1..=65536))]
+        np: u32,
+        #[arg(long)]
+        json: bool,
+    },
+    /// Under mpirun: rank 0 reads and partitions the deck, scatters one
+    /// subdomain per rank; every rank reports what it holds and checks its
+    /// shared nodes against its neighbours'
+    Distribute {
+        #[command(flatten)]
+        deck: DeckArgs,
+        #[arg(long)]
+        json: bool,
+    },
+}
+
+fn load(args: &DeckArgs) -> Result<Model, deck::DeckError> {
+    let engine = match &args.engine {
+        Some(p) => EngineFile::Given(p.clone()),
+        None => EngineFile::Auto,
+    };
+    let d = deck::read_deck(
+        &args.deck,
+        engine,
+        ReadOptions {
+            strict: args.strict,
+        },
+    )?;
+    model::build(&d)
+}
+
+fn input_error(e: impl std::fmt::Display) -> ExitCode {
+    eprintln!("crashsim: {e}");
+    ExitCode::from(EXIT_INPUT)
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    match cli.command {
+        Command::Check { deck, json } => {
+            let m = match load(&deck) {
+                Ok(m) => m,
+                Err(e) => return input_error(e),
+            };
+            let s = Summary::of(&m);
+            if json {
+                println!(
+                    "{}",
+                    serde_json::to_string_pretty(&s).expect("summary serializes")
+                );
+            } else {
+                print!("{}", s.text());
+            }
+            ExitCode::SUCCESS
+        }
+        Command::Partition { deck, np, json } => {
+            let m = match load(&deck) {
+                Ok(m) => m,
+                Err(e) => return input_error(e),
+            };
+            let (p, r) = match domain::partition(&m, np as usize) {
+                Ok(x) => x,
+                Err(e) => {
+                    return input_error(format!("{}: cannot partition: {e}", deck.deck.display()))
+                }
+            };
+            if json {
+                let v = serde_json::json!({
+                    "deck": m.name, "np": np, "elements": m.n_elements(), "nodes": m.nodes.len(),
+                    "edge_cut": r.edge_cut, "imbalance": r.imbalance, "per_rank": r.per_rank, "part": p.part,
+                });
+                println!(
+                    "{}",
+                    serde_json::to_string_pretty(&v).expect("report serializes")
+                );
+            } else {
+                println!("deck {}: {} elements, {} nodes over {np} ranks (METIS k-way, shared-node dual graph)", m.name, m.n_elements(), m.nodes.len());
+                println!(
+                    "{:>6} {:>10} {:>10} {:>13} {:>10}",
+                    "rank", "elements", "nodes", "shared nodes", "weight"
+                );
+                for (i, rr) in r.per_rank.iter().enumerate() {
+                    println!(
+                        "{i:>6} {:>10} {:>10} {:>13} {:>10}",
+                        rr.elements, rr.nodes, rr.shared_nodes, rr.weight
+                    );
+                }
+                println!(
+                    "edge cut {}   load imbalance {:.2}%",
+                    r.edge_cut,
+                    100.0 * r.imbalance
+                );
+            }
+            ExitCode::SUCCESS
+        }
+        Command::Distribute { deck, json } => distribute(&deck, json),
+    }
+}
+
+fn distribute(args: &DeckArgs, json: bool) -> ExitCode {
+    let Some(world) = World::init() else {
+        return input_error("MPI could not be initialised");
+    };
+    let rank = world.rank();
+    let size = world.size();
+    // Rank 0 reads, builds and partitions; the others never parse text.
+    let (parts, total) = if rank == 0 {
+        match prepare(&args.deck, args, size) {
+            Ok((p, t)) => (Some(p), Some(t)),
+            Err(e) => {
+                eprintln!("crashsim: {e}");
+                world.abort(EXIT_INPUT as i32);
+            }
+        }
+    } else {
+        (None, None)
+    };
+    let totals: [u64; 2] = match world.broadcast(total.as_ref()) {
+        Ok(t) => t,
+        Err(e) => {
+            eprintln!("crashsim: rank {rank}: {e}");
+            world.abort(3);
+        }
+    };
+    let sd = match world.scatter(parts) {
+        Ok(s) => s,
+        Err(e) => {
+            eprintln!("crashsim: rank {rank}: {e}");
+            world.abort(3);
+        }
+    };
+    // Check the shared-node lists against the neighbours' (by global index).
+    let ranks: Vec<u32> = sd.shared.iter().map(|s| s.rank).collect();
+    let send: Vec<Vec<u64>> = sd
+        .shared
+        .iter()
+        .map(|s| {
+            s.nodes
+                .iter()
+                .map(|&l| sd.node_global[l as usize] as u64)
+                .collect()
+        })
+        .collect();
+    let got = world.exchange_with_neighbours(&ranks, &send);
+    let agree = send == got;
+    let line = serde_json::json!({
+        "rank": rank, "nranks": size, "elements": sd.n_elements(), "nodes": sd.x.len(),
+        "shared_nodes": sd.n_shared_nodes(), "neighbours": ranks, "shared_agree": agree,
+        "mass": sd.mass.iter().sum::<f64>(), "total_elements": totals[0], "total_nodes": totals[1],
+    })
+    .to_string();
+    if let Some(lines) = world.gather_strings(&line) {
+        for l in lines {
+            if json {
+                println!("{l}");
+            } else {
+                let v: serde_json::Value = serde_json::from_str(&l).unwrap_or_default();
+                println!("rank {} of {}: {} elements, {} nodes, {} shared with ranks {}, shared lists agree: {}", v["rank"], v["nranks"], v["elements"], v["nodes"], v["shared_nodes"], v["neighbours"], v["shared_agree"]);
+            }
+        }
+    }
+    world.barrier();
+    if agree {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(3)
+    }
+}
+
+fn prepare(
+    path: &Path,
+    args: &DeckArgs,
+    size: u32,
+) -> Result<(Vec<domain::Subdomain>, [u64; 2]), String> {
+    let m = load(args).map_err(|e| e.to_string())?;
+    let (p, _) = domain::partition(&m, size as usize)
+        .map_err(|e| format!("{}: cannot partition: {e}", path.display()))?;
+    Ok((
+        domain::split(&m, &p.part, size as usize),
+        [m.n_elements() as u64, m.nodes.len() as u64],
+    ))
+}

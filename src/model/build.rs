@@ -1,0 +1,585 @@
+//! `build`: Deck → Model. Resolves every id (an unknown one is an error at
+//! the card that names it), applies defaults, computes masses.
+
+use super::index::IdIndex;
+use super::mass::{element_masses, lump, totals};
+use super::properties::{resolve_shell, resolve_solid};
+use super::sets::{node_groups, shell_groups, surfaces, SetContext};
+use super::*;
+use crate::deck::{Deck, DeckError, ElementCard, Elements, Loc, MaterialLaw, PropertyKind, Side};
+
+/// Builds the model from a deck.
+pub fn build(deck: &Deck) -> Result<Model, DeckError> {
+    let begin = deck.begin.clone().ok_or_else(|| {
+        DeckError::new(
+            Loc {
+                file: deck.path.clone(),
+                line: 0,
+            },
+            "/BEGIN",
+            "",
+            "no /BEGIN block",
+        )
+    })?;
+    let mut warnings = deck.warnings.clone();
+
+    // Nodes, sorted by id.
+    let mut order: Vec<usize> = (0..deck.nodes.len()).collect();
+    order.sort_by_key(|&i| deck.nodes[i].id);
+    let nodes = Nodes {
+        ids: order.iter().map(|&i| deck.nodes[i].id).collect(),
+        x: order.iter().map(|&i| deck.nodes[i].x).collect(),
+    };
+    let node_index = IdIndex::build(
+        "node",
+        order
+            .iter()
+            .map(|&i| (deck.nodes[i].id, deck.nodes[i].loc.clone())),
+        "/NODE",
+    )?;
+    if nodes.is_empty() {
+        return Err(DeckError::new(
+            begin.loc.clone(),
+            "/NODE",
+            "",
+            "the deck defines no node; expected a /NODE block",
+        ));
+    }
+
+    // Materials, properties, parts.
+    let mat_index = IdIndex::build(
+        "material",
+        deck.materials.iter().map(|m| (m.id, m.loc.clone())),
+        "/MAT",
+    )?;
+    let prop_index = IdIndex::build(
+        "property",
+        deck.properties.iter().map(|p| (p.id, p.loc.clone())),
+        "/PROP",
+    )?;
+    let part_index = IdIndex::build(
+        "part",
+        deck.parts.iter().map(|p| (p.id, p.loc.clone())),
+        "/PART",
+    )?;
+    let properties: Vec<Property> = deck
+        .properties
+        .iter()
+        .map(|p| Property {
+            card: p.clone(),
+            shell: match &p.kind {
+                PropertyKind::Shell(s) => Some(resolve_shell(s, deck.def_shell.as_ref())),
+                _ => None,
+            },
+            solid: match &p.kind {
+                PropertyKind::Solid(s) => Some(resolve_solid(s, deck.def_solid.as_ref())),
+                _ => None,
+            },
+        })
+        .collect();
+    let mut parts = Vec::with_capacity(deck.parts.len());
+    for p in &deck.parts {
+        let kw = format!("/PART/{}", p.id);
+        let prop = if p.prop == 0 {
+            None
+        } else {
+            Some(resolve_skipped(
+                &prop_index,
+                p.prop,
+                &p.loc,
+                &kw,
+                "prop_ID",
+                "/PROP",
+                deck,
+            )?)
+        };
+        let mat = if p.mat == 0 {
+            None
+        } else {
+            Some(resolve_skipped(
+                &mat_index, p.mat, &p.loc, &kw, "mat_ID", "/MAT", deck,
+            )?)
+        };
+        parts.push(Part {
+            id: p.id,
+            title: p.title.clone(),
+            prop,
+            mat,
+            subset: p.subset,
+            thick: p.thick,
+        });
+    }
+
+    // Elements, each kind sorted by id.
+    let mut elements = Vec::new();
+    let mut element_locs: Vec<Vec<Loc>> = Vec::new();
+    let mut shell4_index = IdIndex::default();
+    for kind in Elements::KINDS {
+        let cards = deck.elements.of_kind(kind);
+        let mut order: Vec<usize> = (0..cards.len()).collect();
+        order.sort_by_key(|&i| cards[i].id);
+        let index = IdIndex::build(
+            "element",
+            order.iter().map(|&i| (cards[i].id, cards[i].loc.clone())),
+            kind.keyword(),
+        )?;
+        let mut set = ElementSet {
+            kind,
+            ids: Vec::with_capacity(cards.len()),
+            part: Vec::with_capacity(cards.len()),
+            nodes: Vec::with_capacity(cards.len() * kind.nodes()),
+            thick: Vec::with_capacity(cards.len()),
+        };
+        let mut locs = Vec::with_capacity(cards.len());
+        for &i in &order {
+            let c = &cards[i];
+            add_element(
+                &mut set,
+                c,
+                kind,
+                &node_index,
+                &part_index,
+                &parts,
+                &properties,
+                &deck.materials,
+            )?;
+            locs.push(c.loc.clone());
+        }
+        if kind == ElementKind::Shell4 {
+            shell4_index = index;
+        }
+        elements.push(set);
+        element_locs.push(locs);
+    }
+
+    // Sets.
+    let ctx = SetContext {
+        nodes: &node_index,
+        parts: &part_index,
+        shells4: &shell4_index,
+        elements: &elements,
+    };
+    let node_groups = node_groups(&deck.node_groups, &ctx)?;
+    let shell_groups = shell_groups(&deck.shell_groups, &ctx)?;
+    let surfaces = surfaces(&deck.surfaces, &shell_groups, &deck.shell_groups, &ctx)?;
+    let grnod_index = IdIndex::build(
+        "node group",
+        deck.node_groups.iter().map(|g| (g.id, g.loc.clone())),
+        "/GRNOD",
+    )?;
+    let surf_index = IdIndex::build(
+        "surface",
+        deck.surfaces.iter().map(|s| (s.id, s.loc.clone())),
+        "/SURF",
+    )?;
+    let fct_index = IdIndex::build(
+        "function",
+        deck.functions.iter().map(|f| (f.id, f.loc.clone())),
+        "/FUNCT",
+    )?;
+    let group = |id: Id, loc: &Loc, kw: &str, field: &str| -> Result<Vec<u32>, DeckError> {
+        Ok(
+            node_groups[grnod_index.resolve(id, loc, kw, field)? as usize]
+                .nodes
+                .clone(),
+        )
+    };
+    let check_fct = |id: Id, loc: &Loc, kw: &str, field: &str| -> Result<(), DeckError> {
+        if id != 0 {
+            fct_index.resolve(id, loc, kw, field)?;
+        }
+        Ok(())
+    };
+
+    // Conditions.
+    let mut bcs = Vec::new();
+    for c in &deck.bcs {
+        bcs.push(OnNodes {
+            nodes: group(c.grnod, &c.loc, &format!("/BCS/{}", c.id), "grnod_ID")?,
+            card: c.clone(),
+        });
+    }
+    let motions = |cards: &[crate::deck::ImposedMotionCard],
+                   kw: &str|
+     -> Result<Vec<ImposedMotion>, DeckError> {
+        let mut out = Vec::new();
+        for c in cards {
+            let k = format!("{kw}/{}", c.id);
+            check_fct(c.fct, &c.loc, &k, "fct_IDT")?;
+            out.push(OnNodes {
+                nodes: group(c.grnod, &c.loc, &k, "grnod_ID")?,
+                card: c.clone(),
+            });
+        }
+        Ok(out)
+    };
+    let imposed_velocities = motions(&deck.imposed_velocities, "/IMPVEL")?;
+    let imposed_displacements = motions(&deck.imposed_displacements, "/IMPDISP")?;
+    let mut initial_velocities = Vec::new();
+    for c in &deck.initial_velocities {
+        initial_velocities.push(OnNodes {
+            nodes: group(c.grnod, &c.loc, &format!("/INIVEL/{}", c.id), "grnod_ID")?,
+            card: c.clone(),
+        });
+    }
+    let mut concentrated_loads = Vec::new();
+    for c in &deck.concentrated_loads {
+        let k = format!("/CLOAD/{}", c.id);
+        check_fct(c.fct, &c.loc, &k, "fct_IDT")?;
+        concentrated_loads.push(OnNodes {
+            nodes: group(c.grnod, &c.loc, &k, "grnod_ID")?,
+            card: c.clone(),
+        });
+    }
+    let mut gravity = Vec::new();
+    for c in &deck.gravity {
+        let k = format!("/GRAV/{}", c.id);
+        check_fct(c.fct, &c.loc, &k, "fct_IDT")?;
+        let nodes = if c.grnod == 0 {
+            (0..nodes.len() as u32).collect()
+        } else {
+            group(c.grnod, &c.loc, &k, "grnod_ID")?
+        };
+        gravity.push(OnNodes {
+            nodes,
+            card: c.clone(),
+        });
+    }
+    for p in &properties {
+        if let PropertyKind::Spring(s) = &p.card.kind {
+            for (f, name) in [
+                (s.fct_id1, "fct_ID1"),
+                (s.fct_id2, "fct_ID2"),
+                (s.fct_id3, "fct_ID3"),
+            ] {
+                check_fct(f, &p.card.loc, &format!("/PROP/SPRING/{}", p.card.id), name)?;
+            }
+        }
+    }
+
+    // Rigid walls.
+    let mut rigid_walls = Vec::new();
+    for c in &deck.rigid_walls {
+        let kw = format!("/RWALL/PLANE/{}", c.id);
+        let node = if c.node_id == 0 {
+            None
+        } else {
+            Some(node_index.resolve(c.node_id, &c.loc, &kw, "node_ID")?)
+        };
+        let point = node.map(|n| nodes.x[n as usize]).unwrap_or(c.m);
+        let d = [c.m1[0] - point[0], c.m1[1] - point[1], c.m1[2] - point[2]];
+        let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+        if !(len > 0.0) {
+            return Err(DeckError::new(
+                c.loc.clone(),
+                &kw,
+                "X_M1",
+                "M1 coincides with M: the wall normal M→M1 is undefined",
+            ));
+        }
+        let normal = [d[0] / len, d[1] / len, d[2] / len];
+        let mut sec: std::collections::BTreeSet<u32> = std::collections::BTreeSet::new();
+        if c.grnod1 != 0 {
+            sec.extend(group(c.grnod1, &c.loc, &kw, "grnod_ID1")?);
+        }
+        if c.d_search > 0.0 {
+            for (i, x) in nodes.x.iter().enumerate() {
+                let dist = (x[0] - point[0]) * normal[0]
+                    + (x[1] - point[1]) * normal[1]
+                    + (x[2] - point[2]) * normal[2];
+                if dist >= 0.0 && dist <= c.d_search && Some(i as u32) != node {
+                    sec.insert(i as u32);
+                }
+            }
+        }
+        if c.grnod2 != 0 {
+            for n in group(c.grnod2, &c.loc, &kw, "grnod_ID2")? {
+                sec.remove(&n);
+            }
+        }
+        if sec.is_empty() {
+            warnings.push(Warning {
+                loc: c.loc.clone(),
+                keyword: kw.clone(),
+                message: "the rigid wall has no secondary node".into(),
+            });
+        }
+        rigid_walls.push(RigidWall {
+            card: c.clone(),
+            node,
+            point,
+            normal,
+            secondary_nodes: sec.into_iter().collect(),
+        });
+    }
+
+    // Interfaces.
+    let mut interfaces = Vec::new();
+    IdIndex::build(
+        "interface",
+        deck.interfaces.iter().map(|i| (i.id, i.loc.clone())),
+        "/INTER",
+    )?;
+    for c in &deck.interfaces {
+        let kw = format!("/INTER/TYPE{}/{}", c.type_number(), c.id);
+        let side = |s: Side, field: &str| -> Result<Option<(Vec<u32>, Vec<[u32; 4]>)>, DeckError> {
+            Ok(match s {
+                Side::NodeGroup(g) => Some((group(g, &c.loc, &kw, field)?, Vec::new())),
+                Side::Surface(sid) => {
+                    let s = &surfaces[surf_index.resolve(sid, &c.loc, &kw, field)? as usize];
+                    Some((s.nodes(), s.segments.clone()))
+                }
+                Side::Line(_) | Side::SameAsOther | Side::None => None,
+            })
+        };
+        let main = side(c.main_side(), "main side")?;
+        let sec = side(c.secondary_side(), "secondary side")?;
+        if matches!(c.main_side(), Side::Line(_)) || matches!(c.secondary_side(), Side::Line(_)) {
+            warnings.push(Warning { loc: c.loc.clone(), keyword: kw.clone(), message: "edge lines (/LINE) are not read yet: this interface has no edges and will not act".into() });
+        }
+        let (main_nodes, main_segments) = main.clone().unwrap_or_default();
+        let (secondary_nodes, secondary_segments) = match (sec, c.secondary_side()) {
+            (Some(s), _) => s,
+            // Self-contact: the secondary nodes are the main surface's nodes.
+            (None, Side::SameAsOther) => (main_nodes.clone(), Vec::new()),
+            (None, _) => (Vec::new(), Vec::new()),
+        };
+        interfaces.push(Interface {
+            card: c.clone(),
+            secondary_nodes,
+            main_segments,
+            secondary_segments,
+        });
+    }
+
+    // Masses.
+    let mut model = Model {
+        name: begin.run_name.clone(),
+        title: deck.title.clone(),
+        begin,
+        nodal_mass: vec![0.0; nodes.len()],
+        added_mass: vec![0.0; nodes.len()],
+        nodes,
+        elements,
+        parts,
+        materials: deck.materials.clone(),
+        properties,
+        functions: deck.functions.clone(),
+        node_groups: node_groups.clone(),
+        shell_groups,
+        surfaces,
+        bcs,
+        imposed_velocities,
+        imposed_displacements,
+        initial_velocities,
+        concentrated_loads,
+        gravity,
+        rigid_walls,
+        rigid_bodies: Vec::new(),
+        interfaces,
+        sections: deck.sections.clone(),
+        time_histories: deck.time_histories.clone(),
+        mass: MassSummary::default(),
+        engine: deck.engine.clone(),
+        warnings: Vec::new(),
+    };
+    let mut masses = Vec::new();
+    for (set, locs) in model.elements.iter().zip(&element_locs) {
+        masses.push(element_masses(&model, set, locs)?);
+    }
+    lump(&mut model, &masses);
+    for a in &deck.added_masses {
+        let kw = format!("/ADMAS/{}/{}", a.kind, a.id);
+        let g = group(a.target, &a.loc, &kw, "grnd_ID")?;
+        if g.is_empty() {
+            warnings.push(Warning {
+                loc: a.loc.clone(),
+                keyword: kw.clone(),
+                message: "the node group is empty: no mass added".into(),
+            });
+            continue;
+        }
+        let each = if a.kind == 0 {
+            a.mass
+        } else {
+            a.mass / g.len() as f64
+        };
+        for n in g {
+            model.added_mass[n as usize] += each;
+            model.nodal_mass[n as usize] += each;
+        }
+    }
+    // Rigid bodies (after masses: their mass and inertia come from their nodes).
+    for c in &deck.rigid_bodies {
+        let kw = format!("/RBODY/{}", c.id);
+        let main_node = node_index.resolve(c.main_node, &c.loc, &kw, "RBID")?;
+        let secondary_nodes: Vec<u32> = group(c.grnod, &c.loc, &kw, "Gnod_id")?
+            .into_iter()
+            .filter(|&n| n != main_node)
+            .collect();
+        if secondary_nodes.is_empty() {
+            return Err(DeckError::new(c.loc.clone(), &kw, "Gnod_id", "the rigid body's node group is empty (or holds only the main node); expected its secondary nodes"));
+        }
+        let xm = model.nodes.x[main_node as usize];
+        let mut m = c.mass + model.nodal_mass[main_node as usize];
+        let mut s = [xm[0] * m, xm[1] * m, xm[2] * m];
+        for &n in &secondary_nodes {
+            let mn = model.nodal_mass[n as usize];
+            m += mn;
+            for k in 0..3 {
+                s[k] += mn * model.nodes.x[n as usize][k];
+            }
+        }
+        let center = if m > 0.0 {
+            [s[0] / m, s[1] / m, s[2] / m]
+        } else {
+            xm
+        };
+        let mut inertia = c.inertia;
+        let mut add = |mn: f64, x: [f64; 3]| {
+            let r = [x[0] - center[0], x[1] - center[1], x[2] - center[2]];
+            inertia[0] += mn * (r[1] * r[1] + r[2] * r[2]);
+            inertia[1] += mn * (r[0] * r[0] + r[2] * r[2]);
+            inertia[2] += mn * (r[0] * r[0] + r[1] * r[1]);
+            inertia[3] -= mn * r[0] * r[1];
+            inertia[4] -= mn * r[1] * r[2];
+            inertia[5] -= mn * r[0] * r[2];
+        };
+        add(c.mass + model.nodal_mass[main_node as usize], xm);
+        for &n in &secondary_nodes {
+            add(model.nodal_mass[n as usize], model.nodes.x[n as usize]);
+        }
+        model.rigid_bodies.push(RigidBody {
+            card: c.clone(),
+            main_node,
+            secondary_nodes,
+            mass: m,
+            center,
+            inertia,
+        });
+    }
+    totals(&mut model);
+    model.warnings = warnings;
+    Ok(model)
+}
+
+/// Resolves an id, mentioning in the error when the card that would define it was skipped as unsupported.
+fn resolve_skipped(
+    index: &IdIndex,
+    id: Id,
+    loc: &Loc,
+    kw: &str,
+    field: &str,
+    family: &str,
+    deck: &Deck,
+) -> Result<u32, DeckError> {
+    index.resolve(id, loc, kw, field).map_err(|mut e| {
+        let id_s = id.to_string();
+        if let Some(w) = deck.warnings.iter().find(|w| {
+            w.keyword.starts_with(family) && w.keyword.rsplit('/').next() == Some(id_s.as_str())
+        }) {
+            e.message = format!(
+                "{}; {} at {} defines it but that keyword is not supported",
+                e.message, w.keyword, w.loc
+            );
+        }
+        e
+    })
+}
+
+#[allow(clippy::too_many_arguments)]
+fn add_element(
+    set: &mut ElementSet,
+    c: &ElementCard,
+    kind: ElementKind,
+    node_index: &IdIndex,
+    part_index: &IdIndex,
+    parts: &[Part],
+    properties: &[Property],
+    materials: &[crate::deck::MaterialCard],
+) -> Result<(), DeckError> {
+    let kw = format!("{}/{}", kind.keyword(), c.part);
+    let p = part_index.resolve(c.part, &c.loc, &kw, "part_ID")?;
+    let part = &parts[p as usize];
+    let prop = part.prop.map(|i| &properties[i as usize]);
+    // The part's property must suit the element kind, and a material is needed for continua.
+    let ok = match (kind, prop.map(|p| &p.card.kind)) {
+        (ElementKind::Shell4 | ElementKind::Shell3, Some(PropertyKind::Shell(_))) => true,
+        (ElementKind::Brick8 | ElementKind::Tetra4, Some(PropertyKind::Solid(_))) => true,
+        (ElementKind::Spring, Some(PropertyKind::Spring(_) | PropertyKind::SpringBeam(_))) => true,
+        (ElementKind::Truss | ElementKind::Beam, _) => true,
+        _ => false,
+    };
+    if !ok {
+        let what = match prop {
+            None => "no property".to_string(),
+            Some(p) => format!("property {} of another kind", p.card.id),
+        };
+        return Err(DeckError::new(
+            c.loc.clone(),
+            &kw,
+            "part_ID",
+            format!(
+                "element {} belongs to part {} which has {what}; expected a {} property",
+                c.id,
+                c.part,
+                match kind {
+                    ElementKind::Shell4 | ElementKind::Shell3 => "/PROP/SHELL (TYPE1)",
+                    ElementKind::Brick8 | ElementKind::Tetra4 => "/PROP/SOLID (TYPE14)",
+                    _ => "/PROP/SPRING (TYPE4) or /PROP/SPR_BEAM (TYPE13)",
+                }
+            ),
+        ));
+    }
+    if matches!(
+        kind,
+        ElementKind::Shell4 | ElementKind::Shell3 | ElementKind::Brick8 | ElementKind::Tetra4
+    ) {
+        match part.mat {
+            None => {
+                return Err(DeckError::new(
+                    c.loc.clone(),
+                    &kw,
+                    "mat_ID",
+                    format!(
+                        "element {} belongs to part {} which has no material (mat_ID = 0)",
+                        c.id, c.part
+                    ),
+                ))
+            }
+            Some(m) => {
+                // Every material the reader keeps is a law the solver has (LAW1, LAW2).
+                debug_assert!(matches!(
+                    materials[m as usize].law,
+                    MaterialLaw::Elastic | MaterialLaw::JohnsonCook(_)
+                ));
+            }
+        }
+    }
+    set.ids.push(c.id);
+    set.part.push(p);
+    let names = [
+        "node_ID1", "node_ID2", "node_ID3", "node_ID4", "node_ID5", "node_ID6", "node_ID7",
+        "node_ID8",
+    ];
+    for (k, &n) in c.nodes.iter().enumerate() {
+        if n == 0 {
+            set.nodes.push(NO_NODE);
+        } else {
+            let loc = &c.loc;
+            set.nodes
+                .push(node_index.resolve(n, loc, &kw, names[k]).map_err(|mut e| {
+                    e.message = format!("element {}: {}", c.id, e.message);
+                    e
+                })?);
+        }
+    }
+    let t = if c.thick > 0.0 {
+        c.thick
+    } else {
+        prop.and_then(|p| p.shell.as_ref().map(|s| s.thick))
+            .unwrap_or(0.0)
+    };
+    set.thick.push(t);
+    Ok(())
+}

@@ -1,0 +1,197 @@
+//! Lumped masses: element mass to its nodes, part masses, centres and
+//! inertias, the model total.
+//!
+//! - 4-node shell: m = ρ·t·A with A = ½‖(x3−x1)×(x4−x2)‖, ¼ to each node;
+//! - 3-node shell: m = ρ·t·A, ⅓ to each node;
+//! - brick: ρ·V, ⅛ to each of its 8 node slots; tetra: ρ·V, ¼ to each node;
+//! - spring (/PROP/TYPE4, TYPE13): the property's Mass, ½ to each node;
+//! - /ADMAS type 0: MASS on each node of the group; type 1: MASS shared
+//!   equally by the group's nodes;
+//! - /RBODY MASS: carried by the rigid body (on its main node), counted once.
+//!
+//! This is how the Radioss starter distributes mass (its NODAL MASSES,
+//! PART MASS and TOTAL MASS tables agree with these rules on the QA decks).
+
+use super::geometry::{hexa_volume, quad_area, tetra_volume, triangle_area};
+use super::{ElementSet, Model, NO_NODE};
+use crate::deck::{DeckError, ElementKind, Loc, PropertyKind};
+use serde::{Deserialize, Serialize};
+
+#[derive(Clone, Debug, Default, Serialize, Deserialize)]
+pub struct PartMass {
+    pub mass: f64,
+    pub center: [f64; 3],
+    /// About the centre: xx, yy, zz, xy, yz, xz (products with the sign
+    /// convention I_xy = −Σ m·x·y).
+    pub inertia: [f64; 6],
+}
+
+#[derive(Clone, Debug, Default, Serialize, Deserialize)]
+pub struct MassSummary {
+    pub per_part: Vec<PartMass>,
+    /// Elements + added + rigid-body masses.
+    pub total: f64,
+    pub center: [f64; 3],
+    pub added_total: f64,
+}
+
+/// Element masses for one element set, with an error for a non-positive measure.
+pub(super) fn element_masses(
+    model: &Model,
+    set: &ElementSet,
+    locs: &[Loc],
+) -> Result<Vec<f64>, DeckError> {
+    let x = &model.nodes.x;
+    let mut out = Vec::with_capacity(set.len());
+    for e in 0..set.len() {
+        let n = set.nodes_of(e);
+        let part = &model.parts[set.part[e] as usize];
+        let rho = part
+            .mat
+            .map(|m| model.materials[m as usize].rho)
+            .unwrap_or(0.0);
+        let (measure, what) = match set.kind {
+            ElementKind::Shell4 => (
+                quad_area([
+                    x[n[0] as usize],
+                    x[n[1] as usize],
+                    x[n[2] as usize],
+                    x[n[3] as usize],
+                ]),
+                "area",
+            ),
+            ElementKind::Shell3 => (
+                triangle_area([x[n[0] as usize], x[n[1] as usize], x[n[2] as usize]]),
+                "area",
+            ),
+            ElementKind::Brick8 => {
+                let mut p = [[0.0; 3]; 8];
+                for k in 0..8 {
+                    p[k] = x[n[k] as usize];
+                }
+                (hexa_volume(p), "volume")
+            }
+            ElementKind::Tetra4 => (
+                tetra_volume([
+                    x[n[0] as usize],
+                    x[n[1] as usize],
+                    x[n[2] as usize],
+                    x[n[3] as usize],
+                ]),
+                "volume",
+            ),
+            ElementKind::Spring | ElementKind::Truss | ElementKind::Beam => (1.0, ""),
+        };
+        if !(measure > 0.0) && !what.is_empty() {
+            return Err(DeckError::new(
+                locs[e].clone(),
+                set.kind.keyword(),
+                "",
+                format!("element {} has {what} {measure:e}: expected > 0 (degenerate or inverted element; check its node order)", set.ids[e]),
+            ));
+        }
+        let m = match set.kind {
+            ElementKind::Shell4 | ElementKind::Shell3 => rho * set.thick[e] * measure,
+            ElementKind::Brick8 | ElementKind::Tetra4 => rho * measure,
+            _ => match part.prop.map(|p| &model.properties[p as usize].card.kind) {
+                Some(PropertyKind::Spring(s)) => s.mass,
+                Some(PropertyKind::SpringBeam(s)) => s.mass,
+                _ => 0.0,
+            },
+        };
+        out.push(m);
+    }
+    Ok(out)
+}
+
+/// Share of an element's mass each node slot gets.
+fn share(kind: ElementKind) -> f64 {
+    match kind {
+        ElementKind::Shell4 | ElementKind::Tetra4 => 0.25,
+        ElementKind::Shell3 => 1.0 / 3.0,
+        ElementKind::Brick8 => 0.125,
+        ElementKind::Spring | ElementKind::Truss | ElementKind::Beam => 0.5,
+    }
+}
+
+/// Adds the element masses to the nodes (in element order: deterministic) and
+/// accumulates part mass, first moment and second moments.
+pub(super) fn lump(model: &mut Model, masses: &[Vec<f64>]) {
+    let nparts = model.parts.len();
+    let mut m = vec![0.0; nparts];
+    let mut s1 = vec![[0.0; 3]; nparts];
+    let mut s2 = vec![[0.0; 6]; nparts]; // Σm x², y², z², xy, yz, xz
+    for (set, em) in model.elements.iter().zip(masses) {
+        let f = share(set.kind);
+        for e in 0..set.len() {
+            let p = set.part[e] as usize;
+            let slots = match set.kind {
+                ElementKind::Beam => &set.nodes_of(e)[..2],
+                _ => set.nodes_of(e),
+            };
+            for &n in slots {
+                if n == NO_NODE {
+                    continue;
+                }
+                let dm = em[e] * f;
+                model.nodal_mass[n as usize] += dm;
+                let x = model.nodes.x[n as usize];
+                m[p] += dm;
+                for k in 0..3 {
+                    s1[p][k] += dm * x[k];
+                }
+                s2[p][0] += dm * x[0] * x[0];
+                s2[p][1] += dm * x[1] * x[1];
+                s2[p][2] += dm * x[2] * x[2];
+                s2[p][3] += dm * x[0] * x[1];
+                s2[p][4] += dm * x[1] * x[2];
+                s2[p][5] += dm * x[0] * x[2];
+            }
+        }
+    }
+    model.mass.per_part = (0..nparts)
+        .map(|p| {
+            if m[p] == 0.0 {
+                return PartMass::default();
+            }
+            let c = [s1[p][0] / m[p], s1[p][1] / m[p], s1[p][2] / m[p]];
+            // Central second moments: Σm x_i x_j − M c_i c_j.
+            let xx = s2[p][0] - m[p] * c[0] * c[0];
+            let yy = s2[p][1] - m[p] * c[1] * c[1];
+            let zz = s2[p][2] - m[p] * c[2] * c[2];
+            let xy = s2[p][3] - m[p] * c[0] * c[1];
+            let yz = s2[p][4] - m[p] * c[1] * c[2];
+            let xz = s2[p][5] - m[p] * c[0] * c[2];
+            PartMass {
+                mass: m[p],
+                center: c,
+                inertia: [yy + zz, xx + zz, xx + yy, -xy, -yz, -xz],
+            }
+        })
+        .collect();
+}
+
+/// Total mass and centre: nodal masses (elements + /ADMAS) plus rigid-body MASS on main nodes.
+pub(super) fn totals(model: &mut Model) {
+    let mut total = 0.0;
+    let mut s = [0.0; 3];
+    for (i, &mi) in model.nodal_mass.iter().enumerate() {
+        total += mi;
+        for k in 0..3 {
+            s[k] += mi * model.nodes.x[i][k];
+        }
+    }
+    for rb in &model.rigid_bodies {
+        total += rb.card.mass;
+        for k in 0..3 {
+            s[k] += rb.card.mass * model.nodes.x[rb.main_node as usize][k];
+        }
+    }
+    model.mass.total = total;
+    model.mass.center = if total > 0.0 {
+        [s[0] / total, s[1] / total, s[2] / total]
+    } else {
+        [0.0; 3]
+    };
+    model.mass.added_total = model.added_mass.iter().sum();
+}

@@ -1,0 +1,227 @@
+//! The validated model: every id resolved to a dense index, defaults applied,
+//! lumped masses computed. Built once on rank 0 from the [`Deck`]; serde
+//! serializable so it (or a rank's share of it) can be sent to other ranks.
+//!
+//! Dense order is global id order: nodes and each element kind are sorted by
+//! id, so "the fixed global order" of the determinism rules is index order.
+
+mod build;
+mod geometry;
+mod index;
+mod mass;
+mod properties;
+mod sets;
+
+pub use build::build;
+pub use geometry::{geometry_edge_min, hexa_volume, quad_area, tetra_volume, triangle_area};
+pub use index::IdIndex;
+pub use mass::{MassSummary, PartMass};
+pub use properties::{ResolvedShell, ResolvedSolid};
+
+use crate::deck::{
+    Begin, Dof, ElementKind, Engine, FunctionCard, Id, InterfaceCard, MaterialCard, PropertyCard,
+    Warning,
+};
+use serde::{Deserialize, Serialize};
+
+/// Node coordinates by dense index (ids ascending).
+#[derive(Clone, Debug, Default, Serialize, Deserialize)]
+pub struct Nodes {
+    pub ids: Vec<Id>,
+    pub x: Vec<[f64; 3]>,
+}
+
+impl Nodes {
+    pub fn len(&self) -> usize {
+        self.ids.len()
+    }
+    pub fn is_empty(&self) -> bool {
+        self.ids.is_empty()
+    }
+}
+
+/// The elements of one kind (ids ascending), nodes flat with `kind.nodes()` per element.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct ElementSet {
+    pub kind: ElementKind,
+    pub ids: Vec<Id>,
+    /// Part index of each element.
+    pub part: Vec<u32>,
+    /// Dense node indices, `kind.nodes()` per element; `u32::MAX` = absent
+    /// (optional orientation node of a beam or spring).
+    pub nodes: Vec<u32>,
+    /// Shell thickness actually used (element's, else the property's); 0 for others.
+    pub thick: Vec<f64>,
+}
+
+impl ElementSet {
+    pub fn len(&self) -> usize {
+        self.ids.len()
+    }
+    pub fn is_empty(&self) -> bool {
+        self.ids.is_empty()
+    }
+    pub fn nodes_of(&self, e: usize) -> &[u32] {
+        let n = self.kind.nodes();
+        &self.nodes[e * n..(e + 1) * n]
+    }
+}
+
+/// Absent optional node.
+pub const NO_NODE: u32 = u32::MAX;
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct Part {
+    pub id: Id,
+    pub title: String,
+    /// Property and material indices (None: 0 in the deck, allowed for springs).
+    pub prop: Option<u32>,
+    pub mat: Option<u32>,
+    pub subset: Id,
+    pub thick: f64,
+}
+
+/// A property with the defaults that depend on /DEF_SHELL, /DEF_SOLID applied.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct Property {
+    pub card: PropertyCard,
+    pub shell: Option<ResolvedShell>,
+    pub solid: Option<ResolvedSolid>,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct NodeGroup {
+    pub id: Id,
+    pub title: String,
+    /// Dense node indices, ascending, no repeats.
+    pub nodes: Vec<u32>,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct ShellGroup {
+    pub id: Id,
+    pub title: String,
+    /// Indices into the Shell4 element set.
+    pub shells: Vec<u32>,
+}
+
+/// A contact surface: segments of 4 dense node indices (n4 = n3 for triangles),
+/// oriented by the right-hand rule n1→n2→n3.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct Surface {
+    pub id: Id,
+    pub title: String,
+    pub segments: Vec<[u32; 4]>,
+}
+
+impl Surface {
+    /// Distinct nodes of the segments, ascending.
+    pub fn nodes(&self) -> Vec<u32> {
+        let mut n: Vec<u32> = self.segments.iter().flatten().copied().collect();
+        n.sort_unstable();
+        n.dedup();
+        n
+    }
+}
+
+/// An interface with its sides resolved.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct Interface {
+    pub card: InterfaceCard,
+    /// Secondary nodes, ascending dense indices.
+    pub secondary_nodes: Vec<u32>,
+    /// Main segments.
+    pub main_segments: Vec<[u32; 4]>,
+    /// Secondary segments, for interfaces that have them (TYPE3).
+    pub secondary_segments: Vec<[u32; 4]>,
+}
+
+/// A condition that applies to a node group.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct OnNodes<C> {
+    pub card: C,
+    pub nodes: Vec<u32>,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct RigidWall {
+    pub card: crate::deck::RigidWallCard,
+    /// The node carrying a moving wall.
+    pub node: Option<u32>,
+    /// Point M (the moving node's position for a moving wall) and unit normal.
+    pub point: [f64; 3],
+    pub normal: [f64; 3],
+    pub secondary_nodes: Vec<u32>,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct RigidBody {
+    pub card: crate::deck::RigidBodyCard,
+    pub main_node: u32,
+    pub secondary_nodes: Vec<u32>,
+    /// Mass of the body (secondary nodal masses + MASS), centre and inertia
+    /// about the centre (xx, yy, zz, xy, yz, xz).
+    pub mass: f64,
+    pub center: [f64; 3],
+    pub inertia: [f64; 6],
+}
+
+/// A direction-and-function load or imposed motion, with its nodes.
+pub type Bcs = OnNodes<crate::deck::BcsCard>;
+pub type ImposedMotion = OnNodes<crate::deck::ImposedMotionCard>;
+pub type InitialVelocity = OnNodes<crate::deck::InitialVelocityCard>;
+pub type ConcentratedLoad = OnNodes<crate::deck::ConcentratedLoadCard>;
+pub type Gravity = OnNodes<crate::deck::GravityCard>;
+
+/// The model: what every later stage reads.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct Model {
+    pub name: String,
+    pub title: String,
+    pub begin: Begin,
+    pub nodes: Nodes,
+    /// One set per [`ElementKind`], in `Elements::KINDS` order.
+    pub elements: Vec<ElementSet>,
+    pub parts: Vec<Part>,
+    pub materials: Vec<MaterialCard>,
+    pub properties: Vec<Property>,
+    pub functions: Vec<FunctionCard>,
+    pub node_groups: Vec<NodeGroup>,
+    pub shell_groups: Vec<ShellGroup>,
+    pub surfaces: Vec<Surface>,
+    pub bcs: Vec<Bcs>,
+    pub imposed_velocities: Vec<ImposedMotion>,
+    pub imposed_displacements: Vec<ImposedMotion>,
+    pub initial_velocities: Vec<InitialVelocity>,
+    pub concentrated_loads: Vec<ConcentratedLoad>,
+    pub gravity: Vec<Gravity>,
+    pub rigid_walls: Vec<RigidWall>,
+    pub rigid_bodies: Vec<RigidBody>,
+    pub interfaces: Vec<Interface>,
+    pub sections: Vec<crate::deck::SectionCard>,
+    pub time_histories: Vec<crate::deck::TimeHistoryCard>,
+    /// Lumped nodal mass: elements + /ADMAS (rigid-body MASS is in `rigid_bodies`).
+    pub nodal_mass: Vec<f64>,
+    /// /ADMAS mass per node (already included in `nodal_mass`).
+    pub added_mass: Vec<f64>,
+    pub mass: MassSummary,
+    pub engine: Option<Engine>,
+    pub warnings: Vec<Warning>,
+}
+
+impl Model {
+    pub fn elements_of(&self, kind: ElementKind) -> &ElementSet {
+        &self.elements[crate::deck::Elements::KINDS
+            .iter()
+            .position(|k| *k == kind)
+            .unwrap()]
+    }
+    pub fn n_elements(&self) -> usize {
+        self.elements.iter().map(|s| s.len()).sum()
+    }
+}
+
+/// Index of a DOF in a 6-vector (for conditions).
+pub fn dof_index(d: Dof) -> usize {
+    d.index()
+}

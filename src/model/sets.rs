@@ -1,0 +1,275 @@
+//! Resolving groups and surfaces to dense indices. Group references may point
+//! forward in the deck and nest (/GRNOD/GRNOD); cycles are errors.
+
+use super::index::IdIndex;
+use super::{ElementSet, NodeGroup, ShellGroup, Surface};
+use crate::deck::{
+    DeckError, Id, NodeGroupCard, NodeGroupKind, ShellGroupCard, SurfaceCard, SurfaceDef,
+};
+use std::collections::{BTreeSet, HashMap};
+
+pub struct SetContext<'a> {
+    pub nodes: &'a IdIndex,
+    pub parts: &'a IdIndex,
+    pub shells4: &'a IdIndex,
+    /// Element sets in `Elements::KINDS` order.
+    pub elements: &'a [ElementSet],
+}
+
+/// Resolves every node group (in deck order).
+pub fn node_groups(cards: &[NodeGroupCard], ctx: &SetContext) -> Result<Vec<NodeGroup>, DeckError> {
+    let index = IdIndex::build(
+        "node group",
+        cards.iter().map(|c| (c.id, c.loc.clone())),
+        "/GRNOD",
+    )?;
+    let mut done: HashMap<usize, Vec<u32>> = HashMap::new();
+    let mut out = Vec::with_capacity(cards.len());
+    for i in 0..cards.len() {
+        let mut stack = Vec::new();
+        let nodes = resolve_group(i, cards, &index, ctx, &mut done, &mut stack)?;
+        out.push(NodeGroup {
+            id: cards[i].id,
+            title: cards[i].title.clone(),
+            nodes,
+        });
+    }
+    Ok(out)
+}
+
+fn resolve_group(
+    i: usize,
+    cards: &[NodeGroupCard],
+    index: &IdIndex,
+    ctx: &SetContext,
+    done: &mut HashMap<usize, Vec<u32>>,
+    stack: &mut Vec<usize>,
+) -> Result<Vec<u32>, DeckError> {
+    if let Some(n) = done.get(&i) {
+        return Ok(n.clone());
+    }
+    let card = &cards[i];
+    let kw = format!("/GRNOD/{:?}/{}", card.kind, card.id).to_uppercase();
+    if stack.contains(&i) {
+        let chain: Vec<String> = stack
+            .iter()
+            .chain(std::iter::once(&i))
+            .map(|&k| cards[k].id.to_string())
+            .collect();
+        return Err(DeckError::new(
+            card.loc.clone(),
+            &kw,
+            "grnd_ID",
+            format!(
+                "node groups refer to each other in a cycle: {}",
+                chain.join(" -> ")
+            ),
+        ));
+    }
+    stack.push(i);
+    let mut add = BTreeSet::new();
+    let mut remove = BTreeSet::new();
+    for &item in &card.items {
+        let id = item.unsigned_abs() as Id;
+        let target = if item > 0 { &mut add } else { &mut remove };
+        match card.kind {
+            NodeGroupKind::Node => {
+                target.insert(ctx.nodes.resolve(id, &card.loc, &kw, "node_ID")?);
+            }
+            NodeGroupKind::Part => {
+                let p = ctx.parts.resolve(id, &card.loc, &kw, "part_ID")?;
+                for set in ctx.elements {
+                    for e in 0..set.len() {
+                        if set.part[e] == p {
+                            target.extend(
+                                set.nodes_of(e)
+                                    .iter()
+                                    .copied()
+                                    .filter(|&n| n != super::NO_NODE),
+                            );
+                        }
+                    }
+                }
+            }
+            NodeGroupKind::Grnod => {
+                let g = index.resolve(id, &card.loc, &kw, "grnd_ID")? as usize;
+                let nodes = resolve_group(g, cards, index, ctx, done, stack)?;
+                target.extend(nodes);
+            }
+        }
+    }
+    stack.pop();
+    let nodes: Vec<u32> = add.difference(&remove).copied().collect();
+    done.insert(i, nodes.clone());
+    Ok(nodes)
+}
+
+/// Resolves the shell groups.
+pub fn shell_groups(
+    cards: &[ShellGroupCard],
+    ctx: &SetContext,
+) -> Result<Vec<ShellGroup>, DeckError> {
+    IdIndex::build(
+        "shell group",
+        cards.iter().map(|c| (c.id, c.loc.clone())),
+        "/GRSHEL",
+    )?;
+    let mut out = Vec::new();
+    for c in cards {
+        let kw = format!("/GRSHEL/SHEL/{}", c.id);
+        let mut add = BTreeSet::new();
+        let mut remove = BTreeSet::new();
+        for &item in &c.items {
+            let e = ctx
+                .shells4
+                .resolve(item.unsigned_abs(), &c.loc, &kw, "shell_ID")?;
+            if item > 0 {
+                add.insert(e);
+            } else {
+                remove.insert(e);
+            }
+        }
+        out.push(ShellGroup {
+            id: c.id,
+            title: c.title.clone(),
+            shells: add.difference(&remove).copied().collect(),
+        });
+    }
+    Ok(out)
+}
+
+/// Segment of a shell, reversed if `flip` (n1 n4 n3 n2 keeps n4 = n3 triangles valid as n1 n3 n2 n2).
+fn shell_segment(nodes: &[u32], flip: bool) -> [u32; 4] {
+    let s = if nodes.len() == 3 {
+        [nodes[0], nodes[1], nodes[2], nodes[2]]
+    } else {
+        [nodes[0], nodes[1], nodes[2], nodes[3]]
+    };
+    if !flip {
+        s
+    } else if s[2] == s[3] {
+        [s[0], s[2], s[1], s[1]]
+    } else {
+        [s[0], s[3], s[2], s[1]]
+    }
+}
+
+/// External faces of the solids of part `p` (faces not shared by two of its solids), outward.
+fn solid_faces(ctx: &SetContext, p: u32, flip: bool, out: &mut Vec<[u32; 4]>) {
+    use crate::deck::ElementKind;
+    let mut faces: Vec<[u32; 4]> = Vec::new();
+    for set in ctx.elements {
+        let local: &[[usize; 4]] = match set.kind {
+            ElementKind::Brick8 => &super::geometry::HEXA_FACES,
+            ElementKind::Tetra4 => &[[0, 2, 1, 1], [0, 1, 3, 3], [1, 2, 3, 3], [2, 0, 3, 3]],
+            _ => continue,
+        };
+        for e in 0..set.len() {
+            if set.part[e] != p {
+                continue;
+            }
+            let n = set.nodes_of(e);
+            for f in local {
+                let face = [n[f[0]], n[f[1]], n[f[2]], n[f[3]]];
+                let mut distinct: Vec<u32> = face.to_vec();
+                distinct.sort_unstable();
+                distinct.dedup();
+                if distinct.len() >= 3 {
+                    faces.push(face);
+                }
+            }
+        }
+    }
+    let key = |f: &[u32; 4]| {
+        let mut k = *f;
+        k.sort_unstable();
+        k
+    };
+    let mut count: HashMap<[u32; 4], u32> = HashMap::new();
+    for f in &faces {
+        *count.entry(key(f)).or_default() += 1;
+    }
+    for f in faces {
+        if count[&key(&f)] == 1 {
+            out.push(if flip { [f[0], f[3], f[2], f[1]] } else { f });
+        }
+    }
+}
+
+/// Resolves the surfaces; a surface with no segment is an error.
+pub fn surfaces(
+    cards: &[SurfaceCard],
+    shell_groups: &[ShellGroup],
+    grshel_cards: &[ShellGroupCard],
+    ctx: &SetContext,
+) -> Result<Vec<Surface>, DeckError> {
+    use crate::deck::ElementKind;
+    IdIndex::build(
+        "surface",
+        cards.iter().map(|c| (c.id, c.loc.clone())),
+        "/SURF",
+    )?;
+    let grshel_index = IdIndex::build(
+        "shell group",
+        grshel_cards.iter().map(|c| (c.id, c.loc.clone())),
+        "/GRSHEL",
+    )?;
+    let mut out = Vec::new();
+    for c in cards {
+        let mut segments = Vec::new();
+        let kw;
+        match &c.def {
+            SurfaceDef::Parts(items) => {
+                kw = format!("/SURF/PART/{}", c.id);
+                for &item in items {
+                    let p = ctx
+                        .parts
+                        .resolve(item.unsigned_abs(), &c.loc, &kw, "part_ID")?;
+                    let flip = item < 0;
+                    for set in ctx.elements {
+                        if matches!(set.kind, ElementKind::Shell4 | ElementKind::Shell3) {
+                            for e in 0..set.len() {
+                                if set.part[e] == p {
+                                    segments.push(shell_segment(set.nodes_of(e), flip));
+                                }
+                            }
+                        }
+                    }
+                    solid_faces(ctx, p, flip, &mut segments);
+                }
+            }
+            SurfaceDef::ShellGroups(items) => {
+                kw = format!("/SURF/GRSHEL/{}", c.id);
+                let shells = &ctx.elements[0];
+                for &item in items {
+                    let g = grshel_index.resolve(item.unsigned_abs(), &c.loc, &kw, "grshel_ID")?;
+                    for &e in &shell_groups[g as usize].shells {
+                        segments.push(shell_segment(shells.nodes_of(e as usize), item < 0));
+                    }
+                }
+            }
+            SurfaceDef::Segments(segs) => {
+                kw = format!("/SURF/SEG/{}", c.id);
+                for s in segs {
+                    let mut n = [0u32; 4];
+                    for (k, name) in ["node_ID1", "node_ID2", "node_ID3", "node_ID4"]
+                        .iter()
+                        .enumerate()
+                    {
+                        n[k] = ctx.nodes.resolve(s.nodes[k], &s.loc, &kw, name)?;
+                    }
+                    segments.push(n);
+                }
+            }
+        }
+        if segments.is_empty() {
+            return Err(DeckError::new(c.loc.clone(), &kw, "", "the surface has no segments (its parts or groups hold no shell or solid face); expected at least one"));
+        }
+        out.push(Surface {
+            id: c.id,
+            title: c.title.clone(),
+            segments,
+        });
+    }
+    Ok(out)
+}

@@ -1,0 +1,125 @@
+//! The only module that touches MPI: start-up, scattering the subdomains,
+//! and the neighbour exchanges. Messages are bincode-encoded.
+
+use crate::domain::Subdomain;
+use mpi::topology::SimpleCommunicator;
+use mpi::traits::*;
+
+/// The MPI world for this process (one rank when run without mpirun).
+pub struct World {
+    _universe: mpi::environment::Universe,
+    pub comm: SimpleCommunicator,
+}
+
+impl World {
+    /// Initialises MPI; `None` if it was already initialised.
+    pub fn init() -> Option<World> {
+        let universe = mpi::initialize()?;
+        let comm = universe.world();
+        Some(World {
+            _universe: universe,
+            comm,
+        })
+    }
+    pub fn rank(&self) -> u32 {
+        self.comm.rank() as u32
+    }
+    pub fn size(&self) -> u32 {
+        self.comm.size() as u32
+    }
+
+    /// Takes the job down (all ranks) with an exit code: a rank that fails must not leave the others hanging.
+    pub fn abort(&self, code: i32) -> ! {
+        self.comm.abort(code)
+    }
+
+    /// Rank 0 passes one Subdomain per rank; every rank gets its own back.
+    pub fn scatter(&self, parts: Option<Vec<Subdomain>>) -> Result<Subdomain, String> {
+        const TAG: i32 = 11;
+        if self.rank() == 0 {
+            let parts = parts.ok_or("rank 0 has no subdomains to scatter")?;
+            let mut mine = None;
+            for sd in parts {
+                if sd.rank == 0 {
+                    mine = Some(sd);
+                } else {
+                    let bytes = bincode::serialize(&sd).map_err(|e| e.to_string())?;
+                    self.comm
+                        .process_at_rank(sd.rank as i32)
+                        .send_with_tag(&bytes[..], TAG);
+                }
+            }
+            mine.ok_or_else(|| "no subdomain for rank 0".to_string())
+        } else {
+            let (bytes, _) = self.comm.process_at_rank(0).receive_vec_with_tag::<u8>(TAG);
+            bincode::deserialize(&bytes).map_err(|e| e.to_string())
+        }
+    }
+
+    /// Broadcasts a value from rank 0 (the others pass `None`).
+    pub fn broadcast<T: serde::Serialize + serde::de::DeserializeOwned>(
+        &self,
+        value: Option<&T>,
+    ) -> Result<T, String> {
+        let root = self.comm.process_at_rank(0);
+        let mut len: u64 = 0;
+        let mut bytes = Vec::new();
+        if self.rank() == 0 {
+            bytes = bincode::serialize(value.ok_or("rank 0 has nothing to broadcast")?)
+                .map_err(|e| e.to_string())?;
+            len = bytes.len() as u64;
+        }
+        root.broadcast_into(&mut len);
+        bytes.resize(len as usize, 0);
+        root.broadcast_into(&mut bytes[..]);
+        bincode::deserialize(&bytes).map_err(|e| e.to_string())
+    }
+
+    /// Sends `send[i]` to neighbour `ranks[i]` and returns what each sent back.
+    /// Pairs are served in ascending neighbour order, the lower rank sending
+    /// first, so blocking sends cannot deadlock.
+    pub fn exchange_with_neighbours(&self, ranks: &[u32], send: &[Vec<u64>]) -> Vec<Vec<u64>> {
+        const TAG: i32 = 12;
+        let me = self.rank();
+        ranks
+            .iter()
+            .zip(send)
+            .map(|(&nb, out)| {
+                let p = self.comm.process_at_rank(nb as i32);
+                if me < nb {
+                    p.send_with_tag(&out[..], TAG);
+                    p.receive_vec_with_tag::<u64>(TAG).0
+                } else {
+                    let got = p.receive_vec_with_tag::<u64>(TAG).0;
+                    p.send_with_tag(&out[..], TAG);
+                    got
+                }
+            })
+            .collect()
+    }
+
+    /// Gathers one string per rank on rank 0 (in rank order).
+    pub fn gather_strings(&self, s: &str) -> Option<Vec<String>> {
+        const TAG: i32 = 13;
+        if self.rank() == 0 {
+            let mut out = vec![s.to_string()];
+            for r in 1..self.size() {
+                let (b, _) = self
+                    .comm
+                    .process_at_rank(r as i32)
+                    .receive_vec_with_tag::<u8>(TAG);
+                out.push(String::from_utf8_lossy(&b).into_owned());
+            }
+            Some(out)
+        } else {
+            self.comm
+                .process_at_rank(0)
+                .send_with_tag(s.as_bytes(), TAG);
+            None
+        }
+    }
+
+    pub fn barrier(&self) {
+        self.comm.barrier();
+    }
+}
