@@ -38,6 +38,9 @@ pub struct InterfaceCard {
     pub loc: Loc,
 }
 
+// A deck holds few interfaces: the size of the TYPE7 variant does not matter,
+// and boxing it would change the public shape `Type7(Type7)`.
+#[allow(clippy::large_enum_variant)]
 #[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
 pub enum InterfaceKind {
     Type2(Type2),

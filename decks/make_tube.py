@@ -1,0 +1,99 @@
+#!/usr/bin/env python3
+"""Writes a square-tube crash deck in Radioss block format (the project's own
+demo and benchmark deck): a thin-walled steel tube (Johnson-Cook, Ishell=1,
+3 integration points) flying at 10 m/s into a rigid wall, with TYPE7
+self-contact and 50 kg added at its back end. Units: kg, mm, ms (stress in GPa).
+
+    python3 decks/make_tube.py OUT_DIR NAME [NW NL]
+
+NW shells across each side, NL along the length (default 5 x 20 = 400 shells).
+"""
+import os
+import sys
+
+out, name = sys.argv[1], sys.argv[2]
+nw = int(sys.argv[3]) if len(sys.argv) > 3 else 5
+nl = int(sys.argv[4]) if len(sys.argv) > 4 else 20
+width, length = 50.0, 200.0
+i10 = lambda v: f"{v:>10d}"
+r20 = lambda v: f"{v:>20.10g}"
+
+# Nodes: ring of 4*nw nodes per station, nl+1 stations along x.
+ring = []
+h = width / nw
+for side in range(4):
+    for k in range(nw):
+        t = k * h
+        y, z = [(t, 0.0), (width, t), (width - t, width), (0.0, width - t)][side]
+        ring.append((y - width / 2, z - width / 2))
+nr = len(ring)
+nodes = []
+for j in range(nl + 1):
+    x = j * length / nl
+    for (y, z) in ring:
+        nodes.append((len(nodes) + 1, x, y, z))
+shells = []
+for j in range(nl):
+    for k in range(nr):
+        a = j * nr + k + 1
+        b = j * nr + (k + 1) % nr + 1
+        shells.append((len(shells) + 1, a, b, b + nr, a + nr))
+back = [j for j in range(nl * nr + 1, (nl + 1) * nr + 1)]
+front = list(range(1, nr + 1))
+
+L = []
+L += ["#RADIOSS STARTER", f"# {name}: square tube crash, written by decks/make_tube.py", "/BEGIN", name,
+      i10(2019) + i10(0), r20(0)[:-2].rjust(18) + "kg" + "mm".rjust(20) + "ms".rjust(20),
+      "kg".rjust(20) + "mm".rjust(20) + "ms".rjust(20)]
+L[-2] = "kg".rjust(20) + "mm".rjust(20) + "ms".rjust(20)
+L += ["/TITLE", f"Square tube {nw}x{nl} per side into a rigid wall"]
+L += ["/DEF_SHELL", "#   ISHELL    ISMSTR    ITHICK     IPLAS   ISTRAIN                        I_SH3N     IDRIL",
+      i10(1) + i10(2) + i10(1) + i10(0) + i10(1) + " " * 20 + i10(2) + i10(0)]
+L += ["/MAT/PLAS_JOHNS/1", "Steel (Johnson-Cook)", "#              RHO_I", r20(7.85e-6),
+      "#                  E                  Nu     Iflag", r20(210.0) + r20(0.3) + i10(0),
+      "#                  a                   b                   n           EPS_p_max            SIG_max0",
+      r20(0.25) + r20(0.35) + r20(0.5) + r20(0) + r20(0.6),
+      "#                  c           EPS_DOT_0       ICC   Fsmooth               F_cut               Chard",
+      r20(0.01) + r20(1e-3) + i10(1) + i10(1) + r20(1.0) + r20(0),
+      "#                  m              T_melt              rhoC_p                 T_r",
+      r20(0) * 4]
+L += ["/PROP/SHELL/1", "Tube wall 1.2 mm",
+      "#   Ishell    Ismstr     Ish3n    Idrill                            P_thick_fail", i10(1) + i10(2) + i10(2) + i10(0),
+      "#                 hm                  hf                  hr                  dm                  dn", r20(0.01) * 3 + r20(0) * 2,
+      "#        N   Istrain               Thick              Ashear              Ithick     Iplas", i10(3) + i10(1) + r20(1.2) + r20(0) + i10(0) + i10(0) + i10(0)]
+L += ["/PART/1", "Tube", i10(1) + i10(1) + i10(0)]
+L += ["/NODE"] + [i10(n) + r20(x) + r20(y) + r20(z) for (n, x, y, z) in nodes]
+L += ["/SHELL/1"] + [i10(e) + i10(a) + i10(b) + i10(c) + i10(d) for (e, a, b, c, d) in shells]
+def group(gid, title, ids):
+    out = [f"/GRNOD/NODE/{gid}", title]
+    for i in range(0, len(ids), 10):
+        out.append("".join(i10(v) for v in ids[i:i + 10]))
+    return out
+L += ["/INIVEL/TRA/1", "10 m/s towards the wall", "#                 Vx                  Vy                  Vz   Gnod_id   Skew_id",
+      r20(-10.0) + r20(0) + r20(0) + i10(2) + i10(0)]
+L += ["/GRNOD/PART/2", "all tube nodes", i10(1)]
+L += ["/ADMAS/1/1", "50 kg at the back end", "#               MASS  grnod_ID", r20(50.0) + i10(3)]
+L += group(3, "back end", back)
+L += ["/RWALL/PLANE/1", "Rigid wall at x = -1", "#  node_ID     Slide grnod_ID1 grnod_ID2", i10(0) + i10(0) + i10(4) + i10(0),
+      "#           D_search                fric            Diameter                ffac       ifq", r20(0) * 4 + i10(0),
+      "#                 XM                  YM                  ZM", r20(-1.0) + r20(0) + r20(0),
+      "#               X_M1                Y_M1                Z_M1", r20(0.0) + r20(0) + r20(0)]
+L += ["/GRNOD/PART/4", "wall candidates: every tube node", i10(1)]
+L += ["/SURF/PART/5", "tube wall", i10(1)]
+L += ["/INTER/TYPE7/1", "Tube self-contact",
+      "#  Slav_id   Mast_id      Istf      Ithe      Igap                Ibag      Idel     Icurv      Iadm",
+      i10(0) + i10(5) + i10(4) + i10(0) + i10(1) + " " * 10 + i10(0) + i10(0) + i10(0) + i10(0),
+      "#          Fscalegap             Gap_max             Fpenmax", r20(0) * 3,
+      "#              Stmin               Stmax          %mesh_size               dtmin  Irem_gap   Irem_i2", r20(0) * 4 + i10(0) + i10(0),
+      "#              Stfac                Fric              Gapmin              Tstart               Tstop", r20(1.0) + r20(0.2) + r20(0.6) + r20(0) + r20(0),
+      "#      IBC                        Inacti                VisS                VisF              Bumult", "       000" + " " * 20 + i10(0) + r20(0) + r20(0) + r20(0),
+      "#    Ifric    Ifiltr               Xfreq     Iform   sens_ID   fct_IDf             AscaleF   fric_ID", i10(0) + i10(0) + r20(0) + i10(0) + i10(0) + i10(0) + r20(0) + i10(0)]
+L += ["/TH/NODE/1", "back end node", "DEF", i10(back[0]) + i10(0)]
+L += ["/END"]
+# The wall normal must point from M to M1 towards the tube: M = (-1,0,0), M1 = (0,0,0).
+os.makedirs(out, exist_ok=True)
+with open(os.path.join(out, f"{name}_0000.rad"), "w") as f:
+    f.write("\n".join(L) + "\n")
+with open(os.path.join(out, f"{name}_0001.rad"), "w") as f:
+    f.write("\n".join(["#RADIOSS ENGINE", f"/RUN/{name}/1", "                  10", "/DT", "0.9 0.0",
+                       "/PRINT/-100/55", "/ANIM/DT", "0.0 1.0", "/TFILE/4", "0.05", "/PARITH/ON"]) + "\n")

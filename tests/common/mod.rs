@@ -1,0 +1,74 @@
+//! Helpers shared by the integration tests.
+#![allow(dead_code)]
+
+use std::path::PathBuf;
+use std::process::{Command, Output};
+
+/// `../shared` beside the checkout (CI puts it there), or $CRASHSIM_SHARED.
+pub fn shared_dir() -> PathBuf {
+    let p = std::env::var_os("CRASHSIM_SHARED")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| {
+            PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+                .join("..")
+                .join("shared")
+        });
+    assert!(
+        p.join("decks/openradioss-qa").is_dir(),
+        "the shared reference decks are not at {} (set CRASHSIM_SHARED)",
+        p.display()
+    );
+    p
+}
+
+/// The starter deck of a QA reference case, read in place.
+pub fn qa_deck(name: &str) -> PathBuf {
+    shared_dir()
+        .join("decks/openradioss-qa")
+        .join(name)
+        .join(format!("{name}_0000.rad"))
+}
+
+pub fn qa_listing(name: &str) -> String {
+    let p = shared_dir()
+        .join("decks/openradioss-qa")
+        .join(name)
+        .join(format!("{name}_0000.out"));
+    std::fs::read_to_string(&p).unwrap_or_else(|e| panic!("cannot read {}: {e}", p.display()))
+}
+
+pub fn crashsim(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_crashsim"))
+        .args(args)
+        .output()
+        .expect("crashsim runs")
+}
+
+/// Runs crashsim and parses its stdout as JSON, asserting success.
+pub fn crashsim_json(args: &[&str]) -> serde_json::Value {
+    let out = crashsim(args);
+    assert!(
+        out.status.success(),
+        "crashsim {args:?} failed: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).expect("JSON output")
+}
+
+/// `mpirun -n N [--oversubscribe] crashsim ARGS`, working as root.
+pub fn mpirun(n: u32, args: &[&str]) -> Output {
+    let mut c = Command::new("mpirun");
+    c.env("OMPI_ALLOW_RUN_AS_ROOT", "1")
+        .env("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
+        .env("OMPI_MCA_btl_vader_single_copy_mechanism", "none")
+        .env("OMPI_MCA_hwloc_base_binding_policy", "none")
+        .arg("-n")
+        .arg(n.to_string());
+    if n > 2 {
+        c.arg("--oversubscribe");
+    }
+    c.arg(env!("CARGO_BIN_EXE_crashsim"))
+        .args(args)
+        .output()
+        .expect("mpirun runs (is openmpi-bin installed? run ci/setup)")
+}
