@@ -16,6 +16,25 @@ pub struct InterfaceSummary {
 }
 
 #[derive(Serialize)]
+pub struct PartDetail {
+    pub id: Id,
+    pub title: String,
+    pub mass: f64,
+    pub center: [f64; 3],
+    pub inertia: [f64; 6],
+}
+
+#[derive(Serialize)]
+pub struct RigidBodyDetail {
+    pub id: Id,
+    pub main_node: Id,
+    pub secondary_nodes: usize,
+    pub mass: f64,
+    pub center: [f64; 3],
+    pub inertia: [f64; 6],
+}
+
+#[derive(Serialize)]
 pub struct Summary {
     pub deck: String,
     pub title: String,
@@ -40,6 +59,11 @@ pub struct Summary {
     pub added_mass: f64,
     pub center_of_mass: [f64; 3],
     pub part_masses: BTreeMap<Id, f64>,
+    /// Per part: mass, centre and inertia about the centre (xx, yy, zz, xy, yz, xz).
+    pub part_details: Vec<PartDetail>,
+    /// Per rigid body: id, main node id, number of secondary nodes, mass
+    /// (MASS + nodal masses), centre and inertia about the centre.
+    pub rigid_body_details: Vec<RigidBodyDetail>,
     pub bounding_box: [[f64; 3]; 2],
     pub shortest_edge: f64,
     pub end_time: Option<f64>,
@@ -100,6 +124,30 @@ impl Summary {
                 .zip(&model.mass.per_part)
                 .map(|(p, m)| (p.id, m.mass))
                 .collect(),
+            part_details: model
+                .parts
+                .iter()
+                .zip(&model.mass.per_part)
+                .map(|(p, m)| PartDetail {
+                    id: p.id,
+                    title: p.title.clone(),
+                    mass: m.mass,
+                    center: m.center,
+                    inertia: m.inertia,
+                })
+                .collect(),
+            rigid_body_details: model
+                .rigid_bodies
+                .iter()
+                .map(|r| RigidBodyDetail {
+                    id: r.card.id,
+                    main_node: model.nodes.ids[r.main_node as usize],
+                    secondary_nodes: r.secondary_nodes.len(),
+                    mass: r.mass,
+                    center: r.center,
+                    inertia: r.inertia,
+                })
+                .collect(),
             bounding_box: [lo, hi],
             shortest_edge: geometry_edge_min(model),
             end_time: model
@@ -157,8 +205,12 @@ impl Summary {
             "centre of mass    {:.6e} {:.6e} {:.6e}",
             c[0], c[1], c[2]
         );
-        for (id, m) in &self.part_masses {
-            let _ = writeln!(s, "  part {id:>10}  mass {m:.10e}");
+        for p in &self.part_details {
+            let _ = writeln!(
+                s,
+                "  part {:>10}  mass {:.10e}  centre {:.6e} {:.6e} {:.6e}  Ixx Iyy Izz {:.6e} {:.6e} {:.6e}",
+                p.id, p.mass, p.center[0], p.center[1], p.center[2], p.inertia[0], p.inertia[1], p.inertia[2]
+            );
         }
         let [lo, hi] = self.bounding_box;
         let _ = writeln!(

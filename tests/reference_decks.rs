@@ -31,8 +31,27 @@ fn listed_total_mass(listing: &str) -> f64 {
     .expect("total mass in the listing")
 }
 
-/// (part id, mass) from the "PART MASS & INERTIA" section.
-fn listed_part_masses(listing: &str) -> Vec<(u64, f64)> {
+/// One part of the listing's "PART MASS & INERTIA" section.
+struct ListedPart {
+    id: u64,
+    /// Mass, Ixx, Iyy, Izz, Ixy, Iyz, Izx.
+    mass_inertia: Vec<f64>,
+    center: Vec<f64>,
+}
+
+fn numbers(line: &str) -> Vec<f64> {
+    // Fortran may glue a negative number to the previous one ("1.8E-18-5.3E-18").
+    let spaced = line
+        .replace("E-", "e~")
+        .replace('-', " -")
+        .replace("e~", "E-");
+    spaced
+        .split_whitespace()
+        .filter_map(|t| t.parse().ok())
+        .collect()
+}
+
+fn listed_parts(listing: &str) -> Vec<ListedPart> {
     let lines: Vec<&str> = listing.lines().collect();
     let mut out = Vec::new();
     let mut part = None;
@@ -46,14 +65,12 @@ fn listed_part_masses(listing: &str) -> Vec<(u64, f64)> {
             part = digits.parse().ok();
         }
         if l.trim_start().starts_with("Mass ") && l.contains("Ixx") {
-            if let Some(p) = part.take() {
-                let m: f64 = lines[i + 1]
-                    .split_whitespace()
-                    .next()
-                    .unwrap()
-                    .parse()
-                    .unwrap();
-                out.push((p, m));
+            if let Some(id) = part.take() {
+                out.push(ListedPart {
+                    id,
+                    mass_inertia: numbers(lines[i + 1]),
+                    center: numbers(lines[i + 3]),
+                });
             }
         }
     }
@@ -103,20 +120,54 @@ fn check_against_listing(name: &str) {
         rel(total, want) < 1e-6,
         "{name}: total mass {total} vs listing {want}"
     );
-    let parts = listed_part_masses(&listing);
+    let parts = listed_parts(&listing);
     assert_eq!(
         parts.len() as u64,
         s["parts"].as_u64().unwrap(),
         "{name}: one listed mass per part"
     );
-    for (id, m) in parts {
+    for p in parts {
+        let id = p.id;
         let got = s["part_masses"][id.to_string()]
             .as_f64()
             .unwrap_or_else(|| panic!("{name}: part {id} missing"));
+        let m = p.mass_inertia[0];
         assert!(
             rel(got, m) < 1e-6,
             "{name}: part {id} mass {got} vs listing {m}"
         );
+        // Centre and inertia (about the centre, nodal rotational inertia of
+        // shells included) as the listing gives them.
+        let d = s["part_details"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|d| d["id"].as_u64() == Some(id))
+            .unwrap();
+        let scale_x = p
+            .center
+            .iter()
+            .fold(0.0f64, |a, v| a.max(v.abs()))
+            .max(1e-30);
+        for k in 0..3 {
+            let c = d["center"][k].as_f64().unwrap();
+            assert!(
+                (c - p.center[k]).abs() <= 1e-6 * scale_x,
+                "{name}: part {id} centre {k}: {c} vs {}",
+                p.center[k]
+            );
+        }
+        let scale_i = p.mass_inertia[1..4]
+            .iter()
+            .fold(0.0f64, |a, v| a.max(v.abs()));
+        for k in 0..6 {
+            let i = d["inertia"][k].as_f64().unwrap();
+            let want = p.mass_inertia[1 + k];
+            assert!(
+                (i - want).abs() <= 1e-6 * scale_i,
+                "{name}: part {id} inertia component {k}: {i} vs listing {want}"
+            );
+        }
     }
 }
 

@@ -322,18 +322,24 @@ pub fn build(deck: &Deck) -> Result<Model, DeckError> {
     )?;
     for c in &deck.interfaces {
         let kw = format!("/INTER/TYPE{}/{}", c.type_number(), c.id);
+        let loc = if c.ids_loc.line == 0 {
+            &c.loc
+        } else {
+            &c.ids_loc
+        };
         let side = |s: Side, field: &str| -> Result<Option<(Vec<u32>, Vec<[u32; 4]>)>, DeckError> {
             Ok(match s {
-                Side::NodeGroup(g) => Some((group(g, &c.loc, &kw, field)?, Vec::new())),
+                Side::NodeGroup(g) => Some((group(g, loc, &kw, field)?, Vec::new())),
                 Side::Surface(sid) => {
-                    let s = &surfaces[surf_index.resolve(sid, &c.loc, &kw, field)? as usize];
+                    let s = &surfaces[surf_index.resolve(sid, loc, &kw, field)? as usize];
                     Some((s.nodes(), s.segments.clone()))
                 }
                 Side::Line(_) | Side::SameAsOther | Side::None => None,
             })
         };
-        let main = side(c.main_side(), "main side")?;
-        let sec = side(c.secondary_side(), "secondary side")?;
+        let (sec_field, main_field) = c.side_fields();
+        let main = side(c.main_side(), main_field)?;
+        let sec = side(c.secondary_side(), sec_field)?;
         if matches!(c.main_side(), Side::Line(_)) || matches!(c.secondary_side(), Side::Line(_)) {
             warnings.push(Warning { loc: c.loc.clone(), keyword: kw.clone(), message: "edge lines (/LINE) are not read yet: this interface has no edges and will not act".into() });
         }
@@ -359,6 +365,7 @@ pub fn build(deck: &Deck) -> Result<Model, DeckError> {
         begin,
         nodal_mass: vec![0.0; nodes.len()],
         added_mass: vec![0.0; nodes.len()],
+        nodal_inertia: vec![0.0; nodes.len()],
         nodes,
         elements,
         parts,
@@ -436,18 +443,27 @@ pub fn build(deck: &Deck) -> Result<Model, DeckError> {
             xm
         };
         let mut inertia = c.inertia;
-        let mut add = |mn: f64, x: [f64; 3]| {
+        // Point masses, plus the shells' nodal rotational inertia (isotropic).
+        let mut add = |mn: f64, x: [f64; 3], rot: f64| {
             let r = [x[0] - center[0], x[1] - center[1], x[2] - center[2]];
-            inertia[0] += mn * (r[1] * r[1] + r[2] * r[2]);
-            inertia[1] += mn * (r[0] * r[0] + r[2] * r[2]);
-            inertia[2] += mn * (r[0] * r[0] + r[1] * r[1]);
+            inertia[0] += mn * (r[1] * r[1] + r[2] * r[2]) + rot;
+            inertia[1] += mn * (r[0] * r[0] + r[2] * r[2]) + rot;
+            inertia[2] += mn * (r[0] * r[0] + r[1] * r[1]) + rot;
             inertia[3] -= mn * r[0] * r[1];
             inertia[4] -= mn * r[1] * r[2];
             inertia[5] -= mn * r[0] * r[2];
         };
-        add(c.mass + model.nodal_mass[main_node as usize], xm);
+        add(
+            c.mass + model.nodal_mass[main_node as usize],
+            xm,
+            model.nodal_inertia[main_node as usize],
+        );
         for &n in &secondary_nodes {
-            add(model.nodal_mass[n as usize], model.nodes.x[n as usize]);
+            add(
+                model.nodal_mass[n as usize],
+                model.nodes.x[n as usize],
+                model.nodal_inertia[n as usize],
+            );
         }
         model.rigid_bodies.push(RigidBody {
             card: c.clone(),

@@ -9,6 +9,11 @@
 //!   equally by the group's nodes;
 //! - /RBODY MASS: carried by the rigid body (on its main node), counted once.
 //!
+//! - shell nodes also get a rotational inertia (isotropic, for the
+//!   rotational degrees of freedom): ρ·t·A/4 · (A/9 + t²/12) per node, with
+//!   A/12 instead of A/9 for Ishell ≥ 11 (QBAT, QEPH); it counts in the part
+//!   inertia as Radioss reports it.
+//!
 //! This is how the Radioss starter distributes mass (its NODAL MASSES,
 //! PART MASS and TOTAL MASS tables agree with these rules on the QA decks).
 
@@ -118,6 +123,7 @@ fn share(kind: ElementKind) -> f64 {
 /// accumulates part mass, first moment and second moments.
 pub(super) fn lump(model: &mut Model, masses: &[Vec<f64>]) {
     let nparts = model.parts.len();
+    let mut rot = vec![0.0; nparts]; // Σ nodal rotational inertia of the part's shells
     let mut m = vec![0.0; nparts];
     let mut s1 = vec![[0.0; 3]; nparts];
     let mut s2 = vec![[0.0; 6]; nparts]; // Σm x², y², z², xy, yz, xz
@@ -129,12 +135,17 @@ pub(super) fn lump(model: &mut Model, masses: &[Vec<f64>]) {
                 ElementKind::Beam => &set.nodes_of(e)[..2],
                 _ => set.nodes_of(e),
             };
+            let rot_per_mass = shell_rotational_factor(model, set, e);
             for &n in slots {
                 if n == NO_NODE {
                     continue;
                 }
                 let dm = em[e] * f;
                 model.nodal_mass[n as usize] += dm;
+                if rot_per_mass > 0.0 {
+                    model.nodal_inertia[n as usize] += dm * rot_per_mass;
+                    rot[p] += dm * rot_per_mass;
+                }
                 let x = model.nodes.x[n as usize];
                 m[p] += dm;
                 for k in 0..3 {
@@ -165,10 +176,49 @@ pub(super) fn lump(model: &mut Model, masses: &[Vec<f64>]) {
             PartMass {
                 mass: m[p],
                 center: c,
-                inertia: [yy + zz, xx + zz, xx + yy, -xy, -yz, -xz],
+                inertia: [
+                    yy + zz + rot[p],
+                    xx + zz + rot[p],
+                    xx + yy + rot[p],
+                    -xy,
+                    -yz,
+                    -xz,
+                ],
             }
         })
         .collect();
+}
+
+/// Rotational inertia per unit nodal mass of a shell's nodes, A/9 + t²/12
+/// (A/12 + t²/12 for Ishell ≥ 11); 0 for other elements.
+fn shell_rotational_factor(model: &Model, set: &ElementSet, e: usize) -> f64 {
+    if !matches!(set.kind, ElementKind::Shell4 | ElementKind::Shell3) {
+        return 0.0;
+    }
+    let x = &model.nodes.x;
+    let n = set.nodes_of(e);
+    let area = if set.kind == ElementKind::Shell4 {
+        quad_area([
+            x[n[0] as usize],
+            x[n[1] as usize],
+            x[n[2] as usize],
+            x[n[3] as usize],
+        ])
+    } else {
+        triangle_area([x[n[0] as usize], x[n[1] as usize], x[n[2] as usize]])
+    };
+    let part = &model.parts[set.part[e] as usize];
+    let ishell = part
+        .prop
+        .and_then(|p| {
+            model.properties[p as usize]
+                .shell
+                .as_ref()
+                .map(|s| s.ishell)
+        })
+        .unwrap_or(1);
+    let t = set.thick[e];
+    area / if ishell >= 11 { 12.0 } else { 9.0 } + t * t / 12.0
 }
 
 /// Total mass and centre: nodal masses (elements + /ADMAS) plus rigid-body MASS on main nodes.

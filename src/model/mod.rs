@@ -202,6 +202,8 @@ pub struct Model {
     pub time_histories: Vec<crate::deck::TimeHistoryCard>,
     /// Lumped nodal mass: elements + /ADMAS (rigid-body MASS is in `rigid_bodies`).
     pub nodal_mass: Vec<f64>,
+    /// Rotational inertia of shell nodes (isotropic), see `mass`.
+    pub nodal_inertia: Vec<f64>,
     /// /ADMAS mass per node (already included in `nodal_mass`).
     pub added_mass: Vec<f64>,
     pub mass: MassSummary,

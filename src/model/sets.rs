@@ -4,7 +4,7 @@
 use super::index::IdIndex;
 use super::{ElementSet, NodeGroup, ShellGroup, Surface};
 use crate::deck::{
-    DeckError, Id, NodeGroupCard, NodeGroupKind, ShellGroupCard, SurfaceCard, SurfaceDef,
+    item_loc, DeckError, Id, NodeGroupCard, NodeGroupKind, ShellGroupCard, SurfaceCard, SurfaceDef,
 };
 use std::collections::{BTreeSet, HashMap};
 
@@ -69,15 +69,16 @@ fn resolve_group(
     stack.push(i);
     let mut add = BTreeSet::new();
     let mut remove = BTreeSet::new();
-    for &item in &card.items {
+    for (k, &item) in card.items.iter().enumerate() {
+        let loc = item_loc(&card.item_locs, k, &card.loc);
         let id = item.unsigned_abs() as Id;
         let target = if item > 0 { &mut add } else { &mut remove };
         match card.kind {
             NodeGroupKind::Node => {
-                target.insert(ctx.nodes.resolve(id, &card.loc, &kw, "node_ID")?);
+                target.insert(ctx.nodes.resolve(id, loc, &kw, "node_ID")?);
             }
             NodeGroupKind::Part => {
-                let p = ctx.parts.resolve(id, &card.loc, &kw, "part_ID")?;
+                let p = ctx.parts.resolve(id, loc, &kw, "part_ID")?;
                 for set in ctx.elements {
                     for e in 0..set.len() {
                         if set.part[e] == p {
@@ -92,7 +93,7 @@ fn resolve_group(
                 }
             }
             NodeGroupKind::Grnod => {
-                let g = index.resolve(id, &card.loc, &kw, "grnd_ID")? as usize;
+                let g = index.resolve(id, loc, &kw, "grnd_ID")? as usize;
                 let nodes = resolve_group(g, cards, index, ctx, done, stack)?;
                 target.extend(nodes);
             }
@@ -119,10 +120,11 @@ pub fn shell_groups(
         let kw = format!("/GRSHEL/SHEL/{}", c.id);
         let mut add = BTreeSet::new();
         let mut remove = BTreeSet::new();
-        for &item in &c.items {
+        for (k, &item) in c.items.iter().enumerate() {
+            let loc = item_loc(&c.item_locs, k, &c.loc);
             let e = ctx
                 .shells4
-                .resolve(item.unsigned_abs(), &c.loc, &kw, "shell_ID")?;
+                .resolve(item.unsigned_abs(), loc, &kw, "shell_ID")?;
             if item > 0 {
                 add.insert(e);
             } else {
@@ -221,10 +223,11 @@ pub fn surfaces(
         match &c.def {
             SurfaceDef::Parts(items) => {
                 kw = format!("/SURF/PART/{}", c.id);
-                for &item in items {
+                for (k, &item) in items.iter().enumerate() {
+                    let loc = item_loc(&c.item_locs, k, &c.loc);
                     let p = ctx
                         .parts
-                        .resolve(item.unsigned_abs(), &c.loc, &kw, "part_ID")?;
+                        .resolve(item.unsigned_abs(), loc, &kw, "part_ID")?;
                     let flip = item < 0;
                     for set in ctx.elements {
                         if matches!(set.kind, ElementKind::Shell4 | ElementKind::Shell3) {
@@ -241,8 +244,9 @@ pub fn surfaces(
             SurfaceDef::ShellGroups(items) => {
                 kw = format!("/SURF/GRSHEL/{}", c.id);
                 let shells = &ctx.elements[0];
-                for &item in items {
-                    let g = grshel_index.resolve(item.unsigned_abs(), &c.loc, &kw, "grshel_ID")?;
+                for (k, &item) in items.iter().enumerate() {
+                    let loc = item_loc(&c.item_locs, k, &c.loc);
+                    let g = grshel_index.resolve(item.unsigned_abs(), loc, &kw, "grshel_ID")?;
                     for &e in &shell_groups[g as usize].shells {
                         segments.push(shell_segment(shells.nodes_of(e as usize), item < 0));
                     }
