@@ -209,36 +209,28 @@ fn box1bl_centre_of_mass_and_rigid_body() {
 /// The interfaces of INT357 and BOULE1V4: sizes as the listing's node and
 /// segment lists give them (INT357: 4 nodes and 1 segment each; BOULE1V4:
 /// TYPE7 #1 40 nodes / 81 segments, #2 40 nodes / 32 segments).
+/// (id, type, secondary nodes, main segments) of every interface of a QA deck.
+fn interface_sizes_of(name: &str) -> Vec<(u64, u64, u64, u64)> {
+    let s = crashsim_json(&["check", "--json", qa_deck(name).to_str().unwrap()]);
+    s["interfaces"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|i| {
+            let n = |k: &str| i[k].as_u64().unwrap();
+            (n("id"), n("type"), n("secondary_nodes"), n("main_segments"))
+        })
+        .collect()
+}
+
 #[test]
 fn interface_sizes() {
-    let s = crashsim_json(&["check", "--json", qa_deck("INT357").to_str().unwrap()]);
-    let got: Vec<(u64, u64, u64, u64)> = s["interfaces"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|i| {
-            (
-                i["id"].as_u64().unwrap(),
-                i["type"].as_u64().unwrap(),
-                i["secondary_nodes"].as_u64().unwrap(),
-                i["main_segments"].as_u64().unwrap(),
-            )
-        })
-        .collect();
-    assert_eq!(got, vec![(3, 3, 4, 1), (6, 5, 4, 1), (10, 7, 4, 1)]);
-    let s = crashsim_json(&["check", "--json", qa_deck("BOULE1V4").to_str().unwrap()]);
-    let got: Vec<(u64, u64, u64, u64)> = s["interfaces"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|i| {
-            (
-                i["id"].as_u64().unwrap(),
-                i["type"].as_u64().unwrap(),
-                i["secondary_nodes"].as_u64().unwrap(),
-                i["main_segments"].as_u64().unwrap(),
-            )
-        })
-        .collect();
-    assert_eq!(got, vec![(1, 7, 40, 81), (2, 7, 40, 32)]);
+    assert_eq!(
+        interface_sizes_of("INT357"),
+        vec![(3, 3, 4, 1), (6, 5, 4, 1), (10, 7, 4, 1)]
+    );
+    assert_eq!(
+        interface_sizes_of("BOULE1V4"),
+        vec![(1, 7, 40, 81), (2, 7, 40, 32)]
+    );
 }

@@ -36,6 +36,9 @@ pub struct InterfaceCard {
     pub kind: InterfaceKind,
     /// Where the keyword line is.
     pub loc: Loc,
+    /// Where card 1 (the ids of both sides) is.
+    #[serde(default)]
+    pub ids_loc: Loc,
 }
 
 // A deck holds few interfaces: the size of the TYPE7 variant does not matter,
@@ -92,6 +95,15 @@ impl InterfaceCard {
                 }
             }
             InterfaceKind::Type11(t) => Side::Line(t.line_ids),
+        }
+    }
+
+    /// The field names of (secondary side, main side) on card 1.
+    pub fn side_fields(&self) -> (&'static str, &'static str) {
+        match &self.kind {
+            InterfaceKind::Type3(_) => ("surf_ID1", "surf_ID2"),
+            InterfaceKind::Type11(_) => ("line_IDs", "line_IDm"),
+            _ => ("grnd_IDs", "surf_IDm"),
         }
     }
 
@@ -1092,6 +1104,10 @@ pub(super) fn parse_interface(block: &Block, deck: &mut Deck) -> DeckResult<bool
         title,
         kind,
         loc: block.loc.clone(),
+        ids_loc: block
+            .lines
+            .get(1)
+            .map_or_else(|| block.loc.clone(), |l| l.loc.clone()),
     });
     Ok(true)
 }

@@ -201,6 +201,7 @@ pub(super) fn parse_material(block: &Block, deck: &mut Deck) -> DeckResult<bool>
             t_r,
         })
     };
+    super::warn_surplus(&cards, "the last card of this law", &mut deck.warnings);
     deck.materials.push(MaterialCard {
         id,
         unit_id,

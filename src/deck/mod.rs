@@ -198,7 +198,9 @@ fn parse_starter_block(block: &Block, deck: &mut Deck, opts: ReadOptions) -> Dec
     let handled = match p[0] {
         "BEGIN" => controls::parse_begin(block, deck).map(|_| true)?,
         "TITLE" => {
-            deck.title = Cards::new(block).title();
+            let mut cards = Cards::new(block);
+            deck.title = cards.title();
+            warn_surplus(&cards, "the title", &mut deck.warnings);
             true
         }
         "ANALY" | "SPMD" | "IOFLAG" | "RANDOM" | "SHFRA" => controls::parse_control(block, deck)?,
@@ -225,6 +227,25 @@ fn parse_starter_block(block: &Block, deck: &mut Deck, opts: ReadOptions) -> Dec
         unknown_keyword(block, &mut deck.warnings, opts, "starter")?;
     }
     Ok(())
+}
+
+/// One warning when a fixed-card block has non-blank lines after its last
+/// card (`what` names that card, e.g. "the title"): they are ignored.
+pub(crate) fn warn_surplus(cards: &Cards, what: &str, warnings: &mut Vec<Warning>) {
+    let mut extra = cards
+        .remaining()
+        .iter()
+        .filter(|l| !l.text.trim().is_empty());
+    if let Some(first) = extra.next() {
+        warnings.push(Warning {
+            loc: first.loc.clone(),
+            keyword: cards.block.header.clone(),
+            message: format!(
+                "{} line(s) after {what} are ignored; expected the next keyword here",
+                1 + extra.count()
+            ),
+        });
+    }
 }
 
 /// The id that follows the keyword name in the header (`/PART/12` → 12),

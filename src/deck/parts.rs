@@ -37,6 +37,11 @@ pub(super) fn parse_part(block: &Block, deck: &mut Deck) -> DeckResult<()> {
             format!("{thick}: part thickness must be >= 0 (0 = property thickness)"),
         ));
     }
+    super::warn_surplus(
+        &cards,
+        "the card with prop_ID, mat_ID, subset_ID",
+        &mut deck.warnings,
+    );
     deck.parts.push(PartCard {
         id,
         title,
@@ -175,6 +180,9 @@ pub(super) fn parse_property(block: &Block, deck: &mut Deck) -> DeckResult<bool>
         4 => PropertyKind::Spring(read_spring(&mut cards)?),
         _ => PropertyKind::SpringBeam(read_spring_beam(&mut cards)?),
     };
+    if which == 1 {
+        super::warn_surplus(&cards, "the card with N, Thick", &mut deck.warnings);
+    }
     deck.properties.push(PropertyCard {
         id,
         unit_id,

@@ -27,6 +27,9 @@ pub struct NodeGroupCard {
     pub kind: NodeGroupKind,
     /// The listed ids; negative = remove that item from the group.
     pub items: Vec<i64>,
+    /// Where each list line starts (see [`item_loc`]).
+    #[serde(default)]
+    pub item_locs: ItemLocs,
     pub loc: Loc,
 }
 
@@ -36,6 +39,8 @@ pub struct ShellGroupCard {
     pub id: Id,
     pub title: String,
     pub items: Vec<i64>,
+    #[serde(default)]
+    pub item_locs: ItemLocs,
     pub loc: Loc,
 }
 
@@ -61,7 +66,21 @@ pub struct SurfaceCard {
     pub id: Id,
     pub title: String,
     pub def: SurfaceDef,
+    /// Where each line of a /SURF/PART or /SURF/GRSHEL id list starts.
+    #[serde(default)]
+    pub item_locs: ItemLocs,
     pub loc: Loc,
+}
+
+/// For an id list: (index of the first item of a line, that line), in order.
+pub type ItemLocs = Vec<(usize, Loc)>;
+
+/// The line that holds item `i` of a list (`fallback` when unknown).
+pub fn item_loc<'a>(locs: &'a [(usize, Loc)], i: usize, fallback: &'a Loc) -> &'a Loc {
+    match locs.partition_point(|(start, _)| *start <= i) {
+        0 => fallback,
+        k => &locs[k - 1].1,
+    }
 }
 
 /// /SUBSET: a title and a list of child subset ids (parts join a subset
@@ -88,12 +107,13 @@ pub(super) fn parse_set(block: &Block, deck: &mut Deck) -> DeckResult<bool> {
             let id = header_id(block, 2, "grnd_ID")?;
             let mut cards = Cards::new(block);
             let title = cards.title();
-            let items = id_list(&mut cards, "item_ID")?;
+            let (items, item_locs) = id_list(&mut cards, "item_ID")?;
             deck.node_groups.push(NodeGroupCard {
                 id,
                 title,
                 kind,
                 items,
+                item_locs,
                 loc: block.loc.clone(),
             });
         }
@@ -101,11 +121,12 @@ pub(super) fn parse_set(block: &Block, deck: &mut Deck) -> DeckResult<bool> {
             let id = header_id(block, 2, "grshel_ID")?;
             let mut cards = Cards::new(block);
             let title = cards.title();
-            let items = id_list(&mut cards, "shell_ID")?;
+            let (items, item_locs) = id_list(&mut cards, "shell_ID")?;
             deck.shell_groups.push(ShellGroupCard {
                 id,
                 title,
                 items,
+                item_locs,
                 loc: block.loc.clone(),
             });
         }
@@ -113,9 +134,18 @@ pub(super) fn parse_set(block: &Block, deck: &mut Deck) -> DeckResult<bool> {
             let id = header_id(block, 2, "surf_ID")?;
             let mut cards = Cards::new(block);
             let title = cards.title();
+            let mut item_locs = Vec::new();
             let def = match p1 {
-                "PART" => SurfaceDef::Parts(id_list(&mut cards, "part_ID")?),
-                "GRSHEL" => SurfaceDef::ShellGroups(id_list(&mut cards, "grshel_ID")?),
+                "PART" => {
+                    let (items, locs) = id_list(&mut cards, "part_ID")?;
+                    item_locs = locs;
+                    SurfaceDef::Parts(items)
+                }
+                "GRSHEL" => {
+                    let (items, locs) = id_list(&mut cards, "grshel_ID")?;
+                    item_locs = locs;
+                    SurfaceDef::ShellGroups(items)
+                }
                 _ => {
                     let mut segs = Vec::new();
                     // seg_ID (1-10) node_ID1..4 (11-50)
@@ -139,6 +169,7 @@ pub(super) fn parse_set(block: &Block, deck: &mut Deck) -> DeckResult<bool> {
                 id,
                 title,
                 def,
+                item_locs,
                 loc: block.loc.clone(),
             });
         }
@@ -147,7 +178,7 @@ pub(super) fn parse_set(block: &Block, deck: &mut Deck) -> DeckResult<bool> {
             let mut cards = Cards::new(block);
             let title = cards.title();
             let mut children = Vec::new();
-            for v in id_list(&mut cards, "subset_ID")? {
+            for v in id_list(&mut cards, "subset_ID")?.0 {
                 if v < 0 {
                     return Err(DeckError::new(
                         block.loc.clone(),
@@ -170,10 +201,13 @@ pub(super) fn parse_set(block: &Block, deck: &mut Deck) -> DeckResult<bool> {
     Ok(true)
 }
 
-/// Ten 10-column ids a line until the block ends; blank and 0 fields are skipped.
-fn id_list(cards: &mut Cards, name: &str) -> DeckResult<Vec<i64>> {
+/// Ten 10-column ids a line until the block ends; blank and 0 fields are
+/// skipped. Also gives where each line's items start.
+fn id_list(cards: &mut Cards, name: &str) -> DeckResult<(Vec<i64>, ItemLocs)> {
     let mut out = Vec::new();
+    let mut locs = Vec::new();
     while let Some(c) = cards.next_nonblank() {
+        locs.push((out.len(), c.loc()));
         for k in 0..10 {
             if let Some(v) = c.int_opt(1 + 10 * k, 10, name)? {
                 if v != 0 {
@@ -182,5 +216,5 @@ fn id_list(cards: &mut Cards, name: &str) -> DeckResult<Vec<i64>> {
             }
         }
     }
-    Ok(out)
+    Ok((out, locs))
 }

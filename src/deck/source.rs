@@ -161,7 +161,9 @@ fn read_file(
     stack.push(canon);
     files.push(path.to_path_buf());
     let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
-    for (i, raw) in bytes.split(|&b| b == b'\n').enumerate() {
+    // A final newline ends the last line; it does not start an empty one.
+    let body = bytes.strip_suffix(b"\n").unwrap_or(&bytes);
+    for (i, raw) in body.split(|&b| b == b'\n').enumerate() {
         if end.is_some() {
             break;
         }
@@ -174,7 +176,7 @@ fn read_file(
             continue; // old-style comment line
         }
         if raw.first() == Some(&b'#') {
-            let text = decode_line(raw, &loc, true)?;
+            let text = decode_line(raw, &loc, true).map_err(|e| in_block(e, out))?;
             if let Some(target) = include_target(&text) {
                 let target = target.ok_or_else(|| {
                     DeckError::new(
@@ -190,7 +192,7 @@ fn read_file(
             }
             continue;
         }
-        let text = decode_line(raw, &loc, false)?;
+        let text = decode_line(raw, &loc, false).map_err(|e| in_block(e, out))?;
         let t = text.trim_end();
         if t.eq_ignore_ascii_case("/END") {
             *end = Some(loc);
@@ -203,6 +205,16 @@ fn read_file(
     }
     stack.pop();
     Ok(())
+}
+
+/// Names the keyword block a bad line falls in (the last keyword line read so far).
+fn in_block(mut e: DeckError, out: &[Line]) -> DeckError {
+    if e.keyword.is_empty() {
+        if let Some(h) = out.iter().rev().find(|l| l.text.starts_with('/')) {
+            e.keyword = h.text.trim_end().to_string();
+        }
+    }
+    e
 }
 
 fn io_reason(e: &std::io::Error) -> String {
