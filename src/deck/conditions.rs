@@ -225,8 +225,8 @@ pub(super) fn parse_condition(block: &Block, deck: &mut Deck) -> DeckResult<bool
             let c2 = cards.next_opt();
             let (ascale_x, fscale_y, tstart, tstop) = match c2 {
                 Some(c2) => (
-                    or1(c2.real(1, "Ascale_x", 0.0)?),
-                    or1(c2.real(21, "Fscale_Y", 0.0)?),
+                    super::fields::one_if_zero(c2.real(1, "Ascale_x", 0.0)?),
+                    super::fields::one_if_zero(c2.real(21, "Fscale_Y", 0.0)?),
                     c2.real(41, "Tstart", 0.0)?,
                     c2.real(61, "Tstop", 0.0)?,
                 ),
@@ -297,14 +297,14 @@ pub(super) fn parse_condition(block: &Block, deck: &mut Deck) -> DeckResult<bool
             let c = cards.next(
                 "the card with fct_IDT, Dir, skew_ID, sens_ID, grnod_ID, Ascale_x, Fscale_y",
             )?;
-            let ascale_x = or1(c.real(61, "Ascale_x", 0.0)?);
+            let ascale_x = super::fields::one_if_zero(c.real(61, "Ascale_x", 0.0)?);
             if ascale_x <= 0.0 {
                 return Err(c.err(
                     "Ascale_x",
                     format!("{ascale_x}: the time scale must be > 0"),
                 ));
             }
-            let fscale_y = or1(c.real(81, "Fscale_y", 0.0)?);
+            let fscale_y = super::fields::one_if_zero(c.real(81, "Fscale_y", 0.0)?);
             if grav {
                 deck.gravity.push(GravityCard {
                     id,
@@ -546,12 +546,4 @@ fn read_trarot(c: &Card) -> DeckResult<[bool; 6]> {
         out[i] = ch == '1';
     }
     Ok(out)
-}
-
-fn or1(v: f64) -> f64 {
-    if v == 0.0 {
-        1.0
-    } else {
-        v
-    }
 }

@@ -180,6 +180,21 @@ impl<'a> Card<'a> {
     }
 }
 
+/// The Radioss convention for most fields: a value of 0 (or blank) means
+/// "use the default".
+pub fn zero_default(v: f64, default: f64) -> f64 {
+    if v == 0.0 {
+        default
+    } else {
+        v
+    }
+}
+
+/// Scale factors: 0 (or blank) means 1.
+pub fn one_if_zero(v: f64) -> f64 {
+    zero_default(v, 1.0)
+}
+
 /// Columns `col..col+width` (1-based) of a line; shorter lines give what they have.
 fn field_slice(s: &str, col: usize, width: usize) -> &str {
     let start = col.saturating_sub(1);

@@ -98,8 +98,8 @@ pub(super) fn parse_material(block: &Block, deck: &mut Deck) -> DeckResult<bool>
         let v1 = c3.real(1, if iflag == 0 { "a" } else { "SIG_Y" }, 0.0)?;
         let v2 = c3.real(21, if iflag == 0 { "b" } else { "UTS" }, 0.0)?;
         let v3 = c3.real(41, if iflag == 0 { "n" } else { "EPS_UTS" }, 0.0)?;
-        let eps_p_max = or_big(c3.real(61, "EPS_p_max", 0.0)?);
-        let sig_max0 = or_big(c3.real(81, "SIG_max0", 0.0)?);
+        let eps_p_max = no_limit_if_zero(c3.real(61, "EPS_p_max", 0.0)?);
+        let sig_max0 = no_limit_if_zero(c3.real(81, "SIG_max0", 0.0)?);
         if v1 < 0.0 {
             return Err(c3.err(
                 if iflag == 0 { "a" } else { "SIG_Y" },
@@ -166,7 +166,7 @@ pub(super) fn parse_material(block: &Block, deck: &mut Deck) -> DeckResult<bool>
         // With no rate term the reference strain rate is irrelevant: 1, as Radioss prints.
         let eps_dot_0 = if c == 0.0 { 1.0 } else { eps_dot_0 };
         let fsmooth = c4.flag(51, "Fsmooth", 0, &[0, 1])?;
-        let f_cut = or_big(c4.real(61, "F_cut", 0.0)?);
+        let f_cut = no_limit_if_zero(c4.real(61, "F_cut", 0.0)?);
         let chard = c4.real(81, "Chard", 0.0)?;
         if !(0.0..=1.0).contains(&chard) {
             return Err(c4.err("Chard", format!("{chard}: expected a value in [0, 1]")));
@@ -174,9 +174,9 @@ pub(super) fn parse_material(block: &Block, deck: &mut Deck) -> DeckResult<bool>
         // Card 5: m (1-20), T_melt (21-40), rhoC_p (41-60), T_r (61-80) — optional in old decks
         let (m, t_melt, rho_cp, t_r) = match cards.next_opt() {
             Some(c5) => (
-                or1(c5.real(1, "m", 0.0)?),
-                or_big(c5.real(21, "T_melt", 0.0)?),
-                or_big(c5.real(41, "rhoC_p", 0.0)?),
+                super::fields::one_if_zero(c5.real(1, "m", 0.0)?),
+                no_limit_if_zero(c5.real(21, "T_melt", 0.0)?),
+                no_limit_if_zero(c5.real(41, "rhoC_p", 0.0)?),
                 c5.real(61, "T_r", 0.0)?,
             ),
             None => (1.0, NO_LIMIT, NO_LIMIT, 0.0),
@@ -219,18 +219,6 @@ pub(super) fn parse_material(block: &Block, deck: &mut Deck) -> DeckResult<bool>
 /// What Radioss puts for "no limit" when a limit field is 0 (the starter listing prints 1E+20).
 pub const NO_LIMIT: f64 = 1e20;
 
-fn or_big(v: f64) -> f64 {
-    if v == 0.0 {
-        NO_LIMIT
-    } else {
-        v
-    }
-}
-
-fn or1(v: f64) -> f64 {
-    if v == 0.0 {
-        1.0
-    } else {
-        v
-    }
+fn no_limit_if_zero(v: f64) -> f64 {
+    super::fields::zero_default(v, NO_LIMIT)
 }

@@ -4,7 +4,7 @@
 //! defaults that depend on other cards (/DEF_SHELL, the material law).
 
 use super::error::{DeckError, DeckResult, Loc};
-use super::fields::Cards;
+use super::fields::{zero_default, Cards};
 use super::source::Block;
 use super::{header_id, header_id_opt, Deck, Id};
 use serde::{Deserialize, Serialize};
@@ -242,7 +242,7 @@ fn read_solid(cards: &mut Cards) -> DeckResult<SolidProperty> {
     let c2 = cards.next("the card with qa, qb, h, LAMBDA_v, MU_v")?;
     // dtmin (1-20) Istrain (21-30) Ihkt (31-40) — optional
     let c3 = cards.next_opt();
-    let or = |v: f64, d: f64| if v == 0.0 { d } else { v };
+    let or = zero_default;
     let p = SolidProperty {
         isolid: c1.int(1, "Isolid", 0)?,
         ismstr: c1.int(11, "Ismstr", 0)?,
@@ -317,27 +317,19 @@ fn read_spring(cards: &mut Cards) -> DeckResult<SpringProperty> {
         ileng: c1.int(71, "Ileng", 0)?,
         k,
         c: c2.real(21, "C", 0.0)?,
-        a: or1(c2.real(41, "A", 0.0)?),
+        a: super::fields::one_if_zero(c2.real(41, "A", 0.0)?),
         b: c2.real(61, "B", 0.0)?,
-        d: or1(c2.real(81, "D", 0.0)?),
+        d: super::fields::one_if_zero(c2.real(81, "D", 0.0)?),
         fct_id1,
         h,
         fct_id2,
         fct_id3,
         delta_min,
         delta_max,
-        fscale: or1(fscale),
+        fscale: super::fields::one_if_zero(fscale),
         e,
-        ascale: or1(ascale),
+        ascale: super::fields::one_if_zero(ascale),
     })
-}
-
-fn or1(v: f64) -> f64 {
-    if v == 0.0 {
-        1.0
-    } else {
-        v
-    }
 }
 
 fn read_spring_beam(cards: &mut Cards) -> DeckResult<SpringBeamProperty> {

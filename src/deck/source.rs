@@ -137,6 +137,19 @@ fn read_file(
             format!("'{}' is a directory, expected a deck file", path.display()),
         ));
     }
+    if !meta.is_file() {
+        // A device, FIFO or socket (`#include /dev/zero`, `/dev/stdin`): reading
+        // it would never end or block; its size says nothing.
+        return Err(DeckError::new(
+            err_loc,
+            kw,
+            "",
+            format!(
+                "'{}' is not a regular file (device, pipe or socket), expected a deck file",
+                path.display()
+            ),
+        ));
+    }
     if meta.len() > MAX_FILE_BYTES {
         return Err(DeckError::new(
             err_loc,
@@ -328,4 +341,23 @@ fn split_blocks(lines: Vec<Line>) -> DeckResult<Vec<Block>> {
         }
     }
     Ok(blocks)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `#include /dev/zero` used to be read to the end (never, until out of
+    /// memory): its metadata length is 0 and it is not a directory.
+    #[cfg(unix)]
+    #[test]
+    fn include_of_a_device_is_an_error() {
+        let dir = std::env::temp_dir().join(format!("crashsim-src-dev-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let deck = dir.join("dev_0000.rad");
+        std::fs::write(&deck, "/BEGIN\n#include /dev/zero\n/END\n").unwrap();
+        let e = read(&deck).unwrap_err();
+        assert!(e.message.contains("not a regular file"), "{}", e.message);
+        let _ = std::fs::remove_dir_all(&dir);
+    }
 }
