@@ -269,7 +269,7 @@ pub fn build(deck: &Deck) -> Result<Model, DeckError> {
         let point = node.map(|n| nodes.x[n as usize]).unwrap_or(c.m);
         let d = [c.m1[0] - point[0], c.m1[1] - point[1], c.m1[2] - point[2]];
         let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
-        if !(len > 0.0) {
+        if len.is_nan() || len <= 0.0 {
             return Err(DeckError::new(
                 c.loc.clone(),
                 &kw,

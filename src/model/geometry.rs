@@ -75,47 +75,6 @@ pub fn hexa_volume(x: [V3; 8]) -> f64 {
     v
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn unit_cube() -> [V3; 8] {
-        [
-            [0., 0., 0.],
-            [1., 0., 0.],
-            [1., 1., 0.],
-            [0., 1., 0.],
-            [0., 0., 1.],
-            [1., 0., 1.],
-            [1., 1., 1.],
-            [0., 1., 1.],
-        ]
-    }
-
-    #[test]
-    fn cube_and_tetra_volumes() {
-        let mut c = unit_cube();
-        assert!((hexa_volume(c) - 1.0).abs() < 1e-14);
-        for p in c.iter_mut() {
-            p[0] *= 2.0;
-            p[2] += 0.3 * p[1]; // shear keeps the volume
-        }
-        assert!((hexa_volume(c) - 2.0).abs() < 1e-14);
-        let t = [[0., 0., 0.], [1., 0., 0.], [0., 1., 0.], [0., 0., 1.]];
-        assert!((tetra_volume(t) - 1.0 / 6.0).abs() < 1e-15);
-        // A tetra written as a degenerate brick: 1 2 3 3 4 4 4 4.
-        let d = [t[0], t[1], t[2], t[2], t[3], t[3], t[3], t[3]];
-        assert!((hexa_volume(d) - 1.0 / 6.0).abs() < 1e-15);
-    }
-
-    #[test]
-    fn areas() {
-        let q = [[0., 0., 0.], [5., 0., 0.], [5., 5., 0.], [0., 5., 0.]];
-        assert_eq!(quad_area(q), 25.0);
-        assert_eq!(triangle_area([q[0], q[1], q[2]]), 12.5);
-    }
-}
-
 /// Shortest element edge in the model (shells, solids, 1-D elements).
 pub fn geometry_edge_min(model: &super::Model) -> f64 {
     use crate::deck::ElementKind;
@@ -163,5 +122,46 @@ pub fn geometry_edge_min(model: &super::Model) -> f64 {
         best
     } else {
         0.0
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn unit_cube() -> [V3; 8] {
+        [
+            [0., 0., 0.],
+            [1., 0., 0.],
+            [1., 1., 0.],
+            [0., 1., 0.],
+            [0., 0., 1.],
+            [1., 0., 1.],
+            [1., 1., 1.],
+            [0., 1., 1.],
+        ]
+    }
+
+    #[test]
+    fn cube_and_tetra_volumes() {
+        let mut c = unit_cube();
+        assert!((hexa_volume(c) - 1.0).abs() < 1e-14);
+        for p in c.iter_mut() {
+            p[0] *= 2.0;
+            p[2] += 0.3 * p[1]; // shear keeps the volume
+        }
+        assert!((hexa_volume(c) - 2.0).abs() < 1e-14);
+        let t = [[0., 0., 0.], [1., 0., 0.], [0., 1., 0.], [0., 0., 1.]];
+        assert!((tetra_volume(t) - 1.0 / 6.0).abs() < 1e-15);
+        // A tetra written as a degenerate brick: 1 2 3 3 4 4 4 4.
+        let d = [t[0], t[1], t[2], t[2], t[3], t[3], t[3], t[3]];
+        assert!((hexa_volume(d) - 1.0 / 6.0).abs() < 1e-15);
+    }
+
+    #[test]
+    fn areas() {
+        let q = [[0., 0., 0.], [5., 0., 0.], [5., 5., 0.], [0., 5., 0.]];
+        assert_eq!(quad_area(q), 25.0);
+        assert_eq!(triangle_area([q[0], q[1], q[2]]), 12.5);
     }
 }

@@ -87,7 +87,7 @@ pub(super) fn element_masses(
             ),
             ElementKind::Spring | ElementKind::Truss | ElementKind::Beam => (1.0, ""),
         };
-        if !(measure > 0.0) && !what.is_empty() {
+        if (measure.is_nan() || measure <= 0.0) && !what.is_empty() {
             return Err(DeckError::new(
                 locs[e].clone(),
                 set.kind.keyword(),
