@@ -8,6 +8,11 @@ use crate::deck::{
 };
 use std::collections::{BTreeSet, HashMap};
 
+/// Deepest /GRNOD/GRNOD nesting accepted. Resolution recurses once per level,
+/// so an unbounded chain (one group naming the next, thousands deep) would
+/// overflow the stack; real decks nest a few levels.
+pub const MAX_GROUP_NESTING: usize = 256;
+
 pub struct SetContext<'a> {
     pub nodes: &'a IdIndex,
     pub parts: &'a IdIndex,
@@ -63,6 +68,17 @@ fn resolve_group(
             format!(
                 "node groups refer to each other in a cycle: {}",
                 chain.join(" -> ")
+            ),
+        ));
+    }
+    if stack.len() >= MAX_GROUP_NESTING {
+        return Err(DeckError::new(
+            card.loc.clone(),
+            &kw,
+            "grnd_ID",
+            format!(
+                "node groups nest deeper than {MAX_GROUP_NESTING} levels (/GRNOD/GRNOD {} -> ... -> {}); expected a shallower nesting",
+                cards[stack[0]].id, card.id
             ),
         ));
     }
@@ -276,4 +292,40 @@ pub fn surfaces(
         });
     }
     Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::deck::{read_deck, EngineFile, ReadOptions};
+
+    /// A chain of /GRNOD/GRNOD groups, each naming the next, `n` deep.
+    fn chain_deck(n: usize) -> String {
+        let mut s = String::from("/BEGIN\nchain\n      2022         0\n/NODE\n");
+        s += "         1                   0                   0                   0\n";
+        for i in 1..n {
+            s += &format!("/GRNOD/GRNOD/{i}\ng{i}\n{:>10}\n", i + 1);
+        }
+        s += &format!("/GRNOD/NODE/{n}\nlast\n         1\n/END\n");
+        s
+    }
+
+    fn build_text(name: &str, text: &str) -> Result<crate::model::Model, crate::deck::DeckError> {
+        let dir = std::env::temp_dir().join(format!("crashsim-sets-{name}-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("chain_0000.rad");
+        std::fs::write(&path, text).unwrap();
+        let deck = read_deck(&path, EngineFile::None, ReadOptions::default());
+        let _ = std::fs::remove_dir_all(&dir);
+        crate::model::build(&deck?)
+    }
+
+    /// Found reviewing the reader for fuzzing: a long /GRNOD/GRNOD chain overflowed the stack
+    /// (one recursion per level); it is now an error past MAX_GROUP_NESTING.
+    #[test]
+    fn deep_group_nesting_is_an_error_not_a_stack_overflow() {
+        let e = build_text("deep", &chain_deck(20_000)).unwrap_err();
+        assert!(e.message.contains("nest deeper than"), "{}", e.message);
+        let m = build_text("shallow", &chain_deck(super::MAX_GROUP_NESTING)).unwrap();
+        assert!(m.node_groups.iter().all(|g| g.nodes == [0]));
+    }
 }
