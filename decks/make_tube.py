@@ -4,9 +4,10 @@ demo and benchmark deck): a thin-walled steel tube (Johnson-Cook, Ishell=1,
 3 integration points) flying at 10 m/s into a rigid wall, with TYPE7
 self-contact and 50 kg added at its back end. Units: kg, mm, ms (stress in GPa).
 
-    python3 decks/make_tube.py OUT_DIR NAME [NW NL]
+    python3 decks/make_tube.py OUT_DIR NAME [NW NL [TEND [nocontact]]]
 
-NW shells across each side, NL along the length (default 5 x 20 = 400 shells).
+NW shells across each side, NL along the length (default 5 x 20 = 400 shells),
+TEND the end time in ms (default 10); "nocontact" leaves the TYPE7 out.
 """
 import os
 import sys
@@ -14,6 +15,8 @@ import sys
 out, name = sys.argv[1], sys.argv[2]
 nw = int(sys.argv[3]) if len(sys.argv) > 3 else 5
 nl = int(sys.argv[4]) if len(sys.argv) > 4 else 20
+tend = float(sys.argv[5]) if len(sys.argv) > 5 else 10.0
+contact = not (len(sys.argv) > 6 and sys.argv[6] == "nocontact")
 width, length = 50.0, 200.0
 i10 = lambda v: f"{v:>10d}"
 r20 = lambda v: f"{v:>20.10g}"
@@ -80,7 +83,7 @@ L += ["/RWALL/PLANE/1", "Rigid wall at x = -1", "#  node_ID     Slide grnod_ID1 
       "#               X_M1                Y_M1                Z_M1", r20(0.0) + r20(0) + r20(0)]
 L += ["/GRNOD/PART/4", "wall candidates: every tube node", i10(1)]
 L += ["/SURF/PART/5", "tube wall", i10(1)]
-L += ["/INTER/TYPE7/1", "Tube self-contact",
+L_contact = ["/INTER/TYPE7/1", "Tube self-contact",
       "#  Slav_id   Mast_id      Istf      Ithe      Igap                Ibag      Idel     Icurv      Iadm",
       i10(0) + i10(5) + i10(4) + i10(0) + i10(1) + " " * 10 + i10(0) + i10(0) + i10(0) + i10(0),
       "#          Fscalegap             Gap_max             Fpenmax", r20(0) * 3,
@@ -88,6 +91,8 @@ L += ["/INTER/TYPE7/1", "Tube self-contact",
       "#              Stfac                Fric              Gapmin              Tstart               Tstop", r20(1.0) + r20(0.2) + r20(0.6) + r20(0) + r20(0),
       "#      IBC                        Inacti                VisS                VisF              Bumult", "       000" + " " * 20 + i10(0) + r20(0) + r20(0) + r20(0),
       "#    Ifric    Ifiltr               Xfreq     Iform   sens_ID   fct_IDf             AscaleF   fric_ID", i10(0) + i10(0) + r20(0) + i10(0) + i10(0) + i10(0) + r20(0) + i10(0)]
+if contact:
+    L += L_contact
 L += ["/TH/NODE/1", "back end node", "DEF", i10(back[0]) + i10(0)]
 L += ["/END"]
 # The wall normal must point from M to M1 towards the tube: M = (-1,0,0), M1 = (0,0,0).
@@ -95,5 +100,5 @@ os.makedirs(out, exist_ok=True)
 with open(os.path.join(out, f"{name}_0000.rad"), "w") as f:
     f.write("\n".join(L) + "\n")
 with open(os.path.join(out, f"{name}_0001.rad"), "w") as f:
-    f.write("\n".join(["#RADIOSS ENGINE", f"/RUN/{name}/1", "                  10", "/DT", "0.9 0.0",
+    f.write("\n".join(["#RADIOSS ENGINE", f"/RUN/{name}/1", f"{tend:>20.6g}", "/DT", "0.9 0.0",
                        "/PRINT/-100/55", "/ANIM/DT", "0.0 1.0", "/TFILE/4", "0.05", "/PARITH/ON"]) + "\n")

@@ -2,10 +2,15 @@
 //!
 //! Data flow (see ARCHITECTURE.md): `deck` (text → cards) → `model` (validated,
 //! resolved, masses) → `partition` (METIS) → `domain` (one rank's share) →
-//! solver (to come). MPI lives only in `parallel`.
+//! `solver` (explicit cycle over `element`, `material`, `kinematics`).
+//! MPI lives only in `parallel`.
 
 pub mod deck;
 pub mod domain;
+pub mod element;
+pub mod kinematics;
+pub mod material;
 pub mod model;
 pub mod parallel;
+pub mod solver;
 pub mod summary;

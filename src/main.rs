@@ -55,6 +55,17 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Run a deck (alone or under mpirun): prints the cycle table and writes DIR/NAME.out
+    Run {
+        #[command(flatten)]
+        deck: DeckArgs,
+        /// Output directory (default: the current one)
+        #[arg(long, default_value = ".")]
+        out: PathBuf,
+        /// Write the final nodal state (global id order, 17 significant digits) to this CSV file
+        #[arg(long)]
+        final_state: Option<PathBuf>,
+    },
     /// Under mpirun: rank 0 reads and partitions the deck, scatters one
     /// subdomain per rank; every rank reports what it holds and checks its
     /// shared nodes against its neighbours'
@@ -146,6 +157,31 @@ fn main() -> ExitCode {
             ExitCode::SUCCESS
         }
         Command::Distribute { deck, json } => distribute(&deck, json),
+        Command::Run {
+            deck,
+            out,
+            final_state,
+        } => {
+            let Some(world) = World::init() else {
+                return input_error("MPI could not be initialised");
+            };
+            let opts = crashsim::solver::RunOptions {
+                deck: deck.deck,
+                engine: deck.engine,
+                out_dir: out,
+                final_state,
+                strict: deck.strict,
+            };
+            match crashsim::solver::run(&world, &opts) {
+                Ok(()) => ExitCode::SUCCESS,
+                Err(e) => {
+                    if world.rank() == 0 {
+                        eprintln!("crashsim: {}", e.message());
+                    }
+                    ExitCode::from(e.exit_code())
+                }
+            }
+        }
     }
 }
 

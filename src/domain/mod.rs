@@ -37,12 +37,23 @@ pub struct Subdomain {
     pub node_global: Vec<u32>,
     pub x: Vec<[f64; 3]>,
     pub mass: Vec<f64>,
+    /// Rotational inertia of shell nodes (0 for others).
+    pub inertia: Vec<f64>,
     pub elements: Vec<LocalElements>,
     /// Neighbour ranks in ascending order with the nodes shared with each.
     pub shared: Vec<SharedNodes>,
 }
 
 impl Subdomain {
+    /// Whether this rank owns local node `l` (the lowest rank holding it does):
+    /// sums over nodes count each node once, on its owner.
+    pub fn owns(&self, l: u32) -> bool {
+        !self
+            .shared
+            .iter()
+            .any(|s| s.rank < self.rank && s.nodes.binary_search(&l).is_ok())
+    }
+
     pub fn n_elements(&self) -> usize {
         self.elements.iter().map(|e| e.global.len()).sum()
     }
@@ -161,7 +172,11 @@ pub fn split(model: &Model, owner: &[u32], nranks: usize) -> Vec<Subdomain> {
         }
         offset += set.len();
     }
+    // Nodes no element touches (a rigid body's main node, a free mass) live on rank 0.
     for r in &mut node_ranks {
+        if r.is_empty() {
+            r.push(0);
+        }
         r.sort_unstable();
     }
     (0..nranks as u32)
@@ -230,6 +245,10 @@ pub fn split(model: &Model, owner: &[u32], nranks: usize) -> Vec<Subdomain> {
                 mass: node_global
                     .iter()
                     .map(|&g| model.nodal_mass[g as usize])
+                    .collect(),
+                inertia: node_global
+                    .iter()
+                    .map(|&g| model.nodal_inertia[g as usize])
                     .collect(),
                 node_global,
                 elements,

@@ -122,4 +122,82 @@ impl World {
     pub fn barrier(&self) {
         self.comm.barrier();
     }
+
+    /// Every rank's bytes, in rank order, on every rank.
+    pub fn allgather_bytes(&self, mine: &[u8]) -> Vec<Vec<u8>> {
+        use mpi::datatype::PartitionMut;
+        let n = self.size() as usize;
+        let len = mine.len() as i32;
+        let mut lens = vec![0i32; n];
+        self.comm.all_gather_into(&len, &mut lens[..]);
+        let displs: Vec<i32> = lens
+            .iter()
+            .scan(0, |acc, &l| {
+                let d = *acc;
+                *acc += l;
+                Some(d)
+            })
+            .collect();
+        let total: i32 = lens.iter().sum();
+        let mut buf = vec![0u8; total as usize];
+        {
+            let mut part = PartitionMut::new(&mut buf[..], &lens[..], &displs[..]);
+            self.comm.all_gather_varcount_into(mine, &mut part);
+        }
+        (0..n)
+            .map(|r| buf[displs[r] as usize..(displs[r] + lens[r]) as usize].to_vec())
+            .collect()
+    }
+
+    /// Every rank's values, in rank order, on every rank (a typed allgather).
+    pub fn allgather<T: serde::Serialize + serde::de::DeserializeOwned>(&self, mine: &T) -> Vec<T> {
+        let bytes = bincode::serialize(mine).expect("serializable");
+        self.allgather_bytes(&bytes)
+            .iter()
+            .map(|b| bincode::deserialize(b).expect("same type on every rank"))
+            .collect()
+    }
+
+    /// Sum over ranks of each entry (diagnostics: not bitwise independent of the rank count).
+    pub fn sum_f64(&self, v: &mut [f64]) {
+        use mpi::collective::SystemOperation;
+        let send = v.to_vec();
+        self.comm
+            .all_reduce_into(&send[..], v, SystemOperation::sum());
+    }
+
+    /// Logical OR over ranks.
+    pub fn any(&self, flag: bool) -> bool {
+        use mpi::collective::SystemOperation;
+        let mut out = 0i32;
+        self.comm
+            .all_reduce_into(&(flag as i32), &mut out, SystemOperation::max());
+        out != 0
+    }
+
+    /// Sends `send[i]` (f64 values) to neighbour `ranks[i]` and receives its values into `recv[i]`,
+    /// whose lengths are known in advance. Non-blocking, so any neighbour order is safe.
+    pub fn exchange_f64(&self, ranks: &[u32], send: &[Vec<f64>], recv: &mut [Vec<f64>]) {
+        const TAG: i32 = 21;
+        mpi::request::scope(|scope| {
+            let mut reqs = Vec::with_capacity(ranks.len() * 2);
+            for (i, &nb) in ranks.iter().enumerate() {
+                reqs.push(
+                    self.comm
+                        .process_at_rank(nb as i32)
+                        .immediate_send_with_tag(scope, &send[i][..], TAG),
+                );
+            }
+            for (i, r) in recv.iter_mut().enumerate() {
+                reqs.push(
+                    self.comm
+                        .process_at_rank(ranks[i] as i32)
+                        .immediate_receive_into_with_tag(scope, &mut r[..], TAG),
+                );
+            }
+            for q in reqs {
+                q.wait();
+            }
+        });
+    }
 }

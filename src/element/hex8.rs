@@ -1,0 +1,1276 @@
+//! 8-node brick, one-point integration (Radioss /BRICK with /PROP/SOLID
+//! Isolid = 1 or 2).
+//!
+//! # Formulation
+//! * **Gradient** (Flanagan & Belytschko 1981, "A uniform strain hexahedron and
+//!   quadrilateral with orthogonal hourglass control", IJNME 17, eq. 79): the
+//!   uniform-gradient vectors b_a = ∂V/∂x_a = ∫ ∂N_a/∂x dV, written in closed
+//!   form with the node permutation table of that paper; V = Σ_a x_a b_a^x.
+//!   The mean velocity gradient is L = (1/V) Σ_a v_a ⊗ b_a. (Radioss evaluates
+//!   ∂N/∂x at the element centre instead; both coincide for parallelepipeds and
+//!   pass the patch test.)
+//! * **Configurations** (as in `shell4`): the rate of deformation D and spin W
+//!   are taken on the mid-step geometry x^{n+½} = x^{n+1} − ½Δt v^{n+½}. For a
+//!   rigid rotation the velocity field is then exactly skew on it (Cayley
+//!   transform), so rigid rotations give no strain at any step size. Internal
+//!   forces use b and V of x^{n+1}.
+//! * **Stress rotation**: Jaumann rate, integrated with the Hughes-Winget
+//!   (1980) incrementally objective rule σ ← Q σ Qᵀ, Q = (I − ½ΔtW)⁻¹(I + ½ΔtW).
+//!   With the mid-step W this rotates the stress exactly by R for a rigid
+//!   rotation R (Radioss applies the first-order Jaumann update σ += (Wσ − σW)Δt).
+//! * **Strain measure** (Ismstr, reference guide /PROP/SOLID): 4 = full
+//!   geometric non-linearity, the rate form above (default); 2 = the same
+//!   (Radioss switches such an element to small strain only under /DT/BRICK/CST,
+//!   which this engine does not have); −1 (automatic) → 4. Ismstr = 1, 3, 10,
+//!   11, 12 (small-strain and total-strain variants) are refused by name.
+//! * **Material**: `Material::solid_update_at` with Δε = D Δt (engineering
+//!   shears), the filtered equivalent rate √(⅔ D′:D′) for Johnson-Cook, and the
+//!   adiabatic temperature from the element's internal energy per volume.
+//!   One point: when it fails (ε_p ≥ EPS_p_max) the element is deleted.
+//! * **Internal forces** f_a = (σ − q I) b_a (internal: the solver does
+//!   M a = f_ext − f_int).
+//! * **Bulk viscosity** (reference engine MQVISCB; theory manual "Stability"):
+//!   q = ρ l (qa² l ḋ + qb c) ḋ with ḋ = max(0, −tr D), l = V^{1/3}, ρ the
+//!   current density ρ_I V₀/V; q is added to the pressure (σ − q I).
+//! * **Hourglass** (reference engine SHVIS3, theory manual "Hourglass Modes"):
+//!   base vectors h₁ = ξη, h₂ = ηζ, h₃ = ζξ, h₄ = ξηζ (entries ±1, Radioss node
+//!   order: 1-4 bottom face, 5-8 top). Isolid 1 (Belytschko, "orthogonal and
+//!   rigid deformation modes compensation") uses the Flanagan-Belytschko vectors
+//!   γ_α = h_α − (1/V)(h_α·x_i) b_i, orthogonal to every linear velocity field;
+//!   Isolid 2 (Hallquist, "without orthogonality") uses h_α itself. Mode rates
+//!   q_α = Σ_a Γ_αa v_a (3 components), generalized forces
+//!   Q_α = q_α (C_l + |q_α| C_q), C_l = (h/4) ρ c V^{2/3}, C_q = (h/4)² 100 ρ V^{2/3},
+//!   corner forces f_a += Σ_α Γ_αa Q_α, dissipated power Σ_α Q_α·q_α.
+//!   (Isolid 2 does not conserve angular momentum on distorted bricks, as in Radioss.)
+//! * **Time step** (theory manual "Stability", reference engine SDLEN3/SLEN and
+//!   MQVISCB): l_c = V / A_max, A_face = ½|d₁₃ × d₂₄| (largest of the six faces;
+//!   for a parallelepiped the smallest distance between opposite faces);
+//!   Δt = l_c / (Q + √(Q² + c²)), Q = qb c + l_c qa² ḋ, c = √((λ + 2μ)/ρ₀)
+//!   ("c = √(K/ρ + 4μ/3ρ) = √((λ+2μ)/ρ) for a solid elastic material"), ρ₀ = RHO_0.
+//!   Unscaled (the solver applies the /DT scale factor). With qa = qb = 0 a unit
+//!   cube gives exactly 1/c; with the default qb = 0.05 it gives 1/(1.0513 c).
+//!
+//! No heap allocation: everything is fixed-size on the stack.
+
+use crate::material::Material;
+use crate::model::ResolvedSolid;
+use serde::{Deserialize, Serialize};
+
+/// Resolved section data for one solid part (from [`ResolvedSolid`] + the part's [`Material`]).
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct SolidSection {
+    /// 1 (Flanagan-Belytschko orthogonal hourglass) or 2 (Hallquist); 0 for tetrahedra.
+    pub isolid: i64,
+    /// Strain formulation actually used (4: rate form).
+    pub ismstr: i64,
+    /// Quadratic and linear bulk viscosity.
+    pub qa: f64,
+    pub qb: f64,
+    /// Hourglass viscosity coefficient.
+    pub h: f64,
+    pub material: Material,
+    /// Dilatational wave speed √((λ+2μ)/ρ₀).
+    pub c: f64,
+}
+
+fn check_ismstr(r: &ResolvedSolid) -> Result<i64, String> {
+    match r.ismstr {
+        2 | 4 => Ok(r.ismstr),
+        -1 => Ok(4),
+        v => Err(format!(
+            "Ismstr = {v} is not supported: the engine computes solids with Ismstr = 2 or 4 (full geometric non-linearity, rate form)"
+        )),
+    }
+}
+
+fn dilatational_speed(m: &Material) -> f64 {
+    let (e, nu) = (m.young(), m.poisson());
+    let lam_2mu = e * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu));
+    (lam_2mu / m.rho_ref()).sqrt()
+}
+
+impl SolidSection {
+    /// Section of an 8-node brick part: Isolid 1 or 2, Iframe 1, Ismstr 2/4.
+    pub fn new(r: &ResolvedSolid, m: &Material) -> Result<SolidSection, String> {
+        match r.isolid {
+            1 | 2 => {}
+            v => {
+                return Err(format!(
+                    "Isolid = {v} is not supported: the engine computes bricks with Isolid = 1 (Belytschko viscous hourglass) or 2 (Hallquist viscous hourglass)"
+                ))
+            }
+        }
+        if r.iframe != 1 {
+            return Err(format!(
+                "Iframe = {}: only Iframe = 1 (non-corotational) is supported for Isolid = 1, 2",
+                r.iframe
+            ));
+        }
+        let ismstr = check_ismstr(r)?;
+        m.check_supported()?;
+        Ok(SolidSection {
+            isolid: r.isolid,
+            ismstr,
+            qa: r.qa,
+            qb: r.qb,
+            h: r.h,
+            material: m.clone(),
+            c: dilatational_speed(m),
+        })
+    }
+
+    /// Section of a 4-node tetrahedron part (the same /PROP/SOLID; Isolid and h
+    /// do not apply). Itetra4 0 or 1000 (standard formulation) only.
+    pub fn for_tetra(r: &ResolvedSolid, m: &Material) -> Result<SolidSection, String> {
+        if r.itetra4 != 0 && r.itetra4 != 1000 {
+            return Err(format!(
+                "Itetra4 = {}: only the standard 4-node tetrahedron (Itetra4 = 0 or 1000) is supported",
+                r.itetra4
+            ));
+        }
+        let ismstr = check_ismstr(r)?;
+        m.check_supported()?;
+        Ok(SolidSection {
+            isolid: 0,
+            ismstr,
+            qa: r.qa,
+            qb: r.qb,
+            h: 0.0,
+            material: m.clone(),
+            c: dilatational_speed(m),
+        })
+    }
+}
+
+/// Per-element state kept by the solver (small, `Copy`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct Hex8State {
+    /// Cauchy stress [σxx σyy σzz σxy σyz σzx] (global frame), without bulk viscosity.
+    pub sig: [f64; 6],
+    /// Equivalent plastic strain.
+    pub eps_p: f64,
+    /// Last hourglass generalized forces Q_α (4 modes × 3 components), for output.
+    pub hg: [[f64; 3]; 4],
+    /// Cumulative internal energy (stress and bulk viscosity work, without hourglass).
+    pub eint: f64,
+    /// Cumulative hourglass energy.
+    pub ehg: f64,
+    /// Cumulative plastic work.
+    pub eplas: f64,
+    /// Initial volume.
+    pub vol0: f64,
+    /// Volume at the last step.
+    pub vol: f64,
+    /// Filtered equivalent strain rate (Johnson-Cook rate term).
+    pub eps_dot: f64,
+    /// The integration point failed: the element is deleted.
+    pub deleted: bool,
+}
+
+/// What one element step returns.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Hex8Out {
+    /// Internal corner forces; the solver subtracts them (M a = f_ext − f).
+    pub f: [[f64; 3]; 8],
+    /// Critical (unscaled) time step; ∞ for a deleted or inverted element.
+    pub dt: f64,
+    /// Internal energy increment (stress + bulk viscosity work, excluding hourglass).
+    pub d_eint: f64,
+    /// Hourglass energy increment.
+    pub d_ehg: f64,
+    /// Plastic work increment (included in `d_eint`).
+    pub d_eplas: f64,
+    /// The element is deleted (its point failed).
+    pub failed: bool,
+    /// Zero or negative volume at x^{n+1} or mid-step: the solver stops.
+    pub bad_volume: bool,
+}
+
+// ---- small 3-vector / 3×3 helpers (shared with tet4) ---------------------------
+
+#[inline]
+pub(crate) fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+#[inline]
+pub(crate) fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+#[inline]
+pub(crate) fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+
+/// Permutation table of Flanagan & Belytschko (1981) for the closed-form
+/// uniform gradient: row a lists the nodes playing the roles 1..8 for node a.
+const FB_PERM: [[usize; 8]; 8] = [
+    [0, 1, 2, 3, 4, 5, 6, 7],
+    [1, 2, 3, 0, 5, 6, 7, 4],
+    [2, 3, 0, 1, 6, 7, 4, 5],
+    [3, 0, 1, 2, 7, 4, 5, 6],
+    [4, 7, 6, 5, 0, 3, 2, 1],
+    [5, 4, 7, 6, 1, 0, 3, 2],
+    [6, 5, 4, 7, 2, 1, 0, 3],
+    [7, 6, 5, 4, 3, 2, 1, 0],
+];
+
+/// One Cartesian component of the uniform-gradient vectors (FB 1981 eq. 79):
+/// b^x from (y, z), b^y from (z, x), b^z from (x, y).
+#[inline]
+fn fb_component(y: &[f64; 8], z: &[f64; 8]) -> [f64; 8] {
+    let mut b = [0.0; 8];
+    for (a, p) in FB_PERM.iter().enumerate() {
+        let (y2, y3, y4, y5, y6, y8) = (y[p[1]], y[p[2]], y[p[3]], y[p[4]], y[p[5]], y[p[7]]);
+        let (z2, z3, z4, z5, z6, z8) = (z[p[1]], z[p[2]], z[p[3]], z[p[4]], z[p[5]], z[p[7]]);
+        b[a] = (y2 * ((z6 - z3) - (z4 - z5))
+            + y3 * (z2 - z4)
+            + y4 * ((z3 - z8) - (z5 - z2))
+            + y5 * ((z8 - z6) - (z2 - z4))
+            + y6 * (z5 - z2)
+            + y8 * (z4 - z5))
+            / 12.0;
+    }
+    b
+}
+
+/// Uniform-gradient vectors b_a = ∂V/∂x_a and the volume V of a hexahedron.
+#[inline]
+pub(crate) fn hex_gradient(x: &[[f64; 3]; 8]) -> ([[f64; 3]; 8], f64) {
+    let mut cx = [0.0; 8];
+    let mut cy = [0.0; 8];
+    let mut cz = [0.0; 8];
+    for a in 0..8 {
+        cx[a] = x[a][0];
+        cy[a] = x[a][1];
+        cz[a] = x[a][2];
+    }
+    let bx = fb_component(&cy, &cz);
+    let by = fb_component(&cz, &cx);
+    let bz = fb_component(&cx, &cy);
+    let mut b = [[0.0; 3]; 8];
+    let mut vol = 0.0;
+    for a in 0..8 {
+        b[a] = [bx[a], by[a], bz[a]];
+        vol += cx[a] * bx[a];
+    }
+    (b, vol)
+}
+
+/// Hourglass base vectors h₁ = ξη, h₂ = ηζ, h₃ = ζξ, h₄ = ξηζ (up to sign),
+/// Radioss node order (reference engine SHVIS3).
+pub(crate) const HG_BASE: [[f64; 8]; 4] = [
+    [1.0, -1.0, 1.0, -1.0, 1.0, -1.0, 1.0, -1.0],
+    [1.0, 1.0, -1.0, -1.0, -1.0, -1.0, 1.0, 1.0],
+    [1.0, -1.0, -1.0, 1.0, -1.0, 1.0, 1.0, -1.0],
+    [1.0, -1.0, 1.0, -1.0, -1.0, 1.0, -1.0, 1.0],
+];
+
+/// Largest face area of a hexahedron, ½|d₁₃ × d₂₄| per face (reference engine SLEN).
+#[inline]
+fn hex_max_face_area(x: &[[f64; 3]; 8]) -> f64 {
+    const FACES: [[usize; 4]; 6] = [
+        [0, 1, 2, 3],
+        [4, 5, 6, 7],
+        [0, 1, 5, 4],
+        [1, 2, 6, 5],
+        [2, 3, 7, 6],
+        [3, 0, 4, 7],
+    ];
+    let mut amax: f64 = 0.0;
+    for f in FACES {
+        let n = cross(sub(x[f[2]], x[f[0]]), sub(x[f[3]], x[f[1]]));
+        amax = amax.max(dot(n, n));
+    }
+    0.5 * amax.sqrt()
+}
+
+/// Velocity gradient L_ij = ∂v_i/∂x_j = (1/V) Σ_a v_ai b_aj.
+#[inline]
+pub(crate) fn velocity_gradient<const N: usize>(
+    v: &[[f64; 3]; N],
+    b: &[[f64; 3]; N],
+    vol: f64,
+) -> [[f64; 3]; 3] {
+    let mut l = [[0.0; 3]; 3];
+    for a in 0..N {
+        for i in 0..3 {
+            for j in 0..3 {
+                l[i][j] += v[a][i] * b[a][j];
+            }
+        }
+    }
+    let r = 1.0 / vol;
+    for row in l.iter_mut() {
+        for e in row.iter_mut() {
+            *e *= r;
+        }
+    }
+    l
+}
+
+/// Hughes-Winget rotation of a Voigt stress by the spin increment W Δt:
+/// σ ← Q σ Qᵀ, Q = (I − ½ΔtW)⁻¹(I + ½ΔtW).
+#[inline]
+pub(crate) fn rotate_stress(s: &mut [f64; 6], w: &[[f64; 3]; 3], dt: f64) {
+    // ω with W = [[0, −ω3, ω2], [ω3, 0, −ω1], [−ω2, ω1, 0]] · (scaled by ½Δt).
+    let h = 0.5 * dt;
+    let (o1, o2, o3) = (h * w[2][1], h * w[0][2], h * w[1][0]);
+    if o1 == 0.0 && o2 == 0.0 && o3 == 0.0 {
+        return;
+    }
+    // Q = I + 2/(1+|ω|²) (Ω + Ω²), the Cayley transform of Ω = ½ΔtW.
+    let om = [[0.0, -o3, o2], [o3, 0.0, -o1], [-o2, o1, 0.0]];
+    let k = 2.0 / (1.0 + o1 * o1 + o2 * o2 + o3 * o3);
+    let mut q = [[0.0; 3]; 3];
+    for i in 0..3 {
+        for j in 0..3 {
+            let mut om2 = 0.0;
+            for m in 0..3 {
+                om2 += om[i][m] * om[m][j];
+            }
+            q[i][j] = if i == j { 1.0 } else { 0.0 } + k * (om[i][j] + om2);
+        }
+    }
+    let sm = [[s[0], s[3], s[5]], [s[3], s[1], s[4]], [s[5], s[4], s[2]]];
+    let mut qs = [[0.0; 3]; 3];
+    for i in 0..3 {
+        for j in 0..3 {
+            qs[i][j] = q[i][0] * sm[0][j] + q[i][1] * sm[1][j] + q[i][2] * sm[2][j];
+        }
+    }
+    let r = |i: usize, j: usize| qs[i][0] * q[j][0] + qs[i][1] * q[j][1] + qs[i][2] * q[j][2];
+    *s = [r(0, 0), r(1, 1), r(2, 2), r(0, 1), r(1, 2), r(2, 0)];
+}
+
+/// Result of the shared one-point stress update of a solid.
+pub(crate) struct SolidPoint {
+    /// Stress used for the forces: σ − q I.
+    pub sig_f: [f64; 6],
+    pub d_eint: f64,
+    pub d_eplas: f64,
+    pub failed: bool,
+    /// max(0, −tr D), for the time step.
+    pub compress: f64,
+}
+
+/// Stress update of a one-point solid from the mid-step velocity gradient:
+/// objective rotation, material update, bulk viscosity, energies.
+/// `vol_mid`: mid-step volume (energy), `vol`: volume at x^{n+1} (density, q).
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn solid_point_update(
+    sec: &SolidSection,
+    l: &[[f64; 3]; 3],
+    vol_mid: f64,
+    vol: f64,
+    vol0: f64,
+    dt: f64,
+    sig: &mut [f64; 6],
+    eps_p: &mut f64,
+    eps_dot: &mut f64,
+    eint: f64,
+) -> SolidPoint {
+    let mat = &sec.material;
+    let d = [
+        l[0][0],
+        l[1][1],
+        l[2][2],
+        0.5 * (l[0][1] + l[1][0]),
+        0.5 * (l[1][2] + l[2][1]),
+        0.5 * (l[2][0] + l[0][2]),
+    ];
+    let tr = d[0] + d[1] + d[2];
+    let compress = (-tr).max(0.0);
+    let mut out = SolidPoint {
+        sig_f: [0.0; 6],
+        d_eint: 0.0,
+        d_eplas: 0.0,
+        failed: false,
+        compress,
+    };
+    if dt > 0.0 {
+        let w = [
+            [0.0, 0.5 * (l[0][1] - l[1][0]), 0.5 * (l[0][2] - l[2][0])],
+            [0.5 * (l[1][0] - l[0][1]), 0.0, 0.5 * (l[1][2] - l[2][1])],
+            [0.5 * (l[2][0] - l[0][2]), 0.5 * (l[2][1] - l[1][2]), 0.0],
+        ];
+        rotate_stress(sig, &w, dt);
+        let old = *sig;
+        // Equivalent (von Mises) rate of the deviatoric part: √(⅔ D′:D′).
+        let m = tr / 3.0;
+        let (a, b, c) = (d[0] - m, d[1] - m, d[2] - m);
+        let dd = a * a + b * b + c * c + 2.0 * (d[3] * d[3] + d[4] * d[4] + d[5] * d[5]);
+        let raw = (2.0 / 3.0 * dd).sqrt();
+        *eps_dot = mat.filter_strain_rate(*eps_dot, raw, dt);
+        let temp = mat.temperature(eint / vol_mid);
+        let deps = [
+            d[0] * dt,
+            d[1] * dt,
+            d[2] * dt,
+            2.0 * d[3] * dt,
+            2.0 * d[4] * dt,
+            2.0 * d[5] * dt,
+        ];
+        let wp = mat.solid_update_at(sig, eps_p, deps, *eps_dot, temp);
+        out.failed = mat.has_failed(*eps_p);
+        if out.failed {
+            *sig = [0.0; 6];
+        }
+        let mut p = 0.0;
+        for k in 0..6 {
+            let wk = if k < 3 { 1.0 } else { 2.0 };
+            p += wk * 0.5 * (old[k] + sig[k]) * d[k];
+        }
+        out.d_eint = p * vol_mid * dt;
+        out.d_eplas = wp * vol_mid;
+    }
+    // Bulk viscosity (MQVISCB): q = ρ l ḋ (qa² l ḋ + qb c), l = V^{1/3}.
+    let mut q = 0.0;
+    if compress > 0.0 && !out.failed {
+        let rho = mat.rho() * vol0 / vol;
+        let al = vol.cbrt();
+        q = rho * al * compress * (sec.qa * sec.qa * al * compress + sec.qb * sec.c);
+        out.d_eint += q * compress * vol_mid * dt;
+    }
+    out.sig_f = *sig;
+    for k in 0..3 {
+        out.sig_f[k] -= q;
+    }
+    out
+}
+
+/// Δt = l_c / (Q + √(Q² + c²)), Q = qb c + l_c qa² ḋ (reference engine MQVISCB).
+#[inline]
+pub(crate) fn solid_time_step(sec: &SolidSection, lc: f64, compress: f64) -> f64 {
+    let q = sec.qb * sec.c + lc * sec.qa * sec.qa * compress;
+    lc / (q + (q * q + sec.c * sec.c).sqrt())
+}
+
+/// Internal force of a constant stress on the gradient vector b: σ b.
+#[inline]
+pub(crate) fn stress_force(s: &[f64; 6], b: [f64; 3]) -> [f64; 3] {
+    [
+        s[0] * b[0] + s[3] * b[1] + s[5] * b[2],
+        s[3] * b[0] + s[1] * b[1] + s[4] * b[2],
+        s[5] * b[0] + s[4] * b[1] + s[2] * b[2],
+    ]
+}
+
+/// Element state at t = 0 (stress-free).
+pub fn hex8_init(_sec: &SolidSection, x: &[[f64; 3]; 8]) -> Hex8State {
+    let (_, vol) = hex_gradient(x);
+    Hex8State {
+        vol0: vol,
+        vol,
+        ..Default::default()
+    }
+}
+
+/// One explicit step of one brick: stress from x^{n+1} and v^{n+½}, internal
+/// corner forces at x^{n+1}, energies and the element time step.
+/// With `dt = 0` only the forces of the current stress and the time step are computed.
+pub fn hex8_step(
+    sec: &SolidSection,
+    x: &[[f64; 3]; 8],
+    v: &[[f64; 3]; 8],
+    dt: f64,
+    st: &mut Hex8State,
+) -> Hex8Out {
+    let mut out = Hex8Out {
+        dt: f64::INFINITY,
+        ..Default::default()
+    };
+    if st.deleted {
+        out.failed = true;
+        return out;
+    }
+    let (b, vol) = hex_gradient(x);
+    if !(vol > 0.0) {
+        out.bad_volume = true;
+        return out;
+    }
+    let (bm, volm) = if dt > 0.0 {
+        let mut xm = *x;
+        for a in 0..8 {
+            for k in 0..3 {
+                xm[a][k] -= 0.5 * dt * v[a][k];
+            }
+        }
+        hex_gradient(&xm)
+    } else {
+        (b, vol)
+    };
+    if !(volm > 0.0) {
+        out.bad_volume = true;
+        return out;
+    }
+    let l = velocity_gradient(v, &bm, volm);
+    let p = solid_point_update(
+        sec,
+        &l,
+        volm,
+        vol,
+        st.vol0,
+        dt,
+        &mut st.sig,
+        &mut st.eps_p,
+        &mut st.eps_dot,
+        st.eint,
+    );
+    st.vol = vol;
+    st.eint += p.d_eint;
+    st.eplas += p.d_eplas;
+    out.d_eint = p.d_eint;
+    out.d_eplas = p.d_eplas;
+    if p.failed {
+        st.deleted = true;
+        out.failed = true;
+        return out;
+    }
+    for a in 0..8 {
+        out.f[a] = stress_force(&p.sig_f, b[a]);
+    }
+
+    // ---- hourglass (viscous) --------------------------------------------------
+    if sec.h > 0.0 {
+        let mut gam = HG_BASE;
+        if sec.isolid == 1 {
+            let r = 1.0 / vol;
+            for (g, h) in gam.iter_mut().zip(HG_BASE.iter()) {
+                let mut hx = [0.0; 3];
+                for a in 0..8 {
+                    for k in 0..3 {
+                        hx[k] += h[a] * x[a][k];
+                    }
+                }
+                for a in 0..8 {
+                    g[a] -= r * dot(hx, b[a]);
+                }
+            }
+        }
+        let rho = sec.material.rho() * st.vol0 / vol;
+        let caq = 0.25 * sec.h;
+        let base = caq * rho * vol.powf(2.0 / 3.0);
+        let (cl, cq) = (base * sec.c, base * caq * 100.0);
+        let mut power = 0.0;
+        for (m, g) in gam.iter().enumerate() {
+            let mut qv = [0.0; 3];
+            for a in 0..8 {
+                for k in 0..3 {
+                    qv[k] += g[a] * v[a][k];
+                }
+            }
+            let mut qf = [0.0; 3];
+            for k in 0..3 {
+                qf[k] = qv[k] * (cl + qv[k].abs() * cq);
+                power += qf[k] * qv[k];
+            }
+            st.hg[m] = qf;
+            for a in 0..8 {
+                for k in 0..3 {
+                    out.f[a][k] += g[a] * qf[k];
+                }
+            }
+        }
+        out.d_ehg = power * dt;
+        st.ehg += out.d_ehg;
+    }
+
+    let lc = vol / hex_max_face_area(x);
+    out.dt = solid_time_step(sec, lc, p.compress);
+    out
+}
+
+#[cfg(test)]
+pub(crate) mod tests {
+    use super::*;
+
+    pub(crate) fn mat() -> Material {
+        let (e, nu) = (210.0, 0.3);
+        Material::Elastic {
+            rho: 7.8e-6,
+            rho_ref: 7.8e-6,
+            e,
+            nu,
+            g: e / (2.0 * (1.0 + nu)),
+        }
+    }
+
+    pub(crate) fn resolved(isolid: i64, qa: f64, qb: f64, h: f64) -> ResolvedSolid {
+        ResolvedSolid {
+            isolid,
+            ismstr: 4,
+            iframe: 1,
+            itetra4: 1000,
+            qa,
+            qb,
+            h,
+            dtmin: 0.0,
+        }
+    }
+
+    fn sec(isolid: i64, qa: f64, qb: f64, h: f64) -> SolidSection {
+        SolidSection::new(&resolved(isolid, qa, qb, h), &mat()).unwrap()
+    }
+
+    pub(crate) fn lame(m: &Material) -> (f64, f64) {
+        let (e, nu) = (m.young(), m.poisson());
+        (
+            e * nu / ((1.0 + nu) * (1.0 - 2.0 * nu)),
+            e / (2.0 * (1.0 + nu)),
+        )
+    }
+
+    const NAT: [[f64; 3]; 8] = [
+        [-1.0, -1.0, -1.0],
+        [1.0, -1.0, -1.0],
+        [1.0, 1.0, -1.0],
+        [-1.0, 1.0, -1.0],
+        [-1.0, -1.0, 1.0],
+        [1.0, -1.0, 1.0],
+        [1.0, 1.0, 1.0],
+        [-1.0, 1.0, 1.0],
+    ];
+
+    fn unit_cube() -> [[f64; 3]; 8] {
+        let mut x = [[0.0; 3]; 8];
+        for a in 0..8 {
+            for k in 0..3 {
+                x[a][k] = 0.5 * (NAT[a][k] + 1.0);
+            }
+        }
+        x
+    }
+
+    fn distorted() -> [[f64; 3]; 8] {
+        let d = [
+            [0.05, -0.02, 0.03],
+            [0.10, 0.04, -0.05],
+            [-0.07, 0.12, 0.02],
+            [0.03, -0.06, 0.08],
+            [-0.04, 0.09, -0.03],
+            [0.06, -0.08, 0.11],
+            [0.15, 0.05, -0.09],
+            [-0.02, 0.07, 0.04],
+        ];
+        let mut x = unit_cube();
+        for a in 0..8 {
+            x[a][0] = 1.3 * x[a][0] + d[a][0];
+            x[a][1] = 0.9 * x[a][1] + 0.2 * x[a][2] + d[a][1];
+            x[a][2] = 1.1 * x[a][2] + d[a][2];
+        }
+        x
+    }
+
+    fn maxabs(f: &[[f64; 3]]) -> f64 {
+        f.iter().flatten().fold(0.0f64, |m, v| m.max(v.abs()))
+    }
+
+    fn sum_f(f: &[[f64; 3]]) -> [f64; 3] {
+        let mut s = [0.0; 3];
+        for fa in f {
+            for k in 0..3 {
+                s[k] += fa[k];
+            }
+        }
+        s
+    }
+
+    fn rotation(axis: [f64; 3], th: f64) -> [[f64; 3]; 3] {
+        let n = dot(axis, axis).sqrt();
+        let (x, y, z) = (axis[0] / n, axis[1] / n, axis[2] / n);
+        let (c, s) = (th.cos(), th.sin());
+        let t = 1.0 - c;
+        [
+            [c + x * x * t, x * y * t - z * s, x * z * t + y * s],
+            [y * x * t + z * s, c + y * y * t, y * z * t - x * s],
+            [z * x * t - y * s, z * y * t + x * s, c + z * z * t],
+        ]
+    }
+
+    fn apply(r: &[[f64; 3]; 3], p: [f64; 3]) -> [f64; 3] {
+        [dot(r[0], p), dot(r[1], p), dot(r[2], p)]
+    }
+
+    /// R σ Rᵀ of a Voigt stress.
+    pub(crate) fn rotated(r: &[[f64; 3]; 3], s: &[f64; 6]) -> [f64; 6] {
+        let m = [[s[0], s[3], s[5]], [s[3], s[1], s[4]], [s[5], s[4], s[2]]];
+        let mut o = [[0.0; 3]; 3];
+        for i in 0..3 {
+            for j in 0..3 {
+                for k in 0..3 {
+                    for l in 0..3 {
+                        o[i][j] += r[i][k] * m[k][l] * r[j][l];
+                    }
+                }
+            }
+        }
+        [o[0][0], o[1][1], o[2][2], o[0][1], o[1][2], o[2][0]]
+    }
+
+    #[test]
+    fn uniform_gradient_matches_exact_integration() {
+        // b_a = ∫ ∂N_a/∂x dV is integrated exactly by 2×2×2 Gauss points
+        // (the integrand has degree ≤ 2 in each natural coordinate).
+        let x = distorted();
+        let (b, vol) = hex_gradient(&x);
+        let g = 1.0 / 3.0f64.sqrt();
+        let mut bg = [[0.0; 3]; 8];
+        let mut vg = 0.0;
+        for p in NAT {
+            let xi = [p[0] * g, p[1] * g, p[2] * g];
+            let mut dn = [[0.0; 3]; 8];
+            for a in 0..8 {
+                let n = NAT[a];
+                let f = |k: usize| 1.0 + n[k] * xi[k];
+                dn[a] = [
+                    0.125 * n[0] * f(1) * f(2),
+                    0.125 * n[1] * f(0) * f(2),
+                    0.125 * n[2] * f(0) * f(1),
+                ];
+            }
+            let mut j = [[0.0; 3]; 3]; // j[i][k] = ∂x_i/∂ξ_k
+            for a in 0..8 {
+                for i in 0..3 {
+                    for k in 0..3 {
+                        j[i][k] += x[a][i] * dn[a][k];
+                    }
+                }
+            }
+            let det = dot(j.map(|r| r[0]), cross(j.map(|r| r[1]), j.map(|r| r[2])));
+            // cofactors: ∂ξ_k/∂x_i · det = (cof J)_{ik}
+            let c0 = cross(j.map(|r| r[1]), j.map(|r| r[2]));
+            let c1 = cross(j.map(|r| r[2]), j.map(|r| r[0]));
+            let c2 = cross(j.map(|r| r[0]), j.map(|r| r[1]));
+            vg += det;
+            for a in 0..8 {
+                for i in 0..3 {
+                    bg[a][i] += dn[a][0] * c0[i] + dn[a][1] * c1[i] + dn[a][2] * c2[i];
+                }
+            }
+        }
+        assert!((vol - vg).abs() < 1e-14 * vg, "{vol} vs {vg}");
+        for a in 0..8 {
+            for i in 0..3 {
+                assert!(
+                    (b[a][i] - bg[a][i]).abs() < 1e-14,
+                    "b[{a}][{i}] = {} vs {}",
+                    b[a][i],
+                    bg[a][i]
+                );
+            }
+        }
+        // Σ_a x_ai b_aj = V δ_ij
+        for i in 0..3 {
+            for j in 0..3 {
+                let s: f64 = (0..8).map(|a| x[a][i] * b[a][j]).sum();
+                let e = if i == j { vol } else { 0.0 };
+                assert!((s - e).abs() < 1e-14, "{i}{j}: {s}");
+            }
+        }
+    }
+
+    #[test]
+    fn rigid_translation_gives_no_force() {
+        for isolid in [1, 2] {
+            let s = sec(isolid, 1.1, 0.05, 0.1);
+            let mut x = distorted();
+            let mut st = hex8_init(&s, &x);
+            let v = [[3.0, -2.0, 1.5]; 8];
+            let dt = 1e-3;
+            for _ in 0..10 {
+                for a in 0..8 {
+                    for k in 0..3 {
+                        x[a][k] += dt * v[a][k];
+                    }
+                }
+                let o = hex8_step(&s, &x, &v, dt, &mut st);
+                assert!(maxabs(&o.f) < 1e-12, "isolid {isolid}: {:?}", o.f);
+                assert!(o.d_eint.abs() < 1e-18 && o.d_ehg.abs() < 1e-18);
+            }
+            assert!(st.sig.iter().all(|s| s.abs() < 1e-10));
+        }
+    }
+
+    #[test]
+    fn rigid_rotation_rotates_stress_exactly() {
+        let s = sec(1, 1.1, 0.05, 0.1);
+        let x0 = distorted();
+        let r = rotation([1.0, 2.0, 3.0], 0.3);
+        let c = [0.4, -0.2, 0.7];
+        let mut x1 = [[0.0; 3]; 8];
+        for a in 0..8 {
+            let p = apply(&r, sub(x0[a], c));
+            x1[a] = [p[0] + c[0] + 0.5, p[1] + c[1], p[2] + c[2] - 0.1];
+        }
+        let dt = 0.01;
+        let mut v = [[0.0; 3]; 8];
+        for a in 0..8 {
+            for k in 0..3 {
+                v[a][k] = (x1[a][k] - x0[a][k]) / dt;
+            }
+        }
+        // Stress-free: no force, no energy.
+        let mut st = hex8_init(&s, &x0);
+        let o = hex8_step(&s, &x1, &v, dt, &mut st);
+        assert!(maxabs(&o.f) < 1e-12, "{:?}", o.f);
+        assert!(o.d_ehg.abs() < 1e-20 && o.d_eint.abs() < 1e-16);
+        // Pre-stressed: the stress turns with the body, the forces are those of Rσ₀Rᵀ.
+        let sig0 = [0.3, -0.1, 0.2, 0.05, -0.07, 0.11];
+        let mut st = hex8_init(&s, &x0);
+        st.sig = sig0;
+        let o = hex8_step(&s, &x1, &v, dt, &mut st);
+        let want = rotated(&r, &sig0);
+        for k in 0..6 {
+            // Round-off of v = (x¹ − x⁰)/Δt times E: ~1e-13 of σ.
+            assert!(
+                (st.sig[k] - want[k]).abs() < 1e-12,
+                "{:?} vs {want:?}",
+                st.sig
+            );
+        }
+        let (b, _) = hex_gradient(&x1);
+        for a in 0..8 {
+            let f = stress_force(&want, b[a]);
+            for k in 0..3 {
+                assert!(
+                    (o.f[a][k] - f[k]).abs() < 1e-12,
+                    "{a}: {:?} vs {f:?}",
+                    o.f[a]
+                );
+            }
+        }
+        assert!(o.d_eint.abs() < 1e-14);
+    }
+
+    #[test]
+    fn uniaxial_strain_is_exact() {
+        let s = sec(1, 1.1, 0.05, 0.1);
+        let (lam, mu) = lame(&s.material);
+        let x0 = unit_cube();
+        let (v0, dt) = (1.0, 1e-4);
+        let mut v = [[0.0; 3]; 8];
+        for a in 4..8 {
+            v[a][2] = v0;
+        }
+        let mut x1 = x0;
+        for a in 0..8 {
+            x1[a][2] += dt * v[a][2];
+        }
+        let mut st = hex8_init(&s, &x0);
+        let o = hex8_step(&s, &x1, &v, dt, &mut st);
+        let hm = 1.0 + 0.5 * dt * v0;
+        let eps = dt * v0 / hm;
+        let want = [lam * eps, lam * eps, (lam + 2.0 * mu) * eps, 0.0, 0.0, 0.0];
+        for k in 0..6 {
+            assert!(
+                (st.sig[k] - want[k]).abs() <= 1e-9 * want[2],
+                "{:?} vs {want:?}",
+                st.sig
+            );
+        }
+        for k in 0..3 {
+            assert!((st.sig[k] - want[k]).abs() <= 1e-12 * want[k].abs());
+        }
+        // Corner forces: ±σzz/4 on the top/bottom, ±σxx h/4 on the sides.
+        let h1 = 1.0 + dt * v0;
+        for a in 0..8 {
+            let n = NAT[a];
+            let f = [
+                0.25 * n[0] * want[0] * h1,
+                0.25 * n[1] * want[1] * h1,
+                0.25 * n[2] * want[2],
+            ];
+            for k in 0..3 {
+                assert!(
+                    (o.f[a][k] - f[k]).abs() < 1e-12 * want[2],
+                    "{a}: {:?} vs {f:?}",
+                    o.f[a]
+                );
+            }
+        }
+        assert!((o.d_eint - 0.5 * want[2] * eps * hm).abs() < 1e-12 * o.d_eint);
+        assert_eq!(o.d_ehg, 0.0);
+    }
+
+    #[test]
+    fn bulk_viscosity_adds_pressure_in_compression() {
+        let s = sec(1, 1.1, 0.05, 0.1);
+        let (lam, mu) = lame(&s.material);
+        let x0 = unit_cube();
+        let (v0, dt) = (-5.0, 1e-4);
+        let mut v = [[0.0; 3]; 8];
+        for a in 4..8 {
+            v[a][2] = v0;
+        }
+        let mut x1 = x0;
+        for a in 4..8 {
+            x1[a][2] += dt * v0;
+        }
+        let mut st = hex8_init(&s, &x0);
+        let o = hex8_step(&s, &x1, &v, dt, &mut st);
+        let hm = 1.0 + 0.5 * dt * v0;
+        let h1 = 1.0 + dt * v0;
+        let rate = -v0 / hm;
+        let eps = -rate * dt;
+        assert!((st.sig[2] - (lam + 2.0 * mu) * eps).abs() < 1e-12 * st.sig[2].abs());
+        let rho = s.material.rho() / h1;
+        let l = h1.cbrt();
+        let q = rho * l * rate * (1.1 * 1.1 * l * rate + 0.05 * s.c);
+        assert!(q > 0.0);
+        // Top nodes: f_z = (σzz − q) A/4 with A = 1.
+        for a in 4..8 {
+            let want = 0.25 * (st.sig[2] - q);
+            assert!(
+                (o.f[a][2] - want).abs() < 1e-12 * want.abs(),
+                "{} vs {want}",
+                o.f[a][2]
+            );
+        }
+        // Energy: ½σ̄:Δε V + q ḋ V Δt (both positive in compression).
+        let want = (0.5 * st.sig[2] * eps + q * rate * dt) * hm;
+        assert!(
+            (o.d_eint - want).abs() < 1e-12 * want,
+            "{} vs {want}",
+            o.d_eint
+        );
+        // Time step: Q = qb c + l_c qa² ḋ.
+        let qx = 0.05 * s.c + h1 * 1.1 * 1.1 * rate;
+        let want_dt = h1 / (qx + (qx * qx + s.c * s.c).sqrt());
+        assert!((o.dt - want_dt).abs() < 1e-14 * want_dt);
+    }
+
+    #[test]
+    fn patch_test_on_a_distorted_mesh() {
+        // 2×2×2 bricks on [0,2]³, every node moved; linear velocity field v = G x + v₀.
+        let mut p = [[0.0; 3]; 27];
+        let id = |i: usize, j: usize, k: usize| i + 3 * j + 9 * k;
+        let mut seed = 12345u64;
+        let mut rnd = || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            ((seed >> 11) as f64 / (1u64 << 53) as f64) - 0.5
+        };
+        for k in 0..3 {
+            for j in 0..3 {
+                for i in 0..3 {
+                    p[id(i, j, k)] = [
+                        i as f64 + 0.3 * rnd(),
+                        j as f64 + 0.3 * rnd(),
+                        k as f64 + 0.3 * rnd(),
+                    ];
+                }
+            }
+        }
+        let g = [[0.3, -0.2, 0.5], [0.1, -0.4, 0.25], [-0.35, 0.15, 0.2]];
+        let v0 = [1.0, 2.0, -0.5];
+        let vel = |x: [f64; 3]| {
+            [
+                dot(g[0], x) + v0[0],
+                dot(g[1], x) + v0[1],
+                dot(g[2], x) + v0[2],
+            ]
+        };
+        let dt = 1e-3;
+        let s = sec(1, 1.1, 0.05, 0.1);
+        let mut fnode = [[0.0; 3]; 27];
+        let mut sig_ref: Option<[f64; 6]> = None;
+        let mut fmax: f64 = 0.0;
+        for k in 0..2 {
+            for j in 0..2 {
+                for i in 0..2 {
+                    let nodes = [
+                        id(i, j, k),
+                        id(i + 1, j, k),
+                        id(i + 1, j + 1, k),
+                        id(i, j + 1, k),
+                        id(i, j, k + 1),
+                        id(i + 1, j, k + 1),
+                        id(i + 1, j + 1, k + 1),
+                        id(i, j + 1, k + 1),
+                    ];
+                    let x = nodes.map(|n| p[n]);
+                    let v = x.map(vel);
+                    let mut st = hex8_init(&s, &x);
+                    let o = hex8_step(&s, &x, &v, dt, &mut st);
+                    assert!(
+                        o.d_ehg.abs() < 1e-14 * o.d_eint.abs(),
+                        "hourglass energy {}",
+                        o.d_ehg
+                    );
+                    assert!(st.hg.iter().flatten().all(|q| q.abs() < 1e-14));
+                    match sig_ref {
+                        None => sig_ref = Some(st.sig),
+                        Some(r) => {
+                            for c in 0..6 {
+                                assert!((st.sig[c] - r[c]).abs() < 1e-12, "{:?} vs {r:?}", st.sig);
+                            }
+                        }
+                    }
+                    for (a, &n) in nodes.iter().enumerate() {
+                        for c in 0..3 {
+                            fnode[n][c] += o.f[a][c];
+                        }
+                    }
+                    fmax = fmax.max(maxabs(&o.f));
+                }
+            }
+        }
+        // The interior node is in equilibrium under a uniform stress.
+        let fc = fnode[id(1, 1, 1)];
+        assert!(maxabs(&[fc]) < 1e-12 * fmax, "{fc:?} (max {fmax})");
+        // The stress is Hooke's law of Δε = sym(L)Δt with L = G (I − ½ΔtG)⁻¹.
+        let a = [
+            [
+                1.0 - 0.5 * dt * g[0][0],
+                -0.5 * dt * g[0][1],
+                -0.5 * dt * g[0][2],
+            ],
+            [
+                -0.5 * dt * g[1][0],
+                1.0 - 0.5 * dt * g[1][1],
+                -0.5 * dt * g[1][2],
+            ],
+            [
+                -0.5 * dt * g[2][0],
+                -0.5 * dt * g[2][1],
+                1.0 - 0.5 * dt * g[2][2],
+            ],
+        ];
+        let det = dot(a[0], cross(a[1], a[2]));
+        let cols = [cross(a[1], a[2]), cross(a[2], a[0]), cross(a[0], a[1])];
+        let mut ainv = [[0.0; 3]; 3];
+        for i in 0..3 {
+            for j in 0..3 {
+                ainv[i][j] = cols[j][i] / det;
+            }
+        }
+        let mut l = [[0.0; 3]; 3];
+        for i in 0..3 {
+            for j in 0..3 {
+                for m in 0..3 {
+                    l[i][j] += g[i][m] * ainv[m][j];
+                }
+            }
+        }
+        let (lam, mu) = lame(&s.material);
+        let e = |i: usize, j: usize| 0.5 * (l[i][j] + l[j][i]) * dt;
+        let tr = e(0, 0) + e(1, 1) + e(2, 2);
+        let want = [
+            lam * tr + 2.0 * mu * e(0, 0),
+            lam * tr + 2.0 * mu * e(1, 1),
+            lam * tr + 2.0 * mu * e(2, 2),
+            2.0 * mu * e(0, 1),
+            2.0 * mu * e(1, 2),
+            2.0 * mu * e(2, 0),
+        ];
+        let r = sig_ref.unwrap();
+        for c in 0..6 {
+            assert!(
+                (r[c] - want[c]).abs() < 1e-9 * want[0].abs(),
+                "{r:?} vs {want:?}"
+            );
+        }
+    }
+
+    #[test]
+    fn hourglass_modes_are_resisted() {
+        let x = unit_cube();
+        for isolid in [1, 2] {
+            let s = sec(isolid, 1.1, 0.05, 0.1);
+            for (m, h) in HG_BASE.iter().enumerate() {
+                for dir in 0..3 {
+                    let amp = 0.01;
+                    let mut v = [[0.0; 3]; 8];
+                    for a in 0..8 {
+                        v[a][dir] = amp * h[a];
+                    }
+                    let dt = 1e-6;
+                    let mut st = hex8_init(&s, &x);
+                    let o = hex8_step(&s, &x, &v, dt, &mut st);
+                    // No strain: the mode is invisible to the one-point gradient.
+                    assert!(st.sig.iter().all(|s| s.abs() < 1e-15), "{:?}", st.sig);
+                    // Exact viscous force Q = q(C_l + |q| C_q), q = 8 amp, f_a = h_a Q.
+                    let q = 8.0 * amp;
+                    let base = 0.025 * s.material.rho();
+                    let qf = q * (base * s.c + q * base * 0.025 * 100.0);
+                    for a in 0..8 {
+                        assert!(
+                            (o.f[a][dir] - h[a] * qf).abs() < 1e-12 * qf,
+                            "mode {m} dir {dir}"
+                        );
+                    }
+                    let power: f64 = (0..8).map(|a| dot(o.f[a], v[a])).sum();
+                    assert!(power > 0.0);
+                    assert!((o.d_ehg - power * dt).abs() < 1e-12 * o.d_ehg);
+                    assert!(maxabs(&[sum_f(&o.f)]) < 1e-15);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn forces_are_in_equilibrium() {
+        let mut seed = 99u64;
+        let mut rnd = || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            ((seed >> 11) as f64 / (1u64 << 53) as f64) - 0.5
+        };
+        for isolid in [1, 2] {
+            let s = sec(isolid, 1.1, 0.05, 0.1);
+            let mut x = distorted();
+            let mut st = hex8_init(&s, &x);
+            let mut v = [[0.0; 3]; 8];
+            for a in 0..8 {
+                v[a] = [rnd(), rnd(), rnd()];
+            }
+            let dt = 1e-3;
+            for _ in 0..20 {
+                for a in 0..8 {
+                    for k in 0..3 {
+                        x[a][k] += dt * v[a][k];
+                    }
+                }
+                let o = hex8_step(&s, &x, &v, dt, &mut st);
+                assert!(!o.bad_volume);
+                let fm = maxabs(&o.f);
+                assert!(fm > 0.0);
+                assert!(
+                    maxabs(&[sum_f(&o.f)]) < 1e-13 * fm,
+                    "Σf = {:?}",
+                    sum_f(&o.f)
+                );
+                if isolid == 1 {
+                    let mut mo = [0.0; 3];
+                    for a in 0..8 {
+                        let c = cross(x[a], o.f[a]);
+                        for k in 0..3 {
+                            mo[k] += c[k];
+                        }
+                    }
+                    assert!(maxabs(&[mo]) < 1e-12 * fm, "Σx×f = {mo:?}");
+                }
+                assert!(o.d_ehg >= 0.0);
+            }
+        }
+    }
+
+    #[test]
+    fn internal_energy_equals_the_work_of_the_forces() {
+        // Σ ½(fⁿ + fⁿ⁺¹)·v^{n+½} Δt = E_int + E_hg (second order in Δt).
+        let s = sec(1, 1.1, 0.05, 0.1);
+        let mut x = distorted();
+        let mut st = hex8_init(&s, &x);
+        let mut v = [[0.0; 3]; 8];
+        for a in 0..8 {
+            v[a] = [
+                -0.8 * x[a][0] + 0.2 * x[a][1],
+                0.3 * x[a][2],
+                0.5 * x[a][2] - 0.1 * x[a][0],
+            ];
+            for k in 0..3 {
+                v[a][k] += 0.05 * HG_BASE[k][a];
+            }
+        }
+        let dt = 1e-4;
+        let mut f_old = [[0.0; 3]; 8];
+        let mut work = 0.0;
+        for _ in 0..300 {
+            for a in 0..8 {
+                for k in 0..3 {
+                    x[a][k] += dt * v[a][k];
+                }
+            }
+            let o = hex8_step(&s, &x, &v, dt, &mut st);
+            for a in 0..8 {
+                for k in 0..3 {
+                    work += 0.5 * (f_old[a][k] + o.f[a][k]) * v[a][k] * dt;
+                }
+            }
+            f_old = o.f;
+        }
+        let e = st.eint + st.ehg;
+        assert!(st.ehg > 0.0 && st.eint > 0.0);
+        assert!((work - e).abs() < 1e-3 * e, "work {work} vs energy {e}");
+    }
+
+    #[test]
+    fn time_step_of_a_unit_cube() {
+        let m = mat();
+        let (lam, mu) = lame(&m);
+        let c = ((lam + 2.0 * mu) / m.rho_ref()).sqrt();
+        let x = unit_cube();
+        let s = sec(1, 0.0, 0.0, 0.1);
+        assert!((s.c - c).abs() < 1e-12 * c);
+        let mut st = hex8_init(&s, &x);
+        let o = hex8_step(&s, &x, &[[0.0; 3]; 8], 0.0, &mut st);
+        assert!((o.dt * c - 1.0).abs() < 1e-12, "{}", o.dt * c);
+        // Default qb = 0.05: Δt = 1/(c (qb + √(1 + qb²))).
+        let s = sec(1, 1.1, 0.05, 0.1);
+        let o = hex8_step(&s, &x, &[[0.0; 3]; 8], 0.0, &mut st);
+        let want = 1.0 / (c * (0.05 + (1.0f64 + 0.0025).sqrt()));
+        assert!((o.dt - want).abs() < 1e-12 * want);
+        assert!((o.dt * c - 1.0).abs() < 0.06);
+        // A 2 × 1 × 0.5 box: V / A_max = 0.5, the smallest dimension.
+        let mut b = x;
+        for p in b.iter_mut() {
+            p[0] *= 2.0;
+            p[2] *= 0.5;
+        }
+        let s = sec(1, 0.0, 0.0, 0.1);
+        let o = hex8_step(&s, &b, &[[0.0; 3]; 8], 0.0, &mut hex8_init(&s, &b));
+        assert!((o.dt * c - 0.5).abs() < 1e-12);
+    }
+
+    #[test]
+    fn negative_volume_is_reported() {
+        let s = sec(1, 1.1, 0.05, 0.1);
+        let x = unit_cube();
+        let mut st = hex8_init(&s, &x);
+        // Top face pushed through the bottom one.
+        let mut xi = x;
+        for a in 4..8 {
+            xi[a][2] = -0.5;
+        }
+        let o = hex8_step(&s, &xi, &[[0.0; 3]; 8], 1e-6, &mut st);
+        assert!(o.bad_volume);
+        // Mirrored numbering.
+        let mut xm = x;
+        xm.swap(1, 3);
+        xm.swap(5, 7);
+        assert!(hex8_step(&s, &xm, &[[0.0; 3]; 8], 0.0, &mut st).bad_volume);
+    }
+
+    #[test]
+    fn sections_refuse_what_is_not_computed() {
+        let m = mat();
+        let e = SolidSection::new(&resolved(14, 1.1, 0.05, 0.1), &m).unwrap_err();
+        assert!(e.contains("Isolid = 14"), "{e}");
+        let e = SolidSection::new(&resolved(24, 1.1, 0.05, 0.1), &m).unwrap_err();
+        assert!(e.contains("Isolid = 24"), "{e}");
+        let mut r = resolved(1, 1.1, 0.05, 0.1);
+        r.ismstr = 1;
+        assert!(SolidSection::new(&r, &m)
+            .unwrap_err()
+            .contains("Ismstr = 1"));
+        let mut r = resolved(2, 1.1, 0.05, 0.1);
+        r.iframe = 2;
+        assert!(SolidSection::new(&r, &m)
+            .unwrap_err()
+            .contains("Iframe = 2"));
+        let mut r = resolved(1, 1.1, 0.05, 0.1);
+        r.itetra4 = 3;
+        assert!(SolidSection::for_tetra(&r, &m)
+            .unwrap_err()
+            .contains("Itetra4 = 3"));
+        r.itetra4 = 1000;
+        r.isolid = 14;
+        assert_eq!(SolidSection::for_tetra(&r, &m).unwrap().isolid, 0);
+    }
+}

@@ -1,0 +1,758 @@
+//! Belytschko-Lin-Tsay 4-node shell (Radioss Ishell = 1, 2, 3, 4).
+//!
+//! # Formulation
+//! * **Kinematics** (Belytschko, Lin & Tsay 1984; Radioss theory manual, "Shell
+//!   Elements": bilinear Mindlin plate, one in-plane integration point, rigid
+//!   body motion carried by a corotational local frame). Velocities are taken to
+//!   the local frame; with the one-point gradient vectors
+//!   b_x = (y24, y31, y42, y13)/(2A), b_y = (x42, x13, x24, x31)/(2A):
+//!   membrane d = (Σb_x v_x, Σb_y v_y, Σ(b_y v_x + b_x v_y)),
+//!   curvature κ = (Σb_x θ_y, −Σb_y θ_x, Σ(b_y θ_y − b_x θ_x)),
+//!   transverse shear γ_xz = Σb_x v_z + ¼Σθ_y, γ_yz = Σb_y v_z − ¼Σθ_x.
+//! * **Configurations.** The velocity gradient is evaluated on the mid-step
+//!   geometry x^{n+½} = x^{n+1} − ½Δt v^{n+½} (frame and b-vectors of that
+//!   geometry): for a rigid rotation the nodal velocity field is then exactly
+//!   skew on it (Cayley transform), so rigid rotations give no strain at any step
+//!   size. This replaces the second-order velocity correction the Radioss engine
+//!   applies to BLT membrane rates. Internal forces use the x^{n+1} frame and
+//!   b-vectors, so that they are in exact force and moment equilibrium at x^{n+1}.
+//! * **Local frame** (one choice for all decks, /SHFRA V4 or V5): e3 = normal of
+//!   the diagonals d13 × d24; e1 = bisector of the two mid-lines
+//!   g1 = ½(d13 − d24) and g2 = ½(d13 + d24) turned by −90° (e1 ∝ ĝ1 + ĝ2 × e3);
+//!   e2 = e3 × e1. It does not depend on which node is numbered first and turns
+//!   with the mean material rotation; for isotropic materials the choice only
+//!   affects the stored stress and hourglass rotation at second order.
+//! * **Warped elements**: with this frame the nodes sit at z_I = w·(1,−1,1,−1).
+//!   The orthogonal hourglass rates (Ishell 1, 3, 4) add the warping term
+//!   (γ·z)(b·v_z) — the Belytschko-Wong-Chiang correction Radioss applies for
+//!   Ishell = 4 — so that rigid rotations of a warped element excite no
+//!   hourglass, and hourglass forces are the exact transposes of their rates
+//!   (force and moment equilibrium hold for any geometry). Radioss drops this
+//!   term for Ishell = 1 (its source notes the resulting hourglass moment
+//!   imbalance); here Ishell 1 and 4 therefore coincide.
+//! * **Through the thickness**: N points at ζ_k = −½ + k/(N−1) (k = 0 bottom),
+//!   membrane weights of the trapezoidal rule and bending weights exact for a
+//!   piecewise-linear stress (theory manual "Forces and Moments Calculation",
+//!   table of positions/weights: N = 3 → w_N = ¼ ½ ¼, w_M = ∓1/12 0; N = 5 →
+//!   w_N = ⅛ ¼ ¼ ¼ ⅛, w_M = ∓0.0521 ∓0.0625 0). N = 1: membrane only, no
+//!   transverse shear (the starter sets Ashear = 0 for N = 1). N = 0 (global
+//!   plasticity) is refused. Resultants N = tΣw_N σ_k, M = t²Σw_M σ_k, Q = tΣw_N τ_k.
+//! * **Corner forces** (internal, power-conjugate: Σ f·v + m·ω = A(N:d + M:κ + Q·γ)):
+//!   f_x = A(b_x N_xx + b_y N_xy), f_y = A(b_y N_yy + b_x N_xy),
+//!   f_z = A(b_x Q_x + b_y Q_y), m_x = −A(b_y M_yy + b_x M_xy) − ¼A Q_y,
+//!   m_y = A(b_x M_xx + b_y M_xy) + ¼A Q_x, m_z = 0 (no drilling stiffness).
+//!   The solver subtracts them: M a = f_ext − f.
+//! * **Hourglass** (theory manual "Hourglass Modes"/"Hourglass Resistance";
+//!   coefficients as in the reference engine's shell hourglass routines):
+//!   Γ = (1,−1,1,−1); orthogonal vector γ = Γ − (Γ·x)b_x − (Γ·y)b_y
+//!   (Belytschko-Bachrach / Flanagan-Belytschko); Ishell 2 uses Γ itself
+//!   ("without orthogonality", Hallquist), which does not conserve angular
+//!   momentum on non-parallelogram or warped elements (as in Radioss).
+//!   Rates q_x, q_y (membrane), q_z (out of plane), q_rx, q_ry (rotations).
+//!   - Ishell 1, 2, 4 (visco-elastic): Q = H + C q with viscous
+//!     C_m = ¼ρc t √(h_m A/2), C_f = ¼ρc t² √(h_f k/(6(1+ν))),
+//!     C_r = ¼ρc t² A √(h_r/2)/(8√3), and elastic resultants integrated in time,
+//!     H_m += ¼h_m E t q_m Δt, H_f += ¼h_f E k/(3(1+ν)) t³/B q_z Δt,
+//!     B = A²(|b_1|² + |b_2|²).  (k = Ashear, c = √(E/ρ₀).)
+//!   - Ishell 3 (elasto-plastic): H_m += ⅛h_m E t q_m Δt capped at ½σ_y t √A h_m,
+//!     H_f += ⅛h_f E k/(3(1+ν)) t³/B q_z Δt capped at ¼σ_y t² h_f (σ_y: mean
+//!     current yield stress of the points), rotations viscous ¼ρc t² A √h_r/(8√3).
+//!   The quadratic hourglass viscosity of the reference engine is not used.
+//!   Degenerate quads (node 3 = node 4) get no hourglass forces.
+//! * **Time step** (reference engine's shell characteristic length): with the
+//!   local edge lengths l_12, l_23, l_34, l_41 and diagonals d_13, d_24,
+//!   L² = max(A²/max(d_13², d_24²), min(l², d²)), then
+//!   L² ← min(L², ½(min(l², d²) + L²)/max(h_m, h_f)); Δt = L/√(E/ρ₀). On BOX1BL's
+//!   5×5 squares (E = 205, ρ = 7.8e-6) this is 5/5126.6 = 9.753e-4, the
+//!   listing's first step 0.9753E-04 divided by the /DT scale 0.1.
+//! * **Strain measure**: Ismstr 1, 2 and 4 all use this corotational rate form
+//!   (Radioss Ismstr = 2 is full geometric nonlinearity unless a /DT…/CST
+//!   option switches an element to small strain; Ismstr = 1 freezes the
+//!   reference geometry of the strain-displacement matrix, which is not done here).
+//! * **Thickness**: Ithick = 1 updates t with Σ_k w_N,k Δε_zz,k; Ithick = 0 keeps it.
+//! * **Strain rate** for Johnson-Cook: the element's energy-equivalent rate
+//!   √(4/3(d_xx²+d_yy²+d_xx d_yy+¼γ_xy²) + t²/9(κ_xx²+κ_yy²+κ_xxκ_yy+¼κ_xy²)),
+//!   filtered with F_cut (Radioss's shell strain rate for LAW2).
+//! * **Failure**: a point fails when ε_p ≥ EPS_p_max (its stress is zero from
+//!   then on); the element is deleted when all its points have failed.
+//!
+//! No heap allocation: everything is fixed-size on the stack.
+
+use crate::material::Material;
+use crate::model::ResolvedShell;
+use serde::{Deserialize, Serialize};
+
+/// Most integration points through the thickness (Radioss allows N ≤ 10).
+pub const MAX_IP: usize = 10;
+/// Elastic hourglass resultants kept per element: membrane x, y and out of plane.
+pub const N_HG: usize = 3;
+
+const GAMMA: [f64; 4] = [1.0, -1.0, 1.0, -1.0];
+
+/// Resolved section data for one shell part (from [`ResolvedShell`] + the part's [`Material`]).
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct ShellSection {
+    pub ishell: i64,
+    pub ismstr: i64,
+    pub hm: f64,
+    pub hf: f64,
+    pub hr: f64,
+    /// Membrane damping (only for laws Radioss applies it to; unused for LAW1/LAW2).
+    pub dm: f64,
+    /// Integration points through the thickness (1..=10).
+    pub n_ip: usize,
+    /// Transverse shear factor actually used (Ashear; 0 when N = 1).
+    pub ashear: f64,
+    pub ithick: i64,
+    pub iplas: i64,
+    pub material: Material,
+    /// Point positions ζ_k ∈ [−½, ½] (fraction of the thickness, k = 0 at the bottom).
+    pub zeta: [f64; MAX_IP],
+    /// Membrane weights (N = tΣ w_mem σ_k; they sum to 1).
+    pub w_mem: [f64; MAX_IP],
+    /// Bending weights (M = t²Σ w_bend σ_k).
+    pub w_bend: [f64; MAX_IP],
+}
+
+/// Through-thickness rule: equally spaced points, trapezoidal membrane weights,
+/// bending weights exact for a piecewise-linear stress (theory manual table).
+fn thickness_rule(n: usize) -> ([f64; MAX_IP], [f64; MAX_IP], [f64; MAX_IP]) {
+    let mut z = [0.0; MAX_IP];
+    let mut wm = [0.0; MAX_IP];
+    let mut wb = [0.0; MAX_IP];
+    if n == 1 {
+        wm[0] = 1.0;
+        return (z, wm, wb);
+    }
+    let h = 1.0 / (n - 1) as f64;
+    for k in 0..n {
+        z[k] = -0.5 + k as f64 * h;
+        wm[k] = h;
+        wb[k] = z[k] * h;
+    }
+    wm[0] = 0.5 * h;
+    wm[n - 1] = 0.5 * h;
+    // ∫ ζ φ dζ over the half hat of an end point: (½ − h)h/2 + h²/3.
+    let end = (0.5 - h) * 0.5 * h + h * h / 3.0;
+    wb[0] = -end;
+    wb[n - 1] = end;
+    (z, wm, wb)
+}
+
+impl ShellSection {
+    pub fn new(r: &ResolvedShell, m: &Material) -> Result<ShellSection, String> {
+        match r.ishell {
+            1..=4 => {}
+            12 => return Err("Ishell = 12 (QBAT) is not supported yet: the engine computes Ishell = 1, 2, 3, 4 (Belytschko-Tsay)".into()),
+            24 => return Err("Ishell = 24 (QEPH) is not supported yet: the engine computes Ishell = 1, 2, 3, 4 (Belytschko-Tsay)".into()),
+            v => return Err(format!("Ishell = {v}: expected 1, 2, 3 or 4 (Belytschko-Tsay)")),
+        }
+        let ismstr = match r.ismstr {
+            1 | 2 | 4 => r.ismstr,
+            -1 => 2,
+            v => return Err(format!("Ismstr = {v} is not supported: the engine computes Ismstr = 1, 2, 4 (corotational rate form)")),
+        };
+        if r.n == 0 {
+            return Err("N = 0 (global plasticity integration) is not supported yet: give N = 1..10 integration points".into());
+        }
+        if !(1..=MAX_IP as i64).contains(&r.n) {
+            return Err(format!(
+                "N = {}: expected 1..10 integration points through the thickness",
+                r.n
+            ));
+        }
+        if !(0..=1).contains(&r.ithick) {
+            return Err(format!("Ithick = {}: expected 0 or 1", r.ithick));
+        }
+        if !(0..=2).contains(&r.iplas) {
+            return Err(format!("Iplas = {}: expected 0, 1 or 2", r.iplas));
+        }
+        m.check_supported()?;
+        let n_ip = r.n as usize;
+        let (zeta, w_mem, w_bend) = thickness_rule(n_ip);
+        Ok(ShellSection {
+            ishell: r.ishell,
+            ismstr,
+            hm: r.hm,
+            hf: r.hf,
+            hr: r.hr,
+            dm: r.dm,
+            n_ip,
+            ashear: if n_ip == 1 { 0.0 } else { r.ashear },
+            ithick: r.ithick,
+            iplas: r.iplas,
+            material: m.clone(),
+            zeta,
+            w_mem,
+            w_bend,
+        })
+    }
+}
+
+/// Per-element state kept by the solver (small, `Copy`).
+///
+/// Per integration point the solver keeps `[σxx, σyy, σxy, σyz, σzx]` (local
+/// frame) and ε_p, `n_ip` of each per element, and hands them in as slices.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct Shell4State {
+    /// Current thickness.
+    pub thick: f64,
+    /// Initial area (½|d13 × d24|).
+    pub area0: f64,
+    /// Elastic hourglass resultants (local frame): membrane x, y; out of plane.
+    pub hourglass: [f64; N_HG],
+    /// Cumulative internal energy (elastic + plastic, without hourglass).
+    pub eint: f64,
+    /// Cumulative hourglass energy.
+    pub ehg: f64,
+    /// Cumulative plastic work.
+    pub eplas: f64,
+    /// Filtered equivalent strain rate (Johnson-Cook rate term).
+    pub eps_dot: f64,
+    /// Degenerate quad (node 3 = node 4 at initialisation): no hourglass.
+    pub tri: bool,
+    /// All points have failed: the element is deleted (zero forces from then on).
+    pub deleted: bool,
+}
+
+/// What one element step returns.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Shell4Out {
+    /// Internal corner forces (global frame); the solver subtracts them.
+    pub f: [[f64; 3]; 4],
+    /// Internal corner moments (global frame).
+    pub m: [[f64; 3]; 4],
+    /// Critical (unscaled) time step; ∞ for a deleted or degenerate element.
+    pub dt: f64,
+    /// Internal energy increment (elastic + plastic, excluding hourglass).
+    pub d_eint: f64,
+    /// Hourglass energy increment.
+    pub d_ehg: f64,
+    /// Plastic work increment.
+    pub d_eplas: f64,
+    /// The element is deleted (all its points failed).
+    pub failed: bool,
+    /// Zero area, or the element turned inside out during the step: the solver stops.
+    pub bad_area: bool,
+}
+
+#[inline]
+fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+#[inline]
+fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+#[inline]
+fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+#[inline]
+fn scale(a: [f64; 3], s: f64) -> [f64; 3] {
+    [a[0] * s, a[1] * s, a[2] * s]
+}
+#[inline]
+fn dot4(a: &[f64; 4], b: &[f64; 4]) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3]
+}
+
+/// Corotational geometry of one configuration.
+#[derive(Clone, Copy, Debug)]
+struct Geom {
+    /// Rows e1, e2, e3.
+    e: [[f64; 3]; 3],
+    /// Local coordinates relative to the centroid.
+    x: [f64; 4],
+    y: [f64; 4],
+    area: f64,
+    bx: [f64; 4],
+    by: [f64; 4],
+    /// Orthogonal hourglass vector γ.
+    gam: [f64; 4],
+    /// γ·z (warping coupling of the membrane hourglass rates).
+    gz: f64,
+}
+
+impl Geom {
+    #[inline(always)]
+    fn new(p: &[[f64; 3]; 4]) -> Option<Geom> {
+        let d13 = sub(p[2], p[0]);
+        let d24 = sub(p[3], p[1]);
+        let n = cross(d13, d24);
+        let nn2 = dot(n, n);
+        let dd = 1e-12 * (dot(d13, d13) + dot(d24, d24));
+        // NaN-safe: a non-finite or vanishing area is refused.
+        if !(nn2 > dd * dd) {
+            return None;
+        }
+        let e3 = scale(n, 1.0 / nn2.sqrt());
+        // e1 ∝ g1 + g2 × e3 with the mid-lines g1 = d13 − d24, g2 = d13 + d24
+        // (g2 × e3 is g2 turned by −90°; never opposite to g1 since g1 × g2 ∥ +e3).
+        let g1 = sub(d13, d24);
+        let g2 = [d13[0] + d24[0], d13[1] + d24[1], d13[2] + d24[2]];
+        let bt = cross(g2, e3);
+        let s = [g1[0] + bt[0], g1[1] + bt[1], g1[2] + bt[2]];
+        let e1 = scale(s, 1.0 / dot(s, s).sqrt());
+        let e2 = cross(e3, e1);
+        let c = [
+            0.25 * (p[0][0] + p[1][0] + p[2][0] + p[3][0]),
+            0.25 * (p[0][1] + p[1][1] + p[2][1] + p[3][1]),
+            0.25 * (p[0][2] + p[1][2] + p[2][2] + p[3][2]),
+        ];
+        let mut x = [0.0; 4];
+        let mut y = [0.0; 4];
+        let mut z = [0.0; 4];
+        for i in 0..4 {
+            let r = sub(p[i], c);
+            x[i] = dot(e1, r);
+            y[i] = dot(e2, r);
+            z[i] = dot(e3, r);
+        }
+        let area = 0.5 * ((x[2] - x[0]) * (y[3] - y[1]) - (x[3] - x[1]) * (y[2] - y[0]));
+        if !(area > 0.0) {
+            return None;
+        }
+        let r2a = 0.5 / area;
+        let bx = [
+            (y[1] - y[3]) * r2a,
+            (y[2] - y[0]) * r2a,
+            (y[3] - y[1]) * r2a,
+            (y[0] - y[2]) * r2a,
+        ];
+        let by = [
+            (x[3] - x[1]) * r2a,
+            (x[0] - x[2]) * r2a,
+            (x[1] - x[3]) * r2a,
+            (x[2] - x[0]) * r2a,
+        ];
+        let hx = dot4(&GAMMA, &x);
+        let hy = dot4(&GAMMA, &y);
+        let gam = [
+            GAMMA[0] - hx * bx[0] - hy * by[0],
+            GAMMA[1] - hx * bx[1] - hy * by[1],
+            GAMMA[2] - hx * bx[2] - hy * by[2],
+            GAMMA[3] - hx * bx[3] - hy * by[3],
+        ];
+        let gz = dot4(&gam, &z);
+        Some(Geom {
+            e: [e1, e2, e3],
+            x,
+            y,
+            area,
+            bx,
+            by,
+            gam,
+            gz,
+        })
+    }
+
+    #[inline]
+    fn to_local(&self, v: [f64; 3]) -> [f64; 3] {
+        [dot(self.e[0], v), dot(self.e[1], v), dot(self.e[2], v)]
+    }
+
+    #[inline]
+    fn to_global(&self, l: [f64; 3]) -> [f64; 3] {
+        let e = &self.e;
+        [
+            e[0][0] * l[0] + e[1][0] * l[1] + e[2][0] * l[2],
+            e[0][1] * l[0] + e[1][1] * l[1] + e[2][1] * l[2],
+            e[0][2] * l[0] + e[1][2] * l[1] + e[2][2] * l[2],
+        ]
+    }
+}
+
+/// Characteristic length of the reference engine's shell time step (see the module doc).
+#[inline]
+fn char_length(sec: &ShellSection, g: &Geom) -> f64 {
+    let d2 = |i: usize, j: usize| {
+        let dx = g.x[j] - g.x[i];
+        let dy = g.y[j] - g.y[i];
+        dx * dx + dy * dy
+    };
+    let (l12, l23, l34, l41) = (d2(0, 1), d2(1, 2), d2(2, 3), d2(3, 0));
+    let (d13, d24) = (d2(0, 2), d2(1, 3));
+    let mut lmin = l12.min(l23).min(l41);
+    if l34 != 0.0 {
+        lmin = lmin.min(l34).min(d13).min(d24);
+    }
+    let dyn2 = g.area * g.area / d13.max(d24).max(1e-300);
+    let mut l2 = dyn2.max(lmin);
+    let h = sec.hm.max(sec.hf);
+    if h > 0.0 {
+        l2 = l2.min(0.5 * (lmin + l2) / h);
+    }
+    l2.sqrt()
+}
+
+/// Element state at t = 0.
+pub fn shell4_init(_sec: &ShellSection, x: &[[f64; 3]; 4], thick: f64) -> Shell4State {
+    let n = cross(sub(x[2], x[0]), sub(x[3], x[1]));
+    Shell4State {
+        thick,
+        area0: 0.5 * dot(n, n).sqrt(),
+        tri: x[2] == x[3],
+        ..Default::default()
+    }
+}
+
+/// Membrane N, bending M and transverse shear Q = (Q_x, Q_y) resultants (local
+/// frame, per unit length) of an element's points.
+pub fn shell4_resultants(
+    sec: &ShellSection,
+    thick: f64,
+    sig: &[[f64; 5]],
+) -> ([f64; 3], [f64; 3], [f64; 2]) {
+    let mut nr = [0.0; 3];
+    let mut mr = [0.0; 3];
+    let mut q = [0.0; 2];
+    for k in 0..sec.n_ip {
+        let s = &sig[k];
+        let (wm, wb) = (sec.w_mem[k] * thick, sec.w_bend[k] * thick * thick);
+        for c in 0..3 {
+            nr[c] += wm * s[c];
+            mr[c] += wb * s[c];
+        }
+        q[0] += wm * s[4];
+        q[1] += wm * s[3];
+    }
+    (nr, mr, q)
+}
+/// Rotation (cos, sin) applied to plane tensors and vectors.
+#[derive(Clone, Copy, Debug)]
+struct Rot {
+    c: f64,
+    s: f64,
+}
+
+impl Rot {
+    /// The rotation by ψ with tan(ψ/2) = p.
+    #[inline]
+    fn cayley(p: f64) -> Rot {
+        let d = 1.0 / (1.0 + p * p);
+        Rot {
+            c: (1.0 - p * p) * d,
+            s: 2.0 * p * d,
+        }
+    }
+    /// Components (xx, yy, xy) of the symmetric tensor turned by the angle:
+    /// R a Rᵀ with R = [[c, −s], [s, c]].
+    #[inline]
+    fn stress(self, a: [f64; 3]) -> [f64; 3] {
+        let (c, s) = (self.c, self.s);
+        let (cc, ss, cs) = (c * c, s * s, c * s);
+        [
+            cc * a[0] + ss * a[1] - 2.0 * cs * a[2],
+            ss * a[0] + cc * a[1] + 2.0 * cs * a[2],
+            cs * (a[0] - a[1]) + (cc - ss) * a[2],
+        ]
+    }
+    /// The same for a strain-like tensor given with its engineering shear (xx, yy, 2xy).
+    #[inline]
+    fn strain(self, a: [f64; 3]) -> [f64; 3] {
+        let r = self.stress([a[0], a[1], 0.5 * a[2]]);
+        [r[0], r[1], 2.0 * r[2]]
+    }
+    /// Components of the in-plane vector turned by the angle.
+    #[inline]
+    fn vector(self, x: f64, y: f64) -> (f64, f64) {
+        (self.c * x - self.s * y, self.s * x + self.c * y)
+    }
+}
+
+/// One explicit step of one element: stresses from x^{n+1} and v^{n+½}, internal
+/// corner forces and moments at x^{n+1}, energies, and the element time step.
+///
+/// `x`: positions at t^{n+1}; `v`: translational velocities v^{n+½}; `vr`:
+/// rotational velocities (global frame); `sig`, `eps_p`: this element's
+/// `n_ip` points (stresses in the local frame of x^{n+1} on return).
+/// With `dt = 0` only forces and the time step are computed.
+///
+/// Objectivity: the stored local stresses (and elastic hourglass resultants)
+/// are turned by ψ = φ − Θ, the in-plane material rotation of the step minus
+/// the frame rotation (midpoint/Hughes-Winget: tan(φ/2) = ω_z Δt/2 with
+/// ω_z = ½(∂v_y/∂x − ∂v_x/∂y) on the mid-step geometry; Θ from the Rodrigues
+/// vector of the measured frame turn from x^{n+½} to x^{n+1}, doubled); the
+/// mid-step strain increments are turned by ψ/2. The stress rate is thus the
+/// Jaumann rate whatever the local frame (/SHFRA V4 or V5 alike), and a
+/// prestressed element spinning rigidly about any axis keeps its stress.
+#[allow(clippy::too_many_arguments)]
+pub fn shell4_step(
+    sec: &ShellSection,
+    x: &[[f64; 3]; 4],
+    v: &[[f64; 3]; 4],
+    vr: &[[f64; 3]; 4],
+    dt: f64,
+    st: &mut Shell4State,
+    sig: &mut [[f64; 5]],
+    eps_p: &mut [f64],
+) -> Shell4Out {
+    let mut out = Shell4Out {
+        dt: f64::INFINITY,
+        ..Default::default()
+    };
+    if st.deleted {
+        out.failed = true;
+        return out;
+    }
+    let n_ip = sec.n_ip;
+    debug_assert!(sig.len() >= n_ip && eps_p.len() >= n_ip);
+    let mat = &sec.material;
+    let (e_mod, nu, g_mod) = (mat.young(), mat.poisson(), mat.shear_modulus());
+    let c = mat.sound_speed();
+
+    // ---- geometry at x^{n+1} (forces) and x^{n+1/2} (rates) ------------------
+    let Some(ge) = Geom::new(x) else {
+        out.bad_area = true;
+        return out;
+    };
+    out.dt = char_length(sec, &ge) / c;
+    let gm = if dt > 0.0 {
+        let mut xm = *x;
+        for i in 0..4 {
+            for k in 0..3 {
+                xm[i][k] -= 0.5 * dt * v[i][k];
+            }
+        }
+        match Geom::new(&xm) {
+            Some(g) => g,
+            None => {
+                out.bad_area = true;
+                return out;
+            }
+        }
+    } else {
+        ge
+    };
+    if dot(gm.e[2], ge.e[2]) <= 0.0 {
+        out.bad_area = true;
+        return out;
+    }
+
+    // ---- local velocities and generalized strain rates (mid-step frame) ------
+    let mut vx = [0.0; 4];
+    let mut vy = [0.0; 4];
+    let mut vz = [0.0; 4];
+    let mut wx = [0.0; 4];
+    let mut wy = [0.0; 4];
+    for i in 0..4 {
+        let l = gm.to_local(v[i]);
+        vx[i] = l[0];
+        vy[i] = l[1];
+        vz[i] = l[2];
+        let r = gm.to_local(vr[i]);
+        wx[i] = r[0];
+        wy[i] = r[1];
+    }
+    let (bx, by) = (&gm.bx, &gm.by);
+    let bxvy = dot4(bx, &vy);
+    let byvx = dot4(by, &vx);
+    let d_m = [dot4(bx, &vx), dot4(by, &vy), byvx + bxvy];
+    let d_k = [dot4(bx, &wy), -dot4(by, &wx), dot4(by, &wy) - dot4(bx, &wx)];
+    let bxvz = dot4(bx, &vz);
+    let byvz = dot4(by, &vz);
+    let gxz = bxvz + 0.25 * (wy[0] + wy[1] + wy[2] + wy[3]);
+    let gyz = byvz - 0.25 * (wx[0] + wx[1] + wx[2] + wx[3]);
+
+    // ---- rotations: material spin minus frame spin ----------------------------
+    let (rot_old, rot_inc) = if dt > 0.0 {
+        // Frame turn: Rodrigues vector g = tan(β/2)·axis of the rotation taking
+        // the mid-step frame to the end frame (components in the mid frame);
+        // the whole step's turn about the normal has tan(Θ/2) = 2g_z/(1 − |g|²).
+        let (m, e) = (&gm.e, &ge.e);
+        let tr = dot(m[0], e[0]) + dot(m[1], e[1]) + dot(m[2], e[2]);
+        let inv = 1.0 / (1.0 + tr);
+        let gx = (dot(m[2], e[1]) - dot(m[1], e[2])) * inv;
+        let gy = (dot(m[0], e[2]) - dot(m[2], e[0])) * inv;
+        let gz = (dot(m[1], e[0]) - dot(m[0], e[1])) * inv;
+        let tf = 2.0 * gz / (1.0 - (gx * gx + gy * gy + gz * gz));
+        // Material turn: tan(φ/2) = ω_z Δt/2 (midpoint rule, exact for a rigid spin).
+        let tm = 0.25 * (bxvy - byvx) * dt;
+        // ψ = φ − Θ for the stored stress, ψ/2 for the mid-step increments.
+        let p = (tm - tf) / (1.0 + tm * tf);
+        let ph = p / (1.0 + (1.0 + p * p).sqrt());
+        (Rot::cayley(p), Rot::cayley(ph))
+    } else {
+        (Rot::cayley(0.0), Rot::cayley(0.0))
+    };
+    let d_m = rot_inc.strain(d_m);
+    let d_k = rot_inc.strain(d_k);
+    let (gxz, gyz) = rot_inc.vector(gxz, gyz);
+
+    let t = st.thick;
+    if dt > 0.0 {
+        let (a, b, g) = (d_m[0], d_m[1], d_m[2]);
+        let em = a * a + b * b + a * b + 0.25 * g * g;
+        let (a, b, g) = (d_k[0], d_k[1], d_k[2]);
+        let ek = a * a + b * b + a * b + 0.25 * g * g;
+        let raw = (4.0 / 3.0 * em + t * t / 9.0 * ek).sqrt();
+        st.eps_dot = mat.filter_strain_rate(st.eps_dot, raw, dt);
+    }
+
+    // ---- stress update at the points ------------------------------------------
+    let temp = mat.temperature(st.eint / (gm.area * t));
+    let law = mat.at(st.eps_dot, temp);
+    let gs = g_mod * sec.ashear;
+    let (dgzx, dgyz) = (gxz * dt, gyz * dt);
+    // Σ_k w (σ_old + σ_new): membrane, bending and transverse shear parts, for
+    // the work of the resultants A(N̄:Δε + M̄:Δκ + Q̄·Δγ) (conjugate to the forces).
+    let mut sn = [0.0; 3];
+    let mut sm = [0.0; 3];
+    let mut sq = [0.0; 2];
+    let mut dwp = 0.0;
+    let mut dezz = 0.0;
+    let mut nfailed = 0;
+    if dt > 0.0 {
+        for k in 0..n_ip {
+            let z = sec.zeta[k] * t;
+            let d = [
+                (d_m[0] + z * d_k[0]) * dt,
+                (d_m[1] + z * d_k[1]) * dt,
+                (d_m[2] + z * d_k[2]) * dt,
+            ];
+            let s = &mut sig[k];
+            let [o0, o1, o2] = rot_old.stress([s[0], s[1], s[2]]);
+            let (ozx, oyz) = rot_old.vector(s[4], s[3]);
+            let mut s3 = [o0, o1, o2];
+            let r = law.plane_stress(&mut s3, &mut eps_p[k], d, sec.iplas);
+            if r.failed {
+                *s = [0.0; 5];
+                nfailed += 1;
+            } else {
+                *s = [s3[0], s3[1], s3[2], oyz + gs * dgyz, ozx + gs * dgzx];
+            }
+            let (wm, wb) = (sec.w_mem[k], sec.w_bend[k]);
+            let sum = [o0 + s[0], o1 + s[1], o2 + s[2]];
+            for c in 0..3 {
+                sn[c] += wm * sum[c];
+                sm[c] += wb * sum[c];
+            }
+            sq[0] += wm * (ozx + s[4]);
+            sq[1] += wm * (oyz + s[3]);
+            dwp += wm * r.d_wplas;
+            dezz += wm * r.d_ezz;
+        }
+    } else {
+        nfailed = (0..n_ip).filter(|&k| law.has_failed(eps_p[k])).count();
+    }
+    let de = 0.5
+        * dt
+        * (t * (sn[0] * d_m[0] + sn[1] * d_m[1] + sn[2] * d_m[2])
+            + t * t * (sm[0] * d_k[0] + sm[1] * d_k[1] + sm[2] * d_k[2])
+            + t * (sq[0] * gxz + sq[1] * gyz));
+    out.d_eint = de * gm.area;
+    out.d_eplas = dwp * gm.area * t;
+    st.eint += out.d_eint;
+    st.eplas += out.d_eplas;
+    if nfailed == n_ip {
+        st.deleted = true;
+        out.failed = true;
+        return out;
+    }
+
+    // ---- resultants and corner forces at x^{n+1} -----------------------------
+    let (nr, mr, q) = shell4_resultants(sec, t, sig);
+    let a = ge.area;
+    let mut fl = [[0.0f64; 3]; 4];
+    let mut ml = [[0.0f64; 2]; 4];
+    for i in 0..4 {
+        let (bxi, byi) = (ge.bx[i], ge.by[i]);
+        fl[i][0] = a * (bxi * nr[0] + byi * nr[2]);
+        fl[i][1] = a * (byi * nr[1] + bxi * nr[2]);
+        fl[i][2] = a * (bxi * q[0] + byi * q[1]);
+        ml[i][0] = -a * (byi * mr[1] + bxi * mr[2]) - 0.25 * a * q[1];
+        ml[i][1] = a * (bxi * mr[0] + byi * mr[2]) + 0.25 * a * q[0];
+    }
+
+    // ---- hourglass -------------------------------------------------------------
+    if !st.tri {
+        let orth = sec.ishell != 2;
+        let (gmv, gev) = if orth {
+            (gm.gam, ge.gam)
+        } else {
+            (GAMMA, GAMMA)
+        };
+        let (gzm, gze) = if orth { (gm.gz, ge.gz) } else { (0.0, 0.0) };
+        let (qx, qy) = rot_inc.vector(dot4(&gmv, &vx) + gzm * bxvz, dot4(&gmv, &vy) + gzm * byvz);
+        let qz = dot4(&gmv, &vz);
+        let (qrx, qry) = rot_inc.vector(dot4(&gmv, &wx), dot4(&gmv, &wy));
+        let rho = mat.rho_ref();
+        let k = sec.ashear;
+        let shfpr3 = k / (3.0 * (1.0 + nu));
+        let bsum = a
+            * a
+            * (ge.bx[0] * ge.bx[0]
+                + ge.by[0] * ge.by[0]
+                + ge.bx[1] * ge.bx[1]
+                + ge.by[1] * ge.by[1]);
+        let rc = 0.25 * rho * c;
+        const INV_8_SQRT3: f64 = 0.072_168_783_648_703_22; // 1/(8√3)
+        let hg = &mut st.hourglass;
+        let (h0, h1) = rot_old.vector(hg[0], hg[1]);
+        let (qmx, qmy, qf, mrx, mry);
+        if sec.ishell == 3 {
+            // Mean current yield stress of the points (∞ for an elastic material).
+            let sy_mean: f64 = (0..n_ip)
+                .map(|k| sec.w_mem[k] * law.yield_stress(eps_p[k]))
+                .sum();
+            let km = 0.125 * sec.hm * e_mod * t;
+            let kf = 0.125 * sec.hf * e_mod * shfpr3 * t * t * t / bsum;
+            let fm_max = 0.5 * sy_mean * t * a.sqrt() * sec.hm;
+            let ff_max = 0.25 * sy_mean * t * t * sec.hf;
+            let cap = |v: f64, m: f64| if m.is_finite() { v.clamp(-m, m) } else { v };
+            hg[0] = cap(h0 + km * qx * dt, fm_max);
+            hg[1] = cap(h1 + km * qy * dt, fm_max);
+            hg[2] = cap(hg[2] + kf * qz * dt, ff_max);
+            let cr = rc * t * t * a * sec.hr.sqrt() * INV_8_SQRT3;
+            qmx = hg[0];
+            qmy = hg[1];
+            qf = hg[2];
+            mrx = cr * qrx;
+            mry = cr * qry;
+        } else {
+            let km = 0.25 * sec.hm * e_mod * t;
+            let kf = 0.25 * sec.hf * e_mod * shfpr3 * t * t * t / bsum;
+            hg[0] = h0 + km * qx * dt;
+            hg[1] = h1 + km * qy * dt;
+            hg[2] += kf * qz * dt;
+            let cm = rc * t * (0.5 * sec.hm * a).sqrt();
+            let cf = rc * t * t * (sec.hf * k / (6.0 * (1.0 + nu))).sqrt();
+            let cr = rc * t * t * a * (0.5 * sec.hr).sqrt() * INV_8_SQRT3;
+            qmx = hg[0] + cm * qx;
+            qmy = hg[1] + cm * qy;
+            qf = hg[2] + cf * qz;
+            mrx = cr * qrx;
+            mry = cr * qry;
+        }
+        out.d_ehg = dt * (qmx * qx + qmy * qy + qf * qz + mrx * qrx + mry * qry);
+        st.ehg += out.d_ehg;
+        for i in 0..4 {
+            let gi = gev[i];
+            fl[i][0] += qmx * gi;
+            fl[i][1] += qmy * gi;
+            fl[i][2] += qf * gi + gze * (qmx * ge.bx[i] + qmy * ge.by[i]);
+            ml[i][0] += mrx * gi;
+            ml[i][1] += mry * gi;
+        }
+    }
+
+    for i in 0..4 {
+        out.f[i] = ge.to_global(fl[i]);
+        out.m[i] = ge.to_global([ml[i][0], ml[i][1], 0.0]);
+    }
+
+    // ---- thickness ---------------------------------------------------------------
+    if sec.ithick == 1 && dt > 0.0 {
+        st.thick = t * (1.0 + dezz);
+    }
+    out
+}
+
+#[cfg(test)]
+#[path = "shell4_tests.rs"]
+mod tests;

@@ -1,0 +1,49 @@
+//! /FUNCT evaluation: piecewise linear through the points, extrapolated
+//! linearly from the first and last segments (as Radioss does).
+
+use crate::deck::FunctionCard;
+
+/// y(x) of a /FUNCT.
+pub fn eval(f: &FunctionCard, x: f64) -> f64 {
+    let n = f.x.len();
+    if n == 1 {
+        return f.y[0];
+    }
+    // Segment index: the last i with x_i <= x, clamped to [0, n-2] (extrapolation).
+    let i = match f.x.partition_point(|&xi| xi <= x) {
+        0 => 0,
+        k => (k - 1).min(n - 2),
+    };
+    let (x0, x1, y0, y1) = (f.x[i], f.x[i + 1], f.y[i], f.y[i + 1]);
+    y0 + (y1 - y0) * (x - x0) / (x1 - x0)
+}
+
+/// Fscale · f(t / Ascale), the value of a load or imposed motion at time t.
+pub fn scaled(f: &FunctionCard, t: f64, ascale_x: f64, fscale_y: f64) -> f64 {
+    fscale_y * eval(f, t / ascale_x)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn f() -> FunctionCard {
+        FunctionCard {
+            id: 1,
+            title: String::new(),
+            x: vec![0.0, 1.0, 3.0],
+            y: vec![0.0, 10.0, 20.0],
+            loc: Default::default(),
+        }
+    }
+
+    #[test]
+    fn interpolates_and_extrapolates() {
+        let f = f();
+        assert_eq!(eval(&f, 0.5), 5.0);
+        assert_eq!(eval(&f, 2.0), 15.0);
+        assert_eq!(eval(&f, 5.0), 30.0);
+        assert_eq!(eval(&f, -1.0), -10.0);
+        assert_eq!(scaled(&f, 1.0, 2.0, 3.0), 15.0);
+    }
+}

@@ -1,0 +1,62 @@
+//! What every rank needs besides its own mesh share: parts, materials,
+//! properties, functions, conditions (with global node lists), the engine
+//! controls. Rank 0 builds it from the model and broadcasts it.
+
+use crate::deck::{Engine, FunctionCard, Id, MaterialCard, Units};
+use crate::model::{
+    Bcs, ConcentratedLoad, Gravity, ImposedMotion, InitialVelocity, Model, Part, Property,
+    RigidBody, RigidWall,
+};
+use serde::{Deserialize, Serialize};
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct GlobalData {
+    pub name: String,
+    pub title: String,
+    pub units: Units,
+    pub engine: Engine,
+    pub parts: Vec<Part>,
+    pub materials: Vec<MaterialCard>,
+    pub properties: Vec<Property>,
+    pub functions: Vec<FunctionCard>,
+    pub bcs: Vec<Bcs>,
+    pub imposed_velocities: Vec<ImposedMotion>,
+    pub imposed_displacements: Vec<ImposedMotion>,
+    pub initial_velocities: Vec<InitialVelocity>,
+    pub concentrated_loads: Vec<ConcentratedLoad>,
+    pub gravity: Vec<Gravity>,
+    pub rigid_walls: Vec<RigidWall>,
+    pub rigid_bodies: Vec<RigidBody>,
+    /// Global ids of the nodes and of each element kind's elements.
+    pub node_ids: Vec<Id>,
+    pub element_ids: Vec<Vec<Id>>,
+    pub total_mass: f64,
+    pub added_mass: f64,
+}
+
+impl GlobalData {
+    pub fn from_model(m: &Model, engine: Engine) -> GlobalData {
+        GlobalData {
+            name: m.name.clone(),
+            title: m.title.clone(),
+            units: m.begin.work_units.clone(),
+            engine,
+            parts: m.parts.clone(),
+            materials: m.materials.clone(),
+            properties: m.properties.clone(),
+            functions: m.functions.clone(),
+            bcs: m.bcs.clone(),
+            imposed_velocities: m.imposed_velocities.clone(),
+            imposed_displacements: m.imposed_displacements.clone(),
+            initial_velocities: m.initial_velocities.clone(),
+            concentrated_loads: m.concentrated_loads.clone(),
+            gravity: m.gravity.clone(),
+            rigid_walls: m.rigid_walls.clone(),
+            rigid_bodies: m.rigid_bodies.clone(),
+            node_ids: m.nodes.ids.clone(),
+            element_ids: m.elements.iter().map(|s| s.ids.clone()).collect(),
+            total_mass: m.mass.total,
+            added_mass: m.mass.added_total,
+        }
+    }
+}

@@ -1,0 +1,957 @@
+//! `crashsim run`: set-up on rank 0, scatter, the explicit cycle on every rank.
+
+use super::assembly::{key, AssemblyPlan, SLOT};
+use super::global::GlobalData;
+use super::listing::{format_row, Listing, Row, HEADER};
+use crate::deck::{self, Dof, ElementKind, EngineFile, ReadOptions};
+use crate::domain::{self, Subdomain};
+use crate::element::shell4::{self, Shell4State, ShellSection};
+use crate::kinematics::function;
+use crate::kinematics::rigid_body::{NodeLoad, RigidBodyState};
+use crate::kinematics::rigid_wall::wall_velocity;
+use crate::material::Material;
+use crate::model::{self, Model, NO_NODE};
+use crate::parallel::World;
+use rayon::prelude::*;
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+pub struct RunOptions {
+    pub deck: PathBuf,
+    pub engine: Option<PathBuf>,
+    pub out_dir: PathBuf,
+    pub final_state: Option<PathBuf>,
+    pub strict: bool,
+}
+
+/// Why a run stopped early.
+#[derive(Debug)]
+pub enum RunError {
+    /// Bad or unsupported input (exit code 2).
+    Input(String),
+    /// Physics went wrong at run time (exit code 3).
+    Physics(String),
+}
+
+impl RunError {
+    pub fn exit_code(&self) -> u8 {
+        match self {
+            RunError::Input(_) => 2,
+            RunError::Physics(_) => 3,
+        }
+    }
+    pub fn message(&self) -> &str {
+        match self {
+            RunError::Input(m) | RunError::Physics(m) => m,
+        }
+    }
+}
+
+/// What rank 0 prepares: the shared data and one subdomain per rank.
+type Prepared = (GlobalData, Vec<Subdomain>, Vec<RigidBodyState>);
+
+fn prepare(opts: &RunOptions, nranks: usize) -> Result<Prepared, String> {
+    let engine = match &opts.engine {
+        Some(p) => EngineFile::Given(p.clone()),
+        None => EngineFile::Auto,
+    };
+    let d = deck::read_deck(
+        &opts.deck,
+        engine,
+        ReadOptions {
+            strict: opts.strict,
+        },
+    )
+    .map_err(|e| e.to_string())?;
+    let m = model::build(&d).map_err(|e| e.to_string())?;
+    let starter = opts.deck.display();
+    let eng = d.engine.clone().ok_or_else(|| {
+        format!(
+            "{starter}: no engine file: expected {} beside the starter, or --engine FILE",
+            deck::engine_beside(&opts.deck)
+                .map(|p| p.display().to_string())
+                .unwrap_or_else(|| "NAME_0001.rad".into())
+        )
+    })?;
+    if eng.run.is_none() {
+        return Err(format!(
+            "{starter}: the engine file has no /RUN card: expected /RUN/NAME/1 and its end time"
+        ));
+    }
+    check_supported(&m)?;
+    let (p, _) =
+        domain::partition(&m, nranks).map_err(|e| format!("{starter}: cannot partition: {e}"))?;
+    let sds = domain::split(&m, &p.part, nranks);
+    let rbs = initial_rigid_bodies(&m);
+    Ok((GlobalData::from_model(&m, eng), sds, rbs))
+}
+
+/// The engine refuses what it does not compute yet, by name — never a silent substitute.
+fn check_supported(m: &Model) -> Result<(), String> {
+    for set in &m.elements {
+        if set.kind != ElementKind::Shell4 && !set.is_empty() {
+            return Err(format!("the deck has {} {} elements: the engine does not compute them yet (4-node shells only so far)", set.len(), set.kind.keyword()));
+        }
+    }
+    for (i, p) in m.parts.iter().enumerate() {
+        let used = m.elements[0].part.contains(&(i as u32));
+        if !used {
+            continue;
+        }
+        let prop = &m.properties[p.prop.expect("shell parts have a property") as usize];
+        let mat =
+            Material::from_card(&m.materials[p.mat.expect("shell parts have a material") as usize]);
+        let shell = prop.shell.as_ref().expect("shell property");
+        ShellSection::new(shell, &mat).map_err(|e| {
+            format!(
+                "{} (/PROP/SHELL/{}, part {}): {e}",
+                prop.card.loc, prop.card.id, p.id
+            )
+        })?;
+    }
+    let unsupported = |what: &str, loc: &deck::Loc| {
+        Err(format!("{loc}: {what} is not supported by the engine yet"))
+    };
+    for c in &m.bcs {
+        if c.card.skew_id != 0 {
+            return unsupported("/BCS with a skew system", &c.card.loc);
+        }
+    }
+    for c in &m.imposed_velocities {
+        if c.card.skew_id != 0 || c.card.sens_id != 0 || c.card.frame_id != 0 || c.card.icoor != 0 {
+            return unsupported(
+                "/IMPVEL with a skew, sensor, frame or cylindrical coordinates",
+                &c.card.loc,
+            );
+        }
+    }
+    if let Some(c) = m.imposed_displacements.first() {
+        return unsupported("/IMPDISP", &c.card.loc);
+    }
+    for c in &m.initial_velocities {
+        if c.card.skew_id != 0 {
+            return unsupported("/INIVEL with a skew system", &c.card.loc);
+        }
+    }
+    for c in &m.concentrated_loads {
+        if c.card.skew_id != 0 || c.card.sens_id != 0 {
+            return unsupported("/CLOAD with a skew system or sensor", &c.card.loc);
+        }
+    }
+    for c in &m.gravity {
+        if c.card.skew_id != 0 || c.card.sens_id != 0 {
+            return unsupported("/GRAV with a skew system or sensor", &c.card.loc);
+        }
+    }
+    for w in &m.rigid_walls {
+        if w.node.is_some() {
+            return unsupported("a moving /RWALL/PLANE (node_ID > 0)", &w.card.loc);
+        }
+    }
+    for r in &m.rigid_bodies {
+        if r.card.sens_id != 0 || r.card.skew_id != 0 || r.card.ikrem != 0 || r.card.surf_id != 0 {
+            return unsupported("/RBODY with a sensor, skew, IKREM or surface", &r.card.loc);
+        }
+    }
+    if let Some(i) = m.interfaces.first() {
+        return Err(format!(
+            "{}: /INTER/TYPE{}: contact interfaces are not computed by the engine yet",
+            i.card.loc,
+            i.card.type_number()
+        ));
+    }
+    Ok(())
+}
+
+/// Rigid bodies at t = 0: mass, centre, inertia from the model; velocity the
+/// mass-weighted mean of its nodes' initial velocities (all /INIVEL/TRA).
+fn initial_rigid_bodies(m: &Model) -> Vec<RigidBodyState> {
+    let mut v0 = vec![[0.0; 3]; m.nodes.len()];
+    for iv in &m.initial_velocities {
+        if !iv.card.rotational {
+            for &n in &iv.nodes {
+                v0[n as usize] = iv.card.v;
+            }
+        }
+    }
+    m.rigid_bodies
+        .iter()
+        .map(|rb| {
+            let mut p = [0.0; 3];
+            let main_m = rb.card.mass + m.nodal_mass[rb.main_node as usize];
+            for k in 0..3 {
+                p[k] += main_m * v0[rb.main_node as usize][k];
+            }
+            for &n in &rb.secondary_nodes {
+                for k in 0..3 {
+                    p[k] += m.nodal_mass[n as usize] * v0[n as usize][k];
+                }
+            }
+            let v = if rb.mass > 0.0 {
+                [p[0] / rb.mass, p[1] / rb.mass, p[2] / rb.mass]
+            } else {
+                [0.0; 3]
+            };
+            RigidBodyState::new(rb.card.id, rb.mass, rb.center, rb.inertia, v, [0.0; 3])
+        })
+        .collect()
+}
+
+/// One rank's rigid body membership.
+struct LocalBody {
+    /// (local node, global node) of the members this rank holds (main node included).
+    members: Vec<(u32, u32)>,
+    main_local: Option<u32>,
+    main_global: u32,
+    /// Card MASS + main node's own mass: what the main node carries.
+    main_mass: f64,
+}
+
+/// Every shell of this rank: section index, state, integration points.
+struct Shells {
+    section: Vec<u16>,
+    state: Vec<Shell4State>,
+    sig: Vec<[f64; 5]>,
+    eps_p: Vec<f64>,
+    nip: usize,
+    alive: Vec<bool>,
+    out: Vec<shell4::Shell4Out>,
+}
+
+pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
+    let rank = world.rank();
+    let nranks = world.size();
+    let started = Instant::now();
+    // Rank 0 prepares; a failure there is broadcast so every rank stops together.
+    let prepared: Option<Result<Prepared, String>> = if rank == 0 {
+        Some(prepare(opts, nranks as usize))
+    } else {
+        None
+    };
+    let status: Result<(), String> = match &prepared {
+        Some(Err(e)) => Err(e.clone()),
+        _ => Ok(()),
+    };
+    world
+        .broadcast(if rank == 0 { Some(&status) } else { None })
+        .map_err(RunError::Input)?
+        .map_err(RunError::Input)?;
+    let (g, sds, rbs) = match prepared {
+        Some(Ok((g, s, r))) => (Some(g), Some(s), Some(r)),
+        _ => (None, None, None),
+    };
+    let g: GlobalData = world.broadcast(g.as_ref()).map_err(RunError::Input)?;
+    let mut bodies: Vec<RigidBodyState> = world.broadcast(rbs.as_ref()).map_err(RunError::Input)?;
+    let sd = world.scatter(sds).map_err(RunError::Input)?;
+    let engine = &g.engine;
+    let run_card = engine.run.as_ref().expect("checked on rank 0");
+    let tstop = run_card.tstop;
+
+    // ---- local set-up ---------------------------------------------------
+    let n = sd.node_global.len();
+    let local_of: HashMap<u32, u32> = sd
+        .node_global
+        .iter()
+        .enumerate()
+        .map(|(l, &gl)| (gl, l as u32))
+        .collect();
+    let locals = |nodes: &[u32]| -> Vec<u32> {
+        nodes
+            .iter()
+            .filter_map(|gn| local_of.get(gn).copied())
+            .collect()
+    };
+    let owned: Vec<bool> = (0..n as u32).map(|l| sd.owns(l)).collect();
+    let mut x = sd.x.clone();
+    let mut v = vec![[0.0f64; 3]; n];
+    let mut vr = vec![[0.0f64; 3]; n];
+    let mass = sd.mass.clone();
+    let inertia = sd.inertia.clone();
+    let mut fixed = vec![[false; 6]; n];
+    for c in &g.bcs {
+        for l in locals(&c.nodes) {
+            for k in 0..6 {
+                fixed[l as usize][k] |= c.card.fixed[k];
+            }
+        }
+    }
+    for iv in &g.initial_velocities {
+        for l in locals(&iv.nodes) {
+            if iv.card.rotational {
+                vr[l as usize] = iv.card.v;
+            } else {
+                v[l as usize] = iv.card.v;
+            }
+        }
+    }
+    let mut local_bodies = Vec::new();
+    let mut is_main = vec![false; n];
+    for (b, rb) in g.rigid_bodies.iter().enumerate() {
+        let mut members: Vec<(u32, u32)> = rb
+            .secondary_nodes
+            .iter()
+            .filter_map(|gn| local_of.get(gn).map(|&l| (l, *gn)))
+            .collect();
+        let main_local = local_of.get(&rb.main_node).copied();
+        if let Some(l) = main_local {
+            is_main[l as usize] = true;
+            x[l as usize] = bodies[b].center;
+            v[l as usize] = bodies[b].v;
+        }
+        members.sort_by_key(|m| m.1);
+        local_bodies.push(LocalBody {
+            members,
+            main_local,
+            main_global: rb.main_node,
+            main_mass: rb.card.mass + main_node_mass(&sd, main_local),
+        });
+    }
+    let walls: Vec<(Vec<u32>, &model::RigidWall)> = g
+        .rigid_walls
+        .iter()
+        .map(|w| (locals(&w.secondary_nodes), w))
+        .collect();
+    let mut tied: Vec<Vec<bool>> = walls.iter().map(|(l, _)| vec![false; l.len()]).collect();
+    let impvel: Vec<(Vec<u32>, &model::ImposedMotion)> = g
+        .imposed_velocities
+        .iter()
+        .map(|c| (locals(&c.nodes), c))
+        .collect();
+    let cloads: Vec<(Vec<u32>, &model::ConcentratedLoad)> = g
+        .concentrated_loads
+        .iter()
+        .map(|c| (locals(&c.nodes), c))
+        .collect();
+    let gravity: Vec<(Vec<u32>, &model::Gravity)> =
+        g.gravity.iter().map(|c| (locals(&c.nodes), c)).collect();
+    let fct_index: HashMap<u64, usize> = g
+        .functions
+        .iter()
+        .enumerate()
+        .map(|(i, f)| (f.id, i))
+        .collect();
+
+    // Shells.
+    let le = &sd.elements[0];
+    let nshell = le.global.len();
+    let mut sections: Vec<ShellSection> = Vec::new();
+    let mut part_section: HashMap<u32, u16> = HashMap::new();
+    for &p in &le.part {
+        if let std::collections::hash_map::Entry::Vacant(e) = part_section.entry(p) {
+            let part = &g.parts[p as usize];
+            let prop = g.properties[part.prop.unwrap() as usize]
+                .shell
+                .as_ref()
+                .unwrap();
+            let mat = Material::from_card(&g.materials[part.mat.unwrap() as usize]);
+            sections.push(ShellSection::new(prop, &mat).map_err(RunError::Input)?);
+            e.insert((sections.len() - 1) as u16);
+        }
+    }
+    let nip = sections.iter().map(|s| s.n_ip).max().unwrap_or(1).max(1);
+    let corner_x = |x: &[[f64; 3]], e: usize| -> [[f64; 3]; 4] {
+        [0, 1, 2, 3].map(|k| x[le.nodes[4 * e + k] as usize])
+    };
+    let mut shells = Shells {
+        section: le.part.iter().map(|p| part_section[p]).collect(),
+        state: (0..nshell)
+            .map(|e| {
+                shell4::shell4_init(
+                    &sections[part_section[&le.part[e]] as usize],
+                    &corner_x(&x, e),
+                    le.thick[e],
+                )
+            })
+            .collect(),
+        sig: vec![[0.0; 5]; nshell * nip],
+        eps_p: vec![0.0; nshell * nip],
+        nip,
+        alive: vec![true; nshell],
+        out: vec![shell4::Shell4Out::default(); nshell],
+    };
+    // Contribution slots: 4 per shell, keyed by (kind 0, global element, corner).
+    let slot_meta: Vec<(u32, u64)> = (0..nshell)
+        .flat_map(|e| (0..4).map(move |k| (e, k)))
+        .map(|(e, k)| (le.nodes[4 * e + k], key(0, le.global[e], k)))
+        .collect();
+    let mut plan = AssemblyPlan::build(world, &sd, &slot_meta);
+    let mut contrib = vec![[0.0f64; SLOT]; 4 * nshell];
+    let mut fint = vec![[0.0f64; SLOT]; n];
+    let mut fext = vec![[0.0f64; SLOT]; n];
+
+    // ---- listing ----------------------------------------------------------
+    let mut listing = if rank == 0 {
+        std::fs::create_dir_all(&opts.out_dir).map_err(|e| {
+            RunError::Input(format!(
+                "{}: cannot create the output directory: {e}",
+                opts.out_dir.display()
+            ))
+        })?;
+        let path = opts.out_dir.join(format!("{}.out", g.name));
+        Some(Listing::new(Some(&path)).map_err(|e| {
+            RunError::Input(format!("{}: cannot write the listing: {e}", path.display()))
+        })?)
+    } else {
+        None
+    };
+    if let Some(l) = &mut listing {
+        l.line(&format!(
+            " crashsim {} — {} ({}), {} rank(s), {} thread(s) per rank",
+            env!("CARGO_PKG_VERSION"),
+            g.name,
+            g.title,
+            nranks,
+            rayon::current_num_threads()
+        ));
+        l.line(&format!(
+            " units: {} {} {}   end time {:e}   /DT scale {}",
+            g.units.mass, g.units.length, g.units.time, tstop, engine.dt_scale
+        ));
+        l.line("");
+        l.line(HEADER);
+    }
+    let print_every = engine.print_every.unsigned_abs().max(1);
+
+    // ---- cycle 0: forces and time step at t = 0 -------------------------
+    let mut t = 0.0f64;
+    let mut cycle: u64 = 0;
+    let mut e_int = 0.0f64;
+    let mut w_ext = 0.0f64;
+    let stop = compute_shells(&sections, le, &x, &v, &vr, 0.0, &mut shells, &mut contrib);
+    plan.assemble(world, &contrib, &mut fint);
+    external_forces(&g, &fct_index, &cloads, &gravity, &mass, t, &mut fext);
+    let mut step = global_step(world, &g, &shells, le, engine.dt_scale, stop, cycle, t)?;
+    let mut dt = step.dt;
+    let (ke0, ker0) = kinetic(
+        world,
+        &v,
+        &vr,
+        &mass,
+        &inertia,
+        &owned,
+        &is_main,
+        &bodies,
+        &local_bodies,
+    );
+    let e0 = ke0 + ker0;
+    let emit = |listing: &mut Option<Listing>,
+                cycle: u64,
+                t: f64,
+                dt: f64,
+                step: &Step,
+                ie: f64,
+                ke: f64,
+                ker: f64,
+                w: f64| {
+        if let Some(l) = listing {
+            let err = if e0 + w != 0.0 {
+                100.0 * (ie + ke + ker - e0 - w) / (e0 + w).abs()
+            } else {
+                0.0
+            };
+            l.line(&format_row(&Row {
+                cycle,
+                time: t,
+                dt,
+                what: step.what,
+                id: step.id,
+                error_pct: err,
+                ie,
+                ke,
+                ker,
+                ext_work: w,
+                mas_err: 0.0,
+                total_mass: g.total_mass,
+                mass_added: 0.0,
+            }));
+        }
+    };
+    emit(&mut listing, cycle, t, dt, &step, 0.0, ke0, ker0, 0.0);
+    let mut dt_prev = 0.0f64;
+
+    // ---- the cycle ----------------------------------------------------------
+    let result: Result<(), RunError> = loop {
+        if t >= tstop {
+            break Ok(());
+        }
+        let dt_v = if cycle == 0 {
+            0.5 * dt
+        } else {
+            0.5 * (dt_prev + dt)
+        };
+        // Accelerations and velocities at n+½.
+        for l in 0..n {
+            if is_main[l] {
+                continue;
+            }
+            if mass[l] > 0.0 {
+                for k in 0..3 {
+                    if !fixed[l][k] {
+                        v[l][k] += (fext[l][k] - fint[l][k]) / mass[l] * dt_v;
+                    }
+                }
+            }
+            if inertia[l] > 0.0 {
+                for k in 0..3 {
+                    if !fixed[l][3 + k] {
+                        vr[l][k] += (fext[l][3 + k] - fint[l][3 + k]) / inertia[l] * dt_v;
+                    }
+                }
+            }
+        }
+        // Rigid bodies: resultant of their nodes, gathered in global node order.
+        if !local_bodies.is_empty() {
+            let mine: Vec<Vec<NodeLoad>> = local_bodies
+                .iter()
+                .map(|lb| {
+                    lb.members
+                        .iter()
+                        .filter(|(l, _)| owned[*l as usize])
+                        .map(|&(l, gl)| {
+                            let l = l as usize;
+                            let f = [0, 1, 2].map(|k| fext[l][k] - fint[l][k]);
+                            let m = [0, 1, 2].map(|k| fext[l][3 + k] - fint[l][3 + k]);
+                            NodeLoad {
+                                node: gl,
+                                f,
+                                m,
+                                x: x[l],
+                            }
+                        })
+                        .collect()
+                })
+                .collect();
+            let all = world.allgather(&mine);
+            for (b, lb) in local_bodies.iter().enumerate() {
+                let mut loads: Vec<NodeLoad> =
+                    all.iter().flat_map(|r| r[b].iter().copied()).collect();
+                let c_before = bodies[b].center;
+                bodies[b].advance(&mut loads, [0.0; 3], dt_v, dt);
+                for &(l, _) in &lb.members {
+                    let l = l as usize;
+                    v[l] = bodies[b].velocity_at(x[l], c_before);
+                    if inertia[l] > 0.0 {
+                        vr[l] = bodies[b].omega;
+                    }
+                }
+                if let Some(l) = lb.main_local {
+                    v[l as usize] = bodies[b].v;
+                    vr[l as usize] = bodies[b].omega;
+                }
+                let _ = (lb.main_global, lb.main_mass);
+            }
+        }
+        // Imposed velocities at t + ½Δt.
+        let th = t + 0.5 * dt;
+        for (nodes, c) in &impvel {
+            let card = &c.card;
+            if th < card.tstart || th > card.tstop {
+                continue;
+            }
+            let val = function::scaled(
+                &g.functions[fct_index[&card.fct]],
+                th,
+                card.ascale_x,
+                card.fscale_y,
+            );
+            let d = card.dir.index();
+            for &l in nodes {
+                if d < 3 {
+                    v[l as usize][d] = val;
+                } else {
+                    vr[l as usize][d - 3] = val;
+                }
+            }
+        }
+        // Rigid walls.
+        for (w, (nodes, wall)) in walls.iter().enumerate() {
+            for (i, &l) in nodes.iter().enumerate() {
+                let l = l as usize;
+                let (nv, now_tied, _f) = wall_velocity(
+                    x[l],
+                    v[l],
+                    mass[l],
+                    dt,
+                    wall.point,
+                    wall.normal,
+                    [0.0; 3],
+                    wall.card.slide,
+                    wall.card.fric,
+                    tied[w][i],
+                );
+                v[l] = nv;
+                tied[w][i] = now_tied;
+            }
+        }
+        // Boundary conditions have the last word.
+        for l in 0..n {
+            for k in 0..3 {
+                if fixed[l][k] {
+                    v[l][k] = 0.0;
+                }
+                if fixed[l][3 + k] {
+                    vr[l][k] = 0.0;
+                }
+            }
+        }
+        // External work over the step, with the forces at n.
+        for l in 0..n {
+            if owned[l] {
+                for k in 0..3 {
+                    w_ext += fext[l][k] * v[l][k] * dt_v;
+                    w_ext += fext[l][3 + k] * vr[l][k] * dt_v;
+                }
+            }
+        }
+        // Positions at n+1.
+        for l in 0..n {
+            if is_main[l] {
+                continue;
+            }
+            for k in 0..3 {
+                x[l][k] += dt * v[l][k];
+            }
+        }
+        for (b, lb) in local_bodies.iter().enumerate() {
+            if let Some(l) = lb.main_local {
+                x[l as usize] = bodies[b].center;
+            }
+        }
+        t += dt;
+        cycle += 1;
+        dt_prev = dt;
+        // Non-finite state: name the node.
+        if let Some(l) = (0..n).find(|&l| {
+            !(x[l]
+                .iter()
+                .chain(&v[l])
+                .chain(&vr[l])
+                .all(|c| c.is_finite()))
+        }) {
+            let msg = format!(
+                "node {} has a non-finite position or velocity at cycle {cycle}, time {t:e}",
+                g.node_ids[sd.node_global[l] as usize]
+            );
+            break Err(RunError::Physics(msg));
+        }
+        // Forces at n+1.
+        let stop = compute_shells(&sections, le, &x, &v, &vr, dt, &mut shells, &mut contrib);
+        plan.assemble(world, &contrib, &mut fint);
+        external_forces(&g, &fct_index, &cloads, &gravity, &mass, t, &mut fext);
+        step = match global_step(world, &g, &shells, le, engine.dt_scale, stop, cycle, t) {
+            Ok(s) => s,
+            Err(e) => break Err(e),
+        };
+        dt = step.dt;
+        if engine.dt_min > 0.0 && dt < engine.dt_min {
+            break Err(RunError::Physics(format!(
+                "time step {dt:e} set by {} {} is below the /DT minimum {:e} at cycle {cycle}, time {t:e}",
+                step.what, step.id, engine.dt_min
+            )));
+        }
+        if cycle % print_every == 0 || t >= tstop {
+            let mut ie = [shells.state.iter().map(|s| s.eint + s.ehg).sum::<f64>()];
+            world.sum_f64(&mut ie);
+            e_int = ie[0];
+            let mut w = [w_ext];
+            world.sum_f64(&mut w);
+            let (ke, ker) = kinetic(
+                world,
+                &v,
+                &vr,
+                &mass,
+                &inertia,
+                &owned,
+                &is_main,
+                &bodies,
+                &local_bodies,
+            );
+            emit(&mut listing, cycle, t, dt, &step, e_int, ke, ker, w[0]);
+        }
+    };
+    let elapsed = started.elapsed().as_secs_f64();
+    if let Some(l) = &mut listing {
+        l.line("");
+        match &result {
+            Ok(()) => l.line("     NORMAL TERMINATION"),
+            Err(e) => l.line(&format!("     ERROR TERMINATION: {}", e.message())),
+        }
+        l.line(&format!("     TOTAL NUMBER OF CYCLES  : {cycle:>10}"));
+        l.line(&format!("     ELAPSED TIME            : {elapsed:>10.3} s"));
+        let elems = g.element_ids.iter().map(|e| e.len()).sum::<usize>().max(1);
+        l.line(&format!(
+            "     TIME PER CYCLE          : {:>10.3} µs   ({:.4} µs per element-cycle)",
+            1e6 * elapsed / cycle.max(1) as f64,
+            1e6 * elapsed / (cycle.max(1) as f64 * elems as f64)
+        ));
+        l.flush();
+    }
+    if let Some(path) = &opts.final_state {
+        write_final_state(world, &g, &sd, &owned, &x, &v, &vr, path)?;
+    }
+    let _ = e_int;
+    result
+}
+
+fn main_node_mass(sd: &Subdomain, main_local: Option<u32>) -> f64 {
+    main_local.map(|l| sd.mass[l as usize]).unwrap_or(0.0)
+}
+
+/// Runs every live shell; returns the first stopping problem (global element id, message).
+#[allow(clippy::too_many_arguments)]
+fn compute_shells(
+    sections: &[ShellSection],
+    le: &domain::LocalElements,
+    x: &[[f64; 3]],
+    v: &[[f64; 3]],
+    vr: &[[f64; 3]],
+    dt: f64,
+    shells: &mut Shells,
+    contrib: &mut [[f64; SLOT]],
+) -> Option<(u32, String)> {
+    let nip = shells.nip;
+    contrib
+        .par_chunks_mut(4)
+        .zip(shells.state.par_iter_mut())
+        .zip(shells.sig.par_chunks_mut(nip))
+        .zip(shells.eps_p.par_chunks_mut(nip))
+        .zip(shells.out.par_iter_mut())
+        .zip(shells.alive.par_iter())
+        .enumerate()
+        .for_each(|(e, (((((c, st), sig), eps), out), alive))| {
+            if !*alive {
+                *out = shell4::Shell4Out::default();
+                for s in c.iter_mut() {
+                    *s = [0.0; SLOT];
+                }
+                return;
+            }
+            let nodes = [0, 1, 2, 3].map(|k| le.nodes[4 * e + k] as usize);
+            let sec = &sections[shells.section[e] as usize];
+            let xe = nodes.map(|i| x[i]);
+            let ve = nodes.map(|i| v[i]);
+            let vre = nodes.map(|i| vr[i]);
+            let o = shell4::shell4_step(
+                sec,
+                &xe,
+                &ve,
+                &vre,
+                dt,
+                st,
+                &mut sig[..sec.n_ip.max(1)],
+                &mut eps[..sec.n_ip.max(1)],
+            );
+            for k in 0..4 {
+                c[k] = [
+                    o.f[k][0], o.f[k][1], o.f[k][2], o.m[k][0], o.m[k][1], o.m[k][2],
+                ];
+            }
+            *out = o;
+        });
+    // Deletion of failed elements (their nodes keep their mass).
+    let mut problem = None;
+    for e in 0..shells.alive.len() {
+        if !shells.alive[e] {
+            continue;
+        }
+        let o = &shells.out[e];
+        if o.bad_area && problem.is_none() {
+            problem = Some((
+                le.global[e],
+                "has a zero or negative area (inverted element)".to_string(),
+            ));
+        }
+        if o.failed {
+            shells.alive[e] = false;
+        }
+    }
+    let _ = NO_NODE;
+    problem
+}
+
+/// The global time step and what set it.
+struct Step {
+    dt: f64,
+    what: &'static str,
+    id: u64,
+}
+
+/// Global minimum of the scaled element time steps (ties: smallest id), and a
+/// collective stop if any rank met a problem.
+#[allow(clippy::too_many_arguments)]
+fn global_step(
+    world: &World,
+    g: &GlobalData,
+    shells: &Shells,
+    le: &domain::LocalElements,
+    scale: f64,
+    problem: Option<(u32, String)>,
+    cycle: u64,
+    t: f64,
+) -> Result<Step, RunError> {
+    let mut best = (f64::INFINITY, u64::MAX);
+    for e in 0..shells.alive.len() {
+        if shells.alive[e] {
+            let id = g.element_ids[0][le.global[e] as usize];
+            let d = shells.out[e].dt;
+            if d < best.0 || (d == best.0 && id < best.1) {
+                best = (d, id);
+            }
+        }
+    }
+    let prob = problem.map(|(ge, m)| {
+        format!(
+            "shell {} {m} at cycle {cycle}, time {t:e}",
+            g.element_ids[0][ge as usize]
+        )
+    });
+    let all: Vec<(f64, u64, Option<String>)> = world.allgather(&(best.0, best.1, prob));
+    if let Some(m) = all.iter().find_map(|(_, _, p)| p.clone()) {
+        return Err(RunError::Physics(m));
+    }
+    let (d, id) = all
+        .iter()
+        .fold((f64::INFINITY, u64::MAX), |acc, &(d, id, _)| {
+            if d < acc.0 || (d == acc.0 && id < acc.1) {
+                (d, id)
+            } else {
+                acc
+            }
+        });
+    if !d.is_finite() {
+        return Err(RunError::Physics(format!(
+            "no element left to set the time step at cycle {cycle}, time {t:e}"
+        )));
+    }
+    Ok(Step {
+        dt: scale * d,
+        what: "SHELL",
+        id,
+    })
+}
+
+/// Concentrated loads and gravity at time t, per local node (force, moment).
+fn external_forces(
+    g: &GlobalData,
+    fct: &HashMap<u64, usize>,
+    cloads: &[(Vec<u32>, &model::ConcentratedLoad)],
+    gravity: &[(Vec<u32>, &model::Gravity)],
+    mass: &[f64],
+    t: f64,
+    fext: &mut [[f64; SLOT]],
+) {
+    for f in fext.iter_mut() {
+        *f = [0.0; SLOT];
+    }
+    for (nodes, c) in cloads {
+        let val = function::scaled(
+            &g.functions[fct[&c.card.fct]],
+            t,
+            c.card.ascale_x,
+            c.card.fscale_y,
+        );
+        let d = c.card.dir.index();
+        for &l in nodes {
+            fext[l as usize][d] += val;
+        }
+    }
+    for (nodes, c) in gravity {
+        let acc = if c.card.fct == 0 {
+            c.card.fscale_y
+        } else {
+            function::scaled(
+                &g.functions[fct[&c.card.fct]],
+                t,
+                c.card.ascale_x,
+                c.card.fscale_y,
+            )
+        };
+        let d = match c.card.dir {
+            Dof::X | Dof::Xx => 0,
+            Dof::Y | Dof::Yy => 1,
+            Dof::Z | Dof::Zz => 2,
+        };
+        for &l in nodes {
+            fext[l as usize][d] += mass[l as usize] * acc;
+        }
+    }
+}
+
+/// Translational and rotational kinetic energy (owned nodes, rigid-body main masses once).
+#[allow(clippy::too_many_arguments)]
+fn kinetic(
+    world: &World,
+    v: &[[f64; 3]],
+    vr: &[[f64; 3]],
+    mass: &[f64],
+    inertia: &[f64],
+    owned: &[bool],
+    is_main: &[bool],
+    bodies: &[RigidBodyState],
+    local: &[LocalBody],
+) -> (f64, f64) {
+    let mut e = [0.0f64; 2];
+    for l in 0..v.len() {
+        if owned[l] && !is_main[l] {
+            e[0] += 0.5 * mass[l] * (v[l][0] * v[l][0] + v[l][1] * v[l][1] + v[l][2] * v[l][2]);
+            e[1] += 0.5
+                * inertia[l]
+                * (vr[l][0] * vr[l][0] + vr[l][1] * vr[l][1] + vr[l][2] * vr[l][2]);
+        }
+    }
+    for (b, lb) in local.iter().enumerate() {
+        if lb.main_local.is_some() {
+            let vb = bodies[b].v;
+            e[0] += 0.5 * lb.main_mass * (vb[0] * vb[0] + vb[1] * vb[1] + vb[2] * vb[2]);
+        }
+    }
+    world.sum_f64(&mut e);
+    (e[0], e[1])
+}
+
+/// One CSV row per node in global id order: id, x, y, z, vx, vy, vz, vrx, vry, vrz (17 significant digits).
+#[allow(clippy::too_many_arguments)]
+fn write_final_state(
+    world: &World,
+    g: &GlobalData,
+    sd: &Subdomain,
+    owned: &[bool],
+    x: &[[f64; 3]],
+    v: &[[f64; 3]],
+    vr: &[[f64; 3]],
+    path: &Path,
+) -> Result<(), RunError> {
+    let mine: Vec<(u32, [f64; 9])> = (0..x.len())
+        .filter(|&l| owned[l])
+        .map(|l| {
+            (
+                sd.node_global[l],
+                [
+                    x[l][0], x[l][1], x[l][2], v[l][0], v[l][1], v[l][2], vr[l][0], vr[l][1],
+                    vr[l][2],
+                ],
+            )
+        })
+        .collect();
+    let all = world.allgather(&mine);
+    if world.rank() != 0 {
+        return Ok(());
+    }
+    let mut rows: Vec<(u32, [f64; 9])> = all.into_iter().flatten().collect();
+    rows.sort_by_key(|r| r.0);
+    let mut s = String::from("id,x,y,z,vx,vy,vz,vrx,vry,vrz\n");
+    for (gn, vals) in rows {
+        s.push_str(&g.node_ids[gn as usize].to_string());
+        for val in vals {
+            s.push_str(&format!(",{val:.16e}"));
+        }
+        s.push('\n');
+    }
+    std::fs::write(path, s).map_err(|e| {
+        RunError::Input(format!(
+            "{}: cannot write the final state: {e}",
+            path.display()
+        ))
+    })
+}
