@@ -469,6 +469,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
     };
     emit(&mut listing, cycle, t, dt, &step, 0.0, ke0, ker0, 0.0);
     let mut dt_prev = 0.0f64;
+    let loop_started = Instant::now();
 
     // ---- the cycle ----------------------------------------------------------
     let result: Result<(), RunError> = loop {
@@ -671,6 +672,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
         }
     };
     let elapsed = started.elapsed().as_secs_f64();
+    let looped = loop_started.elapsed().as_secs_f64();
     if let Some(l) = &mut listing {
         l.line("");
         match &result {
