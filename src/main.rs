@@ -65,6 +65,12 @@ enum Command {
         /// Write the final nodal state (global id order, 17 significant digits) to this CSV file
         #[arg(long)]
         final_state: Option<PathBuf>,
+        /// Write the final element state (mean membrane stress, plastic strain, thickness, energy) to this CSV file
+        #[arg(long)]
+        final_elements: Option<PathBuf>,
+        /// Write the /TH/NODE nodes' displacements every /TFILE period to this CSV file
+        #[arg(long)]
+        history: Option<PathBuf>,
     },
     /// Under mpirun: rank 0 reads and partitions the deck, scatters one
     /// subdomain per rank; every rank reports what it holds and checks its
@@ -161,6 +167,8 @@ fn main() -> ExitCode {
             deck,
             out,
             final_state,
+            final_elements,
+            history,
         } => {
             let Some(world) = World::init() else {
                 return input_error("MPI could not be initialised");
@@ -170,6 +178,8 @@ fn main() -> ExitCode {
                 engine: deck.engine,
                 out_dir: out,
                 final_state,
+                final_elements,
+                history,
                 strict: deck.strict,
             };
             match crashsim::solver::run(&world, &opts) {

@@ -32,6 +32,8 @@ pub struct GlobalData {
     pub element_ids: Vec<Vec<Id>>,
     pub total_mass: f64,
     pub added_mass: f64,
+    /// Global indices of the /TH/NODE nodes, in the order the deck lists them.
+    pub th_nodes: Vec<u32>,
 }
 
 impl GlobalData {
@@ -57,6 +59,7 @@ impl GlobalData {
             element_ids: m.elements.iter().map(|s| s.ids.clone()).collect(),
             total_mass: m.mass.total,
             added_mass: m.mass.added_total,
+            th_nodes: Vec::new(),
         }
     }
 }

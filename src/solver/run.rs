@@ -22,6 +22,10 @@ pub struct RunOptions {
     pub engine: Option<PathBuf>,
     pub out_dir: PathBuf,
     pub final_state: Option<PathBuf>,
+    /// Per-element final state (stress, plastic strain, thickness, energy).
+    pub final_elements: Option<PathBuf>,
+    /// Displacements of the /TH/NODE nodes every /TFILE period.
+    pub history: Option<PathBuf>,
     pub strict: bool,
 }
 
@@ -84,7 +88,19 @@ fn prepare(opts: &RunOptions, nranks: usize) -> Result<Prepared, String> {
         domain::partition(&m, nranks).map_err(|e| format!("{starter}: cannot partition: {e}"))?;
     let sds = domain::split(&m, &p.part, nranks);
     let rbs = initial_rigid_bodies(&m);
-    Ok((GlobalData::from_model(&m, eng), sds, rbs))
+    let mut g = GlobalData::from_model(&m, eng);
+    for th in m.time_histories.iter().filter(|t| t.kind == "NODE") {
+        for &id in &th.objects {
+            let i = m.nodes.ids.binary_search(&id).map_err(|_| {
+                format!(
+                    "{}: /TH/NODE/{}, field NODid: node {id} is not defined in the deck",
+                    th.loc, th.id
+                )
+            })?;
+            g.th_nodes.push(i as u32);
+        }
+    }
+    Ok((g, sds, rbs))
 }
 
 /// The engine refuses what it does not compute yet, by name — never a silent substitute.
@@ -469,6 +485,37 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
     };
     emit(&mut listing, cycle, t, dt, &step, 0.0, ke0, ker0, 0.0);
     let mut dt_prev = 0.0f64;
+    let th_period = engine.th_period.unwrap_or(f64::INFINITY);
+    let th_local: Vec<(usize, u32)> = g
+        .th_nodes
+        .iter()
+        .enumerate()
+        .filter_map(|(i, gn)| {
+            local_of
+                .get(gn)
+                .filter(|&&l| owned[l as usize])
+                .map(|&l| (i, l))
+        })
+        .collect();
+    let mut history: Vec<(f64, Vec<[f64; 3]>)> = Vec::new();
+    let mut next_th = 0.0f64;
+    let sample = |t: f64, x: &[[f64; 3]], history: &mut Vec<(f64, Vec<[f64; 3]>)>| {
+        if opts.history.is_none() || g.th_nodes.is_empty() {
+            return;
+        }
+        let mine: Vec<(usize, [f64; 3])> = th_local
+            .iter()
+            .map(|&(i, l)| (i, [0, 1, 2].map(|k| x[l as usize][k] - sd.x[l as usize][k])))
+            .collect();
+        let all = world.allgather(&mine);
+        let mut d = vec![[0.0; 3]; g.th_nodes.len()];
+        for (i, u) in all.into_iter().flatten() {
+            d[i] = u;
+        }
+        history.push((t, d));
+    };
+    sample(0.0, &x, &mut history);
+    next_th += th_period;
     let loop_started = Instant::now();
 
     // ---- the cycle ----------------------------------------------------------
@@ -645,6 +692,12 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
             Err(e) => break Err(e),
         };
         dt = step.dt;
+        if t >= next_th {
+            sample(t, &x, &mut history);
+            while next_th <= t {
+                next_th += th_period;
+            }
+        }
         if engine.dt_min > 0.0 && dt < engine.dt_min {
             break Err(RunError::Physics(format!(
                 "time step {dt:e} set by {} {} is below the /DT minimum {:e} at cycle {cycle}, time {t:e}",
@@ -680,17 +733,38 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
             Err(e) => l.line(&format!("     ERROR TERMINATION: {}", e.message())),
         }
         l.line(&format!("     TOTAL NUMBER OF CYCLES  : {cycle:>10}"));
-        l.line(&format!("     ELAPSED TIME            : {elapsed:>10.3} s"));
+        l.line(&format!("     ELAPSED TIME            : {elapsed:>10.3} s   (set-up {:.3} s, cycles {looped:.3} s)", elapsed - looped));
         let elems = g.element_ids.iter().map(|e| e.len()).sum::<usize>().max(1);
         l.line(&format!(
             "     TIME PER CYCLE          : {:>10.3} µs   ({:.4} µs per element-cycle)",
-            1e6 * elapsed / cycle.max(1) as f64,
-            1e6 * elapsed / (cycle.max(1) as f64 * elems as f64)
+            1e6 * looped / cycle.max(1) as f64,
+            1e6 * looped / (cycle.max(1) as f64 * elems as f64)
         ));
         l.flush();
     }
     if let Some(path) = &opts.final_state {
         write_final_state(world, &g, &sd, &owned, &x, &v, &vr, path)?;
+    }
+    if let Some(path) = &opts.final_elements {
+        write_final_elements(world, &g, le, &shells, &sections, path)?;
+    }
+    if let (Some(path), 0) = (&opts.history, rank) {
+        let mut s = String::from("time");
+        for &gn in &g.th_nodes {
+            let id = g.node_ids[gn as usize];
+            s.push_str(&format!(",dx_{id},dy_{id},dz_{id}"));
+        }
+        s.push('\n');
+        for (t, d) in &history {
+            s.push_str(&format!("{t:.16e}"));
+            for u in d {
+                s.push_str(&format!(",{:.16e},{:.16e},{:.16e}", u[0], u[1], u[2]));
+            }
+            s.push('\n');
+        }
+        std::fs::write(path, s).map_err(|e| {
+            RunError::Input(format!("{}: cannot write the history: {e}", path.display()))
+        })?;
     }
     let _ = e_int;
     result
@@ -953,6 +1027,63 @@ fn write_final_state(
     std::fs::write(path, s).map_err(|e| {
         RunError::Input(format!(
             "{}: cannot write the final state: {e}",
+            path.display()
+        ))
+    })
+}
+
+/// One CSV row per element in global order: kind, id, mean membrane stress
+/// over the integration points (local frame: sxx, syy, sxy), largest plastic
+/// strain, thickness, internal energy (with hourglass), deleted flag.
+fn write_final_elements(
+    world: &World,
+    g: &GlobalData,
+    le: &domain::LocalElements,
+    shells: &Shells,
+    sections: &[ShellSection],
+    path: &Path,
+) -> Result<(), RunError> {
+    let nip = shells.nip;
+    let mine: Vec<(u32, [f64; 7])> = (0..le.global.len())
+        .map(|e| {
+            let n = sections[shells.section[e] as usize].n_ip.max(1);
+            let sig = &shells.sig[e * nip..e * nip + n];
+            let mean = |k: usize| sig.iter().map(|s| s[k]).sum::<f64>() / n as f64;
+            let epsp = shells.eps_p[e * nip..e * nip + n]
+                .iter()
+                .fold(0.0f64, |a, &b| a.max(b));
+            let st = &shells.state[e];
+            (
+                le.global[e],
+                [
+                    mean(0),
+                    mean(1),
+                    mean(2),
+                    epsp,
+                    st.thick,
+                    st.eint + st.ehg,
+                    if shells.alive[e] { 0.0 } else { 1.0 },
+                ],
+            )
+        })
+        .collect();
+    let all = world.allgather(&mine);
+    if world.rank() != 0 {
+        return Ok(());
+    }
+    let mut rows: Vec<(u32, [f64; 7])> = all.into_iter().flatten().collect();
+    rows.sort_by_key(|r| r.0);
+    let mut s = String::from("kind,id,sxx,syy,sxy,eps_p,thick,eint,deleted\n");
+    for (ge, v) in rows {
+        s.push_str(&format!("SHELL,{}", g.element_ids[0][ge as usize]));
+        for val in &v[..6] {
+            s.push_str(&format!(",{val:.16e}"));
+        }
+        s.push_str(&format!(",{}\n", v[6] as u8));
+    }
+    std::fs::write(path, s).map_err(|e| {
+        RunError::Input(format!(
+            "{}: cannot write the element state: {e}",
             path.display()
         ))
     })
