@@ -112,6 +112,33 @@ pub struct ShellSection {
     pub w_mem: [f64; MAX_IP],
     /// Bending weights (M = t²Σ w_bend σ_k).
     pub w_bend: [f64; MAX_IP],
+    /// Constants of the step, derived once from the fields above.
+    k: Consts,
+}
+
+/// Per-section constants used every step (material moduli, wave speed, hourglass factors).
+#[derive(Clone, Copy, Debug, Default, Serialize, Deserialize)]
+struct Consts {
+    e: f64,
+    nu: f64,
+    /// Sound speed √(E/ρ₀).
+    c: f64,
+    /// Transverse shear modulus G·Ashear.
+    gs: f64,
+    /// ¼ρ₀c.
+    rc: f64,
+    /// Ashear/(3(1+ν)).
+    shfpr3: f64,
+    /// √(h_m/2), √(h_f·Ashear/(6(1+ν))), √(h_r/2)/(8√3) (Ishell 1, 2, 4).
+    vm: f64,
+    vf: f64,
+    vr: f64,
+    /// √h_r/(8√3) (Ishell 3).
+    vr3: f64,
+    /// The material has a strain-rate term.
+    rate: bool,
+    /// The material has a thermal softening term (adiabatic heating).
+    thermal: bool,
 }
 
 /// Through-thickness rule: equally spaced points, trapezoidal membrane weights,
@@ -185,7 +212,31 @@ impl ShellSection {
             zeta,
             w_mem,
             w_bend,
-        })
+            k: Consts::default(),
+        }
+        .with_consts())
+    }
+
+    fn with_consts(mut self) -> ShellSection {
+        const INV_8_SQRT3: f64 = 0.072_168_783_648_703_22; // 1/(8√3)
+        let m = &self.material;
+        let (e, nu) = (m.young(), m.poisson());
+        let c = m.sound_speed();
+        self.k = Consts {
+            e,
+            nu,
+            c,
+            gs: m.shear_modulus() * self.ashear,
+            rc: 0.25 * m.rho_ref() * c,
+            shfpr3: self.ashear / (3.0 * (1.0 + nu)),
+            vm: (0.5 * self.hm).sqrt(),
+            vf: (self.hf * self.ashear / (6.0 * (1.0 + nu))).sqrt(),
+            vr: (0.5 * self.hr).sqrt() * INV_8_SQRT3,
+            vr3: self.hr.sqrt() * INV_8_SQRT3,
+            rate: m.is_rate_dependent(),
+            thermal: m.is_thermal(),
+        };
+        self
     }
 }
 
@@ -236,15 +287,15 @@ pub struct Shell4Out {
     pub bad_area: bool,
 }
 
-#[inline]
+#[inline(always)]
 fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
     [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
 }
-#[inline]
+#[inline(always)]
 fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
-#[inline]
+#[inline(always)]
 fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
     [
         a[1] * b[2] - a[2] * b[1],
@@ -252,29 +303,48 @@ fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
         a[0] * b[1] - a[1] * b[0],
     ]
 }
-#[inline]
+#[inline(always)]
 fn scale(a: [f64; 3], s: f64) -> [f64; 3] {
     [a[0] * s, a[1] * s, a[2] * s]
 }
-#[inline]
-fn dot4(a: &[f64; 4], b: &[f64; 4]) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3]
+/// a·p + b·q + c·r for vectors p, q, r.
+#[inline(always)]
+fn comb3(a: f64, p: [f64; 3], b: f64, q: [f64; 3], c: f64, r: [f64; 3]) -> [f64; 3] {
+    [
+        a * p[0] + b * q[0] + c * r[0],
+        a * p[1] + b * q[1] + c * r[1],
+        a * p[2] + b * q[2] + c * r[2],
+    ]
+}
+/// Σ_I w_I u_I for four vectors.
+#[inline(always)]
+fn wsum(w: &[f64; 4], u: &[[f64; 3]; 4]) -> [f64; 3] {
+    [
+        w[0] * u[0][0] + w[1] * u[1][0] + w[2] * u[2][0] + w[3] * u[3][0],
+        w[0] * u[0][1] + w[1] * u[1][1] + w[2] * u[2][1] + w[3] * u[3][1],
+        w[0] * u[0][2] + w[1] * u[1][2] + w[2] * u[2][2] + w[3] * u[3][2],
+    ]
 }
 
 /// Corotational geometry of one configuration.
+///
+/// With d13 = x3 − x1, d24 = x4 − x2, h = x1 − x2 + x3 − x4 and the centroid c,
+/// the corners are x1 − c = ¼(h − 2d13), x2 − c = ¼(−h − 2d24),
+/// x3 − c = ¼(h + 2d13), x4 − c = ¼(−h + 2d24); the diagonals are in the plane
+/// (e3 ⟂ d13, d24), so the warp is z_I = ¼(e3·h)Γ_I.
 #[derive(Clone, Copy, Debug)]
 struct Geom {
     /// Rows e1, e2, e3.
     e: [[f64; 3]; 3],
-    /// Local coordinates relative to the centroid.
+    /// Local in-plane coordinates relative to the centroid.
     x: [f64; 4],
     y: [f64; 4],
     area: f64,
     bx: [f64; 4],
     by: [f64; 4],
-    /// Orthogonal hourglass vector γ.
+    /// Orthogonal hourglass vector γ = Γ − (Γ·x)b_x − (Γ·y)b_y.
     gam: [f64; 4],
-    /// γ·z (warping coupling of the membrane hourglass rates).
+    /// γ·z = e3·h (warping coupling of the membrane hourglass rates; γ·Γ = 4).
     gz: f64,
 }
 
@@ -299,46 +369,39 @@ impl Geom {
         let s = [g1[0] + bt[0], g1[1] + bt[1], g1[2] + bt[2]];
         let e1 = scale(s, 1.0 / dot(s, s).sqrt());
         let e2 = cross(e3, e1);
-        let c = [
-            0.25 * (p[0][0] + p[1][0] + p[2][0] + p[3][0]),
-            0.25 * (p[0][1] + p[1][1] + p[2][1] + p[3][1]),
-            0.25 * (p[0][2] + p[1][2] + p[2][2] + p[3][2]),
+        let h = [
+            p[0][0] - p[1][0] + p[2][0] - p[3][0],
+            p[0][1] - p[1][1] + p[2][1] - p[3][1],
+            p[0][2] - p[1][2] + p[2][2] - p[3][2],
         ];
-        let mut x = [0.0; 4];
-        let mut y = [0.0; 4];
-        let mut z = [0.0; 4];
-        for i in 0..4 {
-            let r = sub(p[i], c);
-            x[i] = dot(e1, r);
-            y[i] = dot(e2, r);
-            z[i] = dot(e3, r);
-        }
-        let area = 0.5 * ((x[2] - x[0]) * (y[3] - y[1]) - (x[3] - x[1]) * (y[2] - y[0]));
+        let (x13, x24, xh) = (dot(e1, d13), dot(e1, d24), dot(e1, h));
+        let (y13, y24, yh) = (dot(e2, d13), dot(e2, d24), dot(e2, h));
+        let area = 0.5 * (x13 * y24 - x24 * y13);
         if !(area > 0.0) {
             return None;
         }
+        let x = [
+            0.25 * (xh - 2.0 * x13),
+            -0.25 * (xh + 2.0 * x24),
+            0.25 * (xh + 2.0 * x13),
+            0.25 * (2.0 * x24 - xh),
+        ];
+        let y = [
+            0.25 * (yh - 2.0 * y13),
+            -0.25 * (yh + 2.0 * y24),
+            0.25 * (yh + 2.0 * y13),
+            0.25 * (2.0 * y24 - yh),
+        ];
         let r2a = 0.5 / area;
-        let bx = [
-            (y[1] - y[3]) * r2a,
-            (y[2] - y[0]) * r2a,
-            (y[3] - y[1]) * r2a,
-            (y[0] - y[2]) * r2a,
-        ];
-        let by = [
-            (x[3] - x[1]) * r2a,
-            (x[0] - x[2]) * r2a,
-            (x[1] - x[3]) * r2a,
-            (x[2] - x[0]) * r2a,
-        ];
-        let hx = dot4(&GAMMA, &x);
-        let hy = dot4(&GAMMA, &y);
+        let bx = [-y24 * r2a, y13 * r2a, y24 * r2a, -y13 * r2a];
+        let by = [x24 * r2a, -x13 * r2a, -x24 * r2a, x13 * r2a];
+        // Γ·x = xh, Γ·y = yh.
         let gam = [
-            GAMMA[0] - hx * bx[0] - hy * by[0],
-            GAMMA[1] - hx * bx[1] - hy * by[1],
-            GAMMA[2] - hx * bx[2] - hy * by[2],
-            GAMMA[3] - hx * bx[3] - hy * by[3],
+            1.0 - xh * bx[0] - yh * by[0],
+            -1.0 - xh * bx[1] - yh * by[1],
+            1.0 - xh * bx[2] - yh * by[2],
+            -1.0 - xh * bx[3] - yh * by[3],
         ];
-        let gz = dot4(&gam, &z);
         Some(Geom {
             e: [e1, e2, e3],
             x,
@@ -347,29 +410,14 @@ impl Geom {
             bx,
             by,
             gam,
-            gz,
+            gz: dot(e3, h),
         })
-    }
-
-    #[inline]
-    fn to_local(&self, v: [f64; 3]) -> [f64; 3] {
-        [dot(self.e[0], v), dot(self.e[1], v), dot(self.e[2], v)]
-    }
-
-    #[inline]
-    fn to_global(&self, l: [f64; 3]) -> [f64; 3] {
-        let e = &self.e;
-        [
-            e[0][0] * l[0] + e[1][0] * l[1] + e[2][0] * l[2],
-            e[0][1] * l[0] + e[1][1] * l[1] + e[2][1] * l[2],
-            e[0][2] * l[0] + e[1][2] * l[1] + e[2][2] * l[2],
-        ]
     }
 }
 
 /// Characteristic length of the reference engine's shell time step (see the module doc).
 #[inline]
-fn char_length(sec: &ShellSection, g: &Geom) -> f64 {
+fn char_length(sec: &ShellSection, g: &Geom, tri: bool) -> f64 {
     let d2 = |i: usize, j: usize| {
         let dx = g.x[j] - g.x[i];
         let dy = g.y[j] - g.y[i];
@@ -378,7 +426,7 @@ fn char_length(sec: &ShellSection, g: &Geom) -> f64 {
     let (l12, l23, l34, l41) = (d2(0, 1), d2(1, 2), d2(2, 3), d2(3, 0));
     let (d13, d24) = (d2(0, 2), d2(1, 3));
     let mut lmin = l12.min(l23).min(l41);
-    if l34 != 0.0 {
+    if !tri {
         lmin = lmin.min(l34).min(d13).min(d24);
     }
     let dyn2 = g.area * g.area / d13.max(d24).max(1e-300);
@@ -423,6 +471,7 @@ pub fn shell4_resultants(
     }
     (nr, mr, q)
 }
+
 /// Rotation (cos, sin) applied to plane tensors and vectors.
 #[derive(Clone, Copy, Debug)]
 struct Rot {
@@ -432,7 +481,7 @@ struct Rot {
 
 impl Rot {
     /// The rotation by ψ with tan(ψ/2) = p.
-    #[inline]
+    #[inline(always)]
     fn cayley(p: f64) -> Rot {
         let d = 1.0 / (1.0 + p * p);
         Rot {
@@ -442,7 +491,7 @@ impl Rot {
     }
     /// Components (xx, yy, xy) of the symmetric tensor turned by the angle:
     /// R a Rᵀ with R = [[c, −s], [s, c]].
-    #[inline]
+    #[inline(always)]
     fn stress(self, a: [f64; 3]) -> [f64; 3] {
         let (c, s) = (self.c, self.s);
         let (cc, ss, cs) = (c * c, s * s, c * s);
@@ -453,13 +502,13 @@ impl Rot {
         ]
     }
     /// The same for a strain-like tensor given with its engineering shear (xx, yy, 2xy).
-    #[inline]
+    #[inline(always)]
     fn strain(self, a: [f64; 3]) -> [f64; 3] {
         let r = self.stress([a[0], a[1], 0.5 * a[2]]);
         [r[0], r[1], 2.0 * r[2]]
     }
     /// Components of the in-plane vector turned by the angle.
-    #[inline]
+    #[inline(always)]
     fn vector(self, x: f64, y: f64) -> (f64, f64) {
         (self.c * x - self.s * y, self.s * x + self.c * y)
     }
@@ -480,7 +529,11 @@ impl Rot {
 /// vector of the measured frame turn from x^{n+½} to x^{n+1}, doubled); the
 /// mid-step strain increments are turned by ψ/2. The stress rate is thus the
 /// Jaumann rate whatever the local frame (/SHFRA V4 or V5 alike), and a
-/// prestressed element spinning rigidly about any axis keeps its stress.
+/// prestressed element spinning rigidly keeps its stress.
+///
+/// The local velocity sums are formed in the global frame (Σ b_I v_I, then
+/// projected on the frame vectors), and the corner forces are assembled
+/// directly in the global frame.
 #[allow(clippy::too_many_arguments)]
 pub fn shell4_step(
     sec: &ShellSection,
@@ -501,17 +554,17 @@ pub fn shell4_step(
         return out;
     }
     let n_ip = sec.n_ip;
-    debug_assert!(sig.len() >= n_ip && eps_p.len() >= n_ip);
+    let sig = &mut sig[..n_ip];
+    let eps_p = &mut eps_p[..n_ip];
     let mat = &sec.material;
-    let (e_mod, nu, g_mod) = (mat.young(), mat.poisson(), mat.shear_modulus());
-    let c = mat.sound_speed();
+    let kc = &sec.k;
 
     // ---- geometry at x^{n+1} (forces) and x^{n+1/2} (rates) ------------------
     let Some(ge) = Geom::new(x) else {
         out.bad_area = true;
         return out;
     };
-    out.dt = char_length(sec, &ge) / c;
+    out.dt = char_length(sec, &ge, st.tri) / kc.c;
     let gm = if dt > 0.0 {
         let mut xm = *x;
         for i in 0..4 {
@@ -533,31 +586,30 @@ pub fn shell4_step(
         out.bad_area = true;
         return out;
     }
+    let orth = sec.ishell != 2;
+    let hourglass = !st.tri;
 
-    // ---- local velocities and generalized strain rates (mid-step frame) ------
-    let mut vx = [0.0; 4];
-    let mut vy = [0.0; 4];
-    let mut vz = [0.0; 4];
-    let mut wx = [0.0; 4];
-    let mut wy = [0.0; 4];
-    for i in 0..4 {
-        let l = gm.to_local(v[i]);
-        vx[i] = l[0];
-        vy[i] = l[1];
-        vz[i] = l[2];
-        let r = gm.to_local(vr[i]);
-        wx[i] = r[0];
-        wy[i] = r[1];
-    }
-    let (bx, by) = (&gm.bx, &gm.by);
-    let bxvy = dot4(bx, &vy);
-    let byvx = dot4(by, &vx);
-    let d_m = [dot4(bx, &vx), dot4(by, &vy), byvx + bxvy];
-    let d_k = [dot4(bx, &wy), -dot4(by, &wx), dot4(by, &wy) - dot4(bx, &wx)];
-    let bxvz = dot4(bx, &vz);
-    let byvz = dot4(by, &vz);
-    let gxz = bxvz + 0.25 * (wy[0] + wy[1] + wy[2] + wy[3]);
-    let gyz = byvz - 0.25 * (wx[0] + wx[1] + wx[2] + wx[3]);
+    // ---- generalized strain rates (mid-step frame) ---------------------------
+    let [m1, m2, m3] = gm.e;
+    let vbx = wsum(&gm.bx, v); // Σ b_x,I v_I
+    let vby = wsum(&gm.by, v);
+    let wbx = wsum(&gm.bx, vr);
+    let wby = wsum(&gm.by, vr);
+    let wbar = scale(
+        [
+            vr[0][0] + vr[1][0] + vr[2][0] + vr[3][0],
+            vr[0][1] + vr[1][1] + vr[2][1] + vr[3][1],
+            vr[0][2] + vr[1][2] + vr[2][2] + vr[3][2],
+        ],
+        0.25,
+    );
+    let (bxvy, byvx) = (dot(m2, vbx), dot(m1, vby));
+    let d_m = [dot(m1, vbx), dot(m2, vby), byvx + bxvy];
+    let d_k = [dot(m2, wbx), -dot(m1, wby), dot(m2, wby) - dot(m1, wbx)];
+    let bxvz = dot(m3, vbx);
+    let byvz = dot(m3, vby);
+    let gxz = bxvz + dot(m2, wbar);
+    let gyz = byvz - dot(m1, wbar);
 
     // ---- rotations: material spin minus frame spin ----------------------------
     let (rot_old, rot_inc) = if dt > 0.0 {
@@ -585,7 +637,7 @@ pub fn shell4_step(
     let (gxz, gyz) = rot_inc.vector(gxz, gyz);
 
     let t = st.thick;
-    if dt > 0.0 {
+    if dt > 0.0 && kc.rate {
         let (a, b, g) = (d_m[0], d_m[1], d_m[2]);
         let em = a * a + b * b + a * b + 0.25 * g * g;
         let (a, b, g) = (d_k[0], d_k[1], d_k[2]);
@@ -595,106 +647,109 @@ pub fn shell4_step(
     }
 
     // ---- stress update at the points ------------------------------------------
-    let temp = mat.temperature(st.eint / (gm.area * t));
+    let temp = if kc.thermal {
+        mat.temperature(st.eint / (gm.area * t))
+    } else {
+        mat.reference_temperature()
+    };
     let law = mat.at(st.eps_dot, temp);
-    let gs = g_mod * sec.ashear;
+    let gs = kc.gs;
     let (dgzx, dgyz) = (gxz * dt, gyz * dt);
-    // Σ_k w (σ_old + σ_new): membrane, bending and transverse shear parts, for
-    // the work of the resultants A(N̄:Δε + M̄:Δκ + Q̄·Δγ) (conjugate to the forces).
-    let mut sn = [0.0; 3];
-    let mut sm = [0.0; 3];
-    let mut sq = [0.0; 2];
+    // New and old (turned) resultants per unit thickness: Σ w_N σ, Σ w_M σ, Σ w_N τ.
+    let mut nr = [0.0; 3];
+    let mut mr = [0.0; 3];
+    let mut qr = [0.0; 2];
+    let mut no = [0.0; 3];
+    let mut mo = [0.0; 3];
+    let mut qo = [0.0; 2];
     let mut dwp = 0.0;
     let mut dezz = 0.0;
     let mut nfailed = 0;
-    if dt > 0.0 {
-        for k in 0..n_ip {
+    for (k, (s, ep)) in sig.iter_mut().zip(eps_p.iter_mut()).enumerate() {
+        let (wm, wb) = (sec.w_mem[k], sec.w_bend[k]);
+        if dt > 0.0 {
             let z = sec.zeta[k] * t;
             let d = [
                 (d_m[0] + z * d_k[0]) * dt,
                 (d_m[1] + z * d_k[1]) * dt,
                 (d_m[2] + z * d_k[2]) * dt,
             ];
-            let s = &mut sig[k];
-            let [o0, o1, o2] = rot_old.stress([s[0], s[1], s[2]]);
+            let o = rot_old.stress([s[0], s[1], s[2]]);
             let (ozx, oyz) = rot_old.vector(s[4], s[3]);
-            let mut s3 = [o0, o1, o2];
-            let r = law.plane_stress(&mut s3, &mut eps_p[k], d, sec.iplas);
+            for c in 0..3 {
+                no[c] += wm * o[c];
+                mo[c] += wb * o[c];
+            }
+            qo[0] += wm * ozx;
+            qo[1] += wm * oyz;
+            let mut s3 = o;
+            let r = law.plane_stress(&mut s3, ep, d, sec.iplas);
             if r.failed {
                 *s = [0.0; 5];
                 nfailed += 1;
             } else {
                 *s = [s3[0], s3[1], s3[2], oyz + gs * dgyz, ozx + gs * dgzx];
             }
-            let (wm, wb) = (sec.w_mem[k], sec.w_bend[k]);
-            let sum = [o0 + s[0], o1 + s[1], o2 + s[2]];
-            for c in 0..3 {
-                sn[c] += wm * sum[c];
-                sm[c] += wb * sum[c];
-            }
-            sq[0] += wm * (ozx + s[4]);
-            sq[1] += wm * (oyz + s[3]);
             dwp += wm * r.d_wplas;
             dezz += wm * r.d_ezz;
+        } else if law.has_failed(*ep) {
+            nfailed += 1;
         }
-    } else {
-        nfailed = (0..n_ip).filter(|&k| law.has_failed(eps_p[k])).count();
+        for c in 0..3 {
+            nr[c] += wm * s[c];
+            mr[c] += wb * s[c];
+        }
+        qr[0] += wm * s[4];
+        qr[1] += wm * s[3];
     }
-    let de = 0.5
-        * dt
-        * (t * (sn[0] * d_m[0] + sn[1] * d_m[1] + sn[2] * d_m[2])
-            + t * t * (sm[0] * d_k[0] + sm[1] * d_k[1] + sm[2] * d_k[2])
-            + t * (sq[0] * gxz + sq[1] * gyz));
-    out.d_eint = de * gm.area;
-    out.d_eplas = dwp * gm.area * t;
-    st.eint += out.d_eint;
-    st.eplas += out.d_eplas;
+    // Work of the resultants over the step, A(N̄:Δε + M̄:Δκ + Q̄·Δγ) (conjugate to the forces).
+    if dt > 0.0 {
+        let de = 0.5
+            * dt
+            * (t * ((no[0] + nr[0]) * d_m[0]
+                + (no[1] + nr[1]) * d_m[1]
+                + (no[2] + nr[2]) * d_m[2])
+                + t * t
+                    * ((mo[0] + mr[0]) * d_k[0]
+                        + (mo[1] + mr[1]) * d_k[1]
+                        + (mo[2] + mr[2]) * d_k[2])
+                + t * ((qo[0] + qr[0]) * gxz + (qo[1] + qr[1]) * gyz));
+        out.d_eint = de * gm.area;
+        out.d_eplas = dwp * gm.area * t;
+        st.eint += out.d_eint;
+        st.eplas += out.d_eplas;
+    }
     if nfailed == n_ip {
         st.deleted = true;
         out.failed = true;
         return out;
     }
-
-    // ---- resultants and corner forces at x^{n+1} -----------------------------
-    let (nr, mr, q) = shell4_resultants(sec, t, sig);
-    let a = ge.area;
-    let mut fl = [[0.0f64; 3]; 4];
-    let mut ml = [[0.0f64; 2]; 4];
-    for i in 0..4 {
-        let (bxi, byi) = (ge.bx[i], ge.by[i]);
-        fl[i][0] = a * (bxi * nr[0] + byi * nr[2]);
-        fl[i][1] = a * (byi * nr[1] + bxi * nr[2]);
-        fl[i][2] = a * (bxi * q[0] + byi * q[1]);
-        ml[i][0] = -a * (byi * mr[1] + bxi * mr[2]) - 0.25 * a * q[1];
-        ml[i][1] = a * (bxi * mr[0] + byi * mr[2]) + 0.25 * a * q[0];
-    }
+    // Resultants per unit length at x^{n+1}.
+    let nr = scale(nr, t);
+    let mr = scale(mr, t * t);
+    let (q0, q1) = (qr[0] * t, qr[1] * t);
 
     // ---- hourglass -------------------------------------------------------------
-    if !st.tri {
-        let orth = sec.ishell != 2;
-        let (gmv, gev) = if orth {
-            (gm.gam, ge.gam)
-        } else {
-            (GAMMA, GAMMA)
-        };
-        let (gzm, gze) = if orth { (gm.gz, ge.gz) } else { (0.0, 0.0) };
-        let (qx, qy) = rot_inc.vector(dot4(&gmv, &vx) + gzm * bxvz, dot4(&gmv, &vy) + gzm * byvz);
-        let qz = dot4(&gmv, &vz);
-        let (qrx, qry) = rot_inc.vector(dot4(&gmv, &wx), dot4(&gmv, &wy));
-        let rho = mat.rho_ref();
-        let k = sec.ashear;
-        let shfpr3 = k / (3.0 * (1.0 + nu));
+    let a = ge.area;
+    let (mut qmx, mut qmy, mut qf, mut mrx, mut mry) = (0.0, 0.0, 0.0, 0.0, 0.0);
+    if hourglass {
+        let (gmv, gzm) = if orth { (gm.gam, gm.gz) } else { (GAMMA, 0.0) };
+        let vg = wsum(&gmv, v);
+        let wg = wsum(&gmv, vr);
+        let (qx, qy) = rot_inc.vector(dot(m1, vg) + gzm * bxvz, dot(m2, vg) + gzm * byvz);
+        let qz = dot(m3, vg);
+        let (qrx, qry) = rot_inc.vector(dot(m1, wg), dot(m2, wg));
+        let shfpr3 = kc.shfpr3;
+        let e_mod = kc.e;
         let bsum = a
             * a
             * (ge.bx[0] * ge.bx[0]
                 + ge.by[0] * ge.by[0]
                 + ge.bx[1] * ge.bx[1]
                 + ge.by[1] * ge.by[1]);
-        let rc = 0.25 * rho * c;
-        const INV_8_SQRT3: f64 = 0.072_168_783_648_703_22; // 1/(8√3)
+        let rc = kc.rc;
         let hg = &mut st.hourglass;
         let (h0, h1) = rot_old.vector(hg[0], hg[1]);
-        let (qmx, qmy, qf, mrx, mry);
         if sec.ishell == 3 {
             // Mean current yield stress of the points (∞ for an elastic material).
             let sy_mean: f64 = (0..n_ip)
@@ -708,7 +763,7 @@ pub fn shell4_step(
             hg[0] = cap(h0 + km * qx * dt, fm_max);
             hg[1] = cap(h1 + km * qy * dt, fm_max);
             hg[2] = cap(hg[2] + kf * qz * dt, ff_max);
-            let cr = rc * t * t * a * sec.hr.sqrt() * INV_8_SQRT3;
+            let cr = rc * t * t * a * kc.vr3;
             qmx = hg[0];
             qmy = hg[1];
             qf = hg[2];
@@ -720,9 +775,9 @@ pub fn shell4_step(
             hg[0] = h0 + km * qx * dt;
             hg[1] = h1 + km * qy * dt;
             hg[2] += kf * qz * dt;
-            let cm = rc * t * (0.5 * sec.hm * a).sqrt();
-            let cf = rc * t * t * (sec.hf * k / (6.0 * (1.0 + nu))).sqrt();
-            let cr = rc * t * t * a * (0.5 * sec.hr).sqrt() * INV_8_SQRT3;
+            let cm = rc * t * kc.vm * a.sqrt();
+            let cf = rc * t * t * kc.vf;
+            let cr = rc * t * t * a * kc.vr;
             qmx = hg[0] + cm * qx;
             qmy = hg[1] + cm * qy;
             qf = hg[2] + cf * qz;
@@ -731,19 +786,27 @@ pub fn shell4_step(
         }
         out.d_ehg = dt * (qmx * qx + qmy * qy + qf * qz + mrx * qrx + mry * qry);
         st.ehg += out.d_ehg;
-        for i in 0..4 {
-            let gi = gev[i];
-            fl[i][0] += qmx * gi;
-            fl[i][1] += qmy * gi;
-            fl[i][2] += qf * gi + gze * (qmx * ge.bx[i] + qmy * ge.by[i]);
-            ml[i][0] += mrx * gi;
-            ml[i][1] += mry * gi;
-        }
     }
 
+    // ---- corner forces and moments at x^{n+1}, global frame ---------------------
+    // f_I = b_x,I F_x + b_y,I F_y + γ_I H_f with
+    // F_x = A(N_xx e1 + N_xy e2 + Q_x e3) + (γ·z)q_mx e3, F_y likewise, H_f = Q_m,x e1 + Q_m,y e2 + Q_f e3;
+    // m_I = b_x,I M_x + b_y,I M_y + M_0 + γ_I H_m with M_x = A(−M_xy e1 + M_xx e2),
+    // M_y = A(−M_yy e1 + M_xy e2), M_0 = ¼A(−Q_y e1 + Q_x e2), H_m = M_rx e1 + M_ry e2.
+    let [e1, e2, e3] = ge.e;
+    let (gev, gze) = if orth { (ge.gam, ge.gz) } else { (GAMMA, 0.0) };
+    let fx = comb3(a * nr[0], e1, a * nr[2], e2, a * q0 + gze * qmx, e3);
+    let fy = comb3(a * nr[2], e1, a * nr[1], e2, a * q1 + gze * qmy, e3);
+    let hf = comb3(qmx, e1, qmy, e2, qf, e3);
+    let mx = comb3(-a * mr[2], e1, a * mr[0], e2, 0.0, e3);
+    let my = comb3(-a * mr[1], e1, a * mr[2], e2, 0.0, e3);
+    let m0 = comb3(-0.25 * a * q1, e1, 0.25 * a * q0, e2, 0.0, e3);
+    let hm = comb3(mrx, e1, mry, e2, 0.0, e3);
     for i in 0..4 {
-        out.f[i] = ge.to_global(fl[i]);
-        out.m[i] = ge.to_global([ml[i][0], ml[i][1], 0.0]);
+        let (bxi, byi, gi) = (ge.bx[i], ge.by[i], gev[i]);
+        out.f[i] = comb3(bxi, fx, byi, fy, gi, hf);
+        let mm = comb3(bxi, mx, byi, my, gi, hm);
+        out.m[i] = [mm[0] + m0[0], mm[1] + m0[1], mm[2] + m0[2]];
     }
 
     // ---- thickness ---------------------------------------------------------------

@@ -8,6 +8,7 @@
 //!   → global minimum of the element time steps × /DT scale.
 
 pub mod assembly;
+pub mod blocks;
 pub mod global;
 pub mod listing;
 pub mod run;

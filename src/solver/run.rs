@@ -1,18 +1,16 @@
 //! `crashsim run`: set-up on rank 0, scatter, the explicit cycle on every rank.
 
 use super::assembly::{key, AssemblyPlan, SLOT};
+use super::blocks::{make_block, Block};
 use super::global::GlobalData;
 use super::listing::{format_row, Listing, Row, HEADER};
 use crate::deck::{self, Dof, ElementKind, EngineFile, ReadOptions};
 use crate::domain::{self, Subdomain};
-use crate::element::shell4::{self, Shell4State, ShellSection};
 use crate::kinematics::function;
 use crate::kinematics::rigid_body::{NodeLoad, RigidBodyState};
 use crate::kinematics::rigid_wall::wall_velocity;
-use crate::material::Material;
-use crate::model::{self, Model, NO_NODE};
+use crate::model::{self, Model};
 use crate::parallel::World;
-use rayon::prelude::*;
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -105,26 +103,29 @@ fn prepare(opts: &RunOptions, nranks: usize) -> Result<Prepared, String> {
 
 /// The engine refuses what it does not compute yet, by name — never a silent substitute.
 fn check_supported(m: &Model) -> Result<(), String> {
+    // Every kind's sections are built once over the whole model: what the
+    // engine cannot compute is refused here, on rank 0, with its card.
     for set in &m.elements {
-        if set.kind != ElementKind::Shell4 && !set.is_empty() {
-            return Err(format!("the deck has {} {} elements: the engine does not compute them yet (4-node shells only so far)", set.len(), set.kind.keyword()));
-        }
-    }
-    for (i, p) in m.parts.iter().enumerate() {
-        let used = m.elements[0].part.contains(&(i as u32));
-        if !used {
+        if set.is_empty() {
             continue;
         }
-        let prop = &m.properties[p.prop.expect("shell parts have a property") as usize];
-        let mat =
-            Material::from_card(&m.materials[p.mat.expect("shell parts have a material") as usize]);
-        let shell = prop.shell.as_ref().expect("shell property");
-        ShellSection::new(shell, &mat).map_err(|e| {
-            format!(
-                "{} (/PROP/SHELL/{}, part {}): {e}",
-                prop.card.loc, prop.card.id, p.id
-            )
-        })?;
+        let le = domain::LocalElements {
+            kind: set.kind,
+            global: (0..set.len() as u32).collect(),
+            part: set.part.clone(),
+            nodes: set.nodes.clone(),
+            thick: set.thick.clone(),
+        };
+        super::blocks::make_block(
+            &le,
+            &m.nodes.x,
+            &m.nodal_mass,
+            &m.parts,
+            &m.properties,
+            &m.materials,
+            &m.functions,
+        )
+        .map_err(|e| format!("{} elements: {e}", set.kind.keyword()))?;
     }
     let unsupported = |what: &str, loc: &deck::Loc| {
         Err(format!("{loc}: {what} is not supported by the engine yet"))
@@ -222,17 +223,6 @@ struct LocalBody {
     main_global: u32,
     /// Card MASS + main node's own mass: what the main node carries.
     main_mass: f64,
-}
-
-/// Every shell of this rank: section index, state, integration points.
-struct Shells {
-    section: Vec<u16>,
-    state: Vec<Shell4State>,
-    sig: Vec<[f64; 5]>,
-    eps_p: Vec<f64>,
-    nip: usize,
-    alive: Vec<bool>,
-    out: Vec<shell4::Shell4Out>,
 }
 
 pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
@@ -348,51 +338,47 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
         .map(|(i, f)| (f.id, i))
         .collect();
 
-    // Shells.
-    let le = &sd.elements[0];
-    let nshell = le.global.len();
-    let mut sections: Vec<ShellSection> = Vec::new();
-    let mut part_section: HashMap<u32, u16> = HashMap::new();
-    for &p in &le.part {
-        if let std::collections::hash_map::Entry::Vacant(e) = part_section.entry(p) {
-            let part = &g.parts[p as usize];
-            let prop = g.properties[part.prop.unwrap() as usize]
-                .shell
-                .as_ref()
-                .unwrap();
-            let mat = Material::from_card(&g.materials[part.mat.unwrap() as usize]);
-            sections.push(ShellSection::new(prop, &mat).map_err(RunError::Input)?);
-            e.insert((sections.len() - 1) as u16);
+    // Element blocks, one per kind present; each element corner owns a slot
+    // keyed by (kind, global element, corner).
+    let mut blocks: Vec<Box<dyn Block>> = Vec::new();
+    for le in &sd.elements {
+        if let Some(b) = make_block(
+            le,
+            &x,
+            &sd.mass,
+            &g.parts,
+            &g.properties,
+            &g.materials,
+            &g.functions,
+        )
+        .map_err(RunError::Input)?
+        {
+            blocks.push(b);
         }
     }
-    let nip = sections.iter().map(|s| s.n_ip).max().unwrap_or(1).max(1);
-    let corner_x = |x: &[[f64; 3]], e: usize| -> [[f64; 3]; 4] {
-        [0, 1, 2, 3].map(|k| x[le.nodes[4 * e + k] as usize])
+    let kind_index = |k: ElementKind| {
+        crate::deck::Elements::KINDS
+            .iter()
+            .position(|&q| q == k)
+            .unwrap()
     };
-    let mut shells = Shells {
-        section: le.part.iter().map(|p| part_section[p]).collect(),
-        state: (0..nshell)
-            .map(|e| {
-                shell4::shell4_init(
-                    &sections[part_section[&le.part[e]] as usize],
-                    &corner_x(&x, e),
-                    le.thick[e],
-                )
-            })
-            .collect(),
-        sig: vec![[0.0; 5]; nshell * nip],
-        eps_p: vec![0.0; nshell * nip],
-        nip,
-        alive: vec![true; nshell],
-        out: vec![shell4::Shell4Out::default(); nshell],
-    };
-    // Contribution slots: 4 per shell, keyed by (kind 0, global element, corner).
-    let slot_meta: Vec<(u32, u64)> = (0..nshell)
-        .flat_map(|e| (0..4).map(move |k| (e, k)))
-        .map(|(e, k)| (le.nodes[4 * e + k], key(0, le.global[e], k)))
-        .collect();
+    let mut slot_meta: Vec<(u32, u64)> = Vec::new();
+    let mut offsets = Vec::new();
+    for b in &blocks {
+        offsets.push(slot_meta.len());
+        let le = b.local();
+        let nc = b.corners();
+        let ki = kind_index(b.kind());
+        let stride = b.kind().nodes();
+        for e in 0..le.global.len() {
+            for c in 0..nc {
+                slot_meta.push((le.nodes[stride * e + c], key(ki, le.global[e], c)));
+            }
+        }
+    }
+    offsets.push(slot_meta.len());
     let mut plan = AssemblyPlan::build(world, &sd, &slot_meta);
-    let mut contrib = vec![[0.0f64; SLOT]; 4 * nshell];
+    let mut contrib = vec![[0.0f64; SLOT]; slot_meta.len()];
     let mut fint = vec![[0.0f64; SLOT]; n];
     let mut fext = vec![[0.0f64; SLOT]; n];
 
@@ -434,10 +420,10 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
     let mut cycle: u64 = 0;
     let mut e_int = 0.0f64;
     let mut w_ext = 0.0f64;
-    let stop = compute_shells(&sections, le, &x, &v, &vr, 0.0, &mut shells, &mut contrib);
+    let stop = compute_all(&mut blocks, &offsets, &x, &v, &vr, 0.0, &mut contrib);
     plan.assemble(world, &contrib, &mut fint);
     external_forces(&g, &fct_index, &cloads, &gravity, &mass, t, &mut fext);
-    let mut step = global_step(world, &g, &shells, le, engine.dt_scale, stop, cycle, t)?;
+    let mut step = global_step(world, &g, &blocks, engine.dt_scale, stop, cycle, t)?;
     let mut dt = step.dt;
     let (ke0, ker0) = kinetic(
         world,
@@ -684,10 +670,10 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
             break Err(RunError::Physics(msg));
         }
         // Forces at n+1.
-        let stop = compute_shells(&sections, le, &x, &v, &vr, dt, &mut shells, &mut contrib);
+        let stop = compute_all(&mut blocks, &offsets, &x, &v, &vr, dt, &mut contrib);
         plan.assemble(world, &contrib, &mut fint);
         external_forces(&g, &fct_index, &cloads, &gravity, &mass, t, &mut fext);
-        step = match global_step(world, &g, &shells, le, engine.dt_scale, stop, cycle, t) {
+        step = match global_step(world, &g, &blocks, engine.dt_scale, stop, cycle, t) {
             Ok(s) => s,
             Err(e) => break Err(e),
         };
@@ -705,7 +691,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
             )));
         }
         if cycle % print_every == 0 || t >= tstop {
-            let mut ie = [shells.state.iter().map(|s| s.eint + s.ehg).sum::<f64>()];
+            let mut ie = [blocks.iter().map(|b| b.energy()).sum::<f64>()];
             world.sum_f64(&mut ie);
             e_int = ie[0];
             let mut w = [w_ext];
@@ -746,7 +732,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
         write_final_state(world, &g, &sd, &owned, &x, &v, &vr, path)?;
     }
     if let Some(path) = &opts.final_elements {
-        write_final_elements(world, &g, le, &shells, &sections, path)?;
+        write_final_elements(world, &g, &blocks, path)?;
     }
     if let (Some(path), 0) = (&opts.history, rank) {
         let mut s = String::from("time");
@@ -774,76 +760,37 @@ fn main_node_mass(sd: &Subdomain, main_local: Option<u32>) -> f64 {
     main_local.map(|l| sd.mass[l as usize]).unwrap_or(0.0)
 }
 
-/// Runs every live shell; returns the first stopping problem (global element id, message).
-#[allow(clippy::too_many_arguments)]
-fn compute_shells(
-    sections: &[ShellSection],
-    le: &domain::LocalElements,
+/// Runs every block; returns the first stopping problem (kind, global element index, what).
+fn compute_all(
+    blocks: &mut [Box<dyn Block>],
+    offsets: &[usize],
     x: &[[f64; 3]],
     v: &[[f64; 3]],
     vr: &[[f64; 3]],
     dt: f64,
-    shells: &mut Shells,
     contrib: &mut [[f64; SLOT]],
-) -> Option<(u32, String)> {
-    let nip = shells.nip;
-    contrib
-        .par_chunks_mut(4)
-        .zip(shells.state.par_iter_mut())
-        .zip(shells.sig.par_chunks_mut(nip))
-        .zip(shells.eps_p.par_chunks_mut(nip))
-        .zip(shells.out.par_iter_mut())
-        .zip(shells.alive.par_iter())
-        .enumerate()
-        .for_each(|(e, (((((c, st), sig), eps), out), alive))| {
-            if !*alive {
-                *out = shell4::Shell4Out::default();
-                for s in c.iter_mut() {
-                    *s = [0.0; SLOT];
-                }
-                return;
-            }
-            let nodes = [0, 1, 2, 3].map(|k| le.nodes[4 * e + k] as usize);
-            let sec = &sections[shells.section[e] as usize];
-            let xe = nodes.map(|i| x[i]);
-            let ve = nodes.map(|i| v[i]);
-            let vre = nodes.map(|i| vr[i]);
-            let o = shell4::shell4_step(
-                sec,
-                &xe,
-                &ve,
-                &vre,
-                dt,
-                st,
-                &mut sig[..sec.n_ip.max(1)],
-                &mut eps[..sec.n_ip.max(1)],
-            );
-            for k in 0..4 {
-                c[k] = [
-                    o.f[k][0], o.f[k][1], o.f[k][2], o.m[k][0], o.m[k][1], o.m[k][2],
-                ];
-            }
-            *out = o;
-        });
-    // Deletion of failed elements (their nodes keep their mass).
+) -> Option<(ElementKind, u32, &'static str)> {
     let mut problem = None;
-    for e in 0..shells.alive.len() {
-        if !shells.alive[e] {
-            continue;
-        }
-        let o = &shells.out[e];
-        if o.bad_area && problem.is_none() {
-            problem = Some((
-                le.global[e],
-                "has a zero or negative area (inverted element)".to_string(),
-            ));
-        }
-        if o.failed {
-            shells.alive[e] = false;
+    for (i, b) in blocks.iter_mut().enumerate() {
+        b.compute(x, v, vr, dt, &mut contrib[offsets[i]..offsets[i + 1]]);
+        if let Some((ge, what)) = b.settle() {
+            problem.get_or_insert((b.kind(), ge, what));
         }
     }
-    let _ = NO_NODE;
     problem
+}
+
+/// The listing's name of an element kind.
+fn kind_name(k: ElementKind) -> &'static str {
+    match k {
+        ElementKind::Shell4 => "SHELL",
+        ElementKind::Shell3 => "SH3N",
+        ElementKind::Brick8 => "BRICK",
+        ElementKind::Tetra4 => "TETRA4",
+        ElementKind::Spring => "SPRING",
+        ElementKind::Truss => "TRUSS",
+        ElementKind::Beam => "BEAM",
+    }
 }
 
 /// The global time step and what set it.
@@ -853,48 +800,60 @@ struct Step {
     id: u64,
 }
 
-/// Global minimum of the scaled element time steps (ties: smallest id), and a
-/// collective stop if any rank met a problem.
+/// Global minimum of the scaled element time steps (ties: smallest kind, then id),
+/// and a collective stop if any rank met a problem.
 #[allow(clippy::too_many_arguments)]
 fn global_step(
     world: &World,
     g: &GlobalData,
-    shells: &Shells,
-    le: &domain::LocalElements,
+    blocks: &[Box<dyn Block>],
     scale: f64,
-    problem: Option<(u32, String)>,
+    problem: Option<(ElementKind, u32, &'static str)>,
     cycle: u64,
     t: f64,
 ) -> Result<Step, RunError> {
-    let mut best = (f64::INFINITY, u64::MAX);
-    for e in 0..shells.alive.len() {
-        if shells.alive[e] {
-            let id = g.element_ids[0][le.global[e] as usize];
-            let d = shells.out[e].dt;
-            if d < best.0 || (d == best.0 && id < best.1) {
-                best = (d, id);
+    let kind_index = |k: ElementKind| {
+        crate::deck::Elements::KINDS
+            .iter()
+            .position(|&q| q == k)
+            .unwrap()
+    };
+    let mut best = (f64::INFINITY, usize::MAX, u64::MAX);
+    for b in blocks {
+        let ki = kind_index(b.kind());
+        let le = b.local();
+        for (e, st) in b.steps().iter().enumerate() {
+            if b.alive(e) {
+                let id = g.element_ids[ki][le.global[e] as usize];
+                let cand = (st.dt, ki, id);
+                if cand.0 < best.0 || (cand.0 == best.0 && (cand.1, cand.2) < (best.1, best.2)) {
+                    best = cand;
+                }
             }
         }
     }
-    let prob = problem.map(|(ge, m)| {
+    let prob = problem.map(|(k, ge, m)| {
         format!(
-            "shell {} {m} at cycle {cycle}, time {t:e}",
-            g.element_ids[0][ge as usize]
+            "{} {} {m} at cycle {cycle}, time {t:e}",
+            kind_name(k),
+            g.element_ids[kind_index(k)][ge as usize]
         )
     });
-    let all: Vec<(f64, u64, Option<String>)> = world.allgather(&(best.0, best.1, prob));
-    if let Some(m) = all.iter().find_map(|(_, _, p)| p.clone()) {
+    let all: Vec<(f64, usize, u64, Option<String>)> =
+        world.allgather(&(best.0, best.1, best.2, prob));
+    if let Some(m) = all.iter().find_map(|(_, _, _, p)| p.clone()) {
         return Err(RunError::Physics(m));
     }
-    let (d, id) = all
-        .iter()
-        .fold((f64::INFINITY, u64::MAX), |acc, &(d, id, _)| {
-            if d < acc.0 || (d == acc.0 && id < acc.1) {
-                (d, id)
+    let (d, ki, id) = all.iter().fold(
+        (f64::INFINITY, usize::MAX, u64::MAX),
+        |acc, &(d, k, id, _)| {
+            if d < acc.0 || (d == acc.0 && (k, id) < (acc.1, acc.2)) {
+                (d, k, id)
             } else {
                 acc
             }
-        });
+        },
+    );
     if !d.is_finite() {
         return Err(RunError::Physics(format!(
             "no element left to set the time step at cycle {cycle}, time {t:e}"
@@ -902,7 +861,7 @@ fn global_step(
     }
     Ok(Step {
         dt: scale * d,
-        what: "SHELL",
+        what: kind_name(crate::deck::Elements::KINDS[ki]),
         id,
     })
 }
@@ -1032,50 +991,42 @@ fn write_final_state(
     })
 }
 
-/// One CSV row per element in global order: kind, id, mean membrane stress
-/// over the integration points (local frame: sxx, syy, sxy), largest plastic
-/// strain, thickness, internal energy (with hourglass), deleted flag.
+/// One CSV row per element in global order (kind, then id): mean membrane
+/// stress over the integration points (shells: local frame sxx, syy, sxy;
+/// solids: sxx, syy, sxy; springs: the force in sxx), largest plastic strain,
+/// thickness, internal energy (with hourglass), deleted flag.
 fn write_final_elements(
     world: &World,
     g: &GlobalData,
-    le: &domain::LocalElements,
-    shells: &Shells,
-    sections: &[ShellSection],
+    blocks: &[Box<dyn Block>],
     path: &Path,
 ) -> Result<(), RunError> {
-    let nip = shells.nip;
-    let mine: Vec<(u32, [f64; 7])> = (0..le.global.len())
-        .map(|e| {
-            let n = sections[shells.section[e] as usize].n_ip.max(1);
-            let sig = &shells.sig[e * nip..e * nip + n];
-            let mean = |k: usize| sig.iter().map(|s| s[k]).sum::<f64>() / n as f64;
-            let epsp = shells.eps_p[e * nip..e * nip + n]
-                .iter()
-                .fold(0.0f64, |a, &b| a.max(b));
-            let st = &shells.state[e];
-            (
-                le.global[e],
-                [
-                    mean(0),
-                    mean(1),
-                    mean(2),
-                    epsp,
-                    st.thick,
-                    st.eint + st.ehg,
-                    if shells.alive[e] { 0.0 } else { 1.0 },
-                ],
-            )
+    let kind_index = |k: ElementKind| {
+        crate::deck::Elements::KINDS
+            .iter()
+            .position(|&q| q == k)
+            .unwrap()
+    };
+    let mine: Vec<(usize, u32, [f64; 7])> = blocks
+        .iter()
+        .flat_map(|b| {
+            let ki = kind_index(b.kind());
+            b.rows().into_iter().map(move |(ge, v)| (ki, ge, v))
         })
         .collect();
     let all = world.allgather(&mine);
     if world.rank() != 0 {
         return Ok(());
     }
-    let mut rows: Vec<(u32, [f64; 7])> = all.into_iter().flatten().collect();
-    rows.sort_by_key(|r| r.0);
+    let mut rows: Vec<(usize, u32, [f64; 7])> = all.into_iter().flatten().collect();
+    rows.sort_by_key(|r| (r.0, r.1));
     let mut s = String::from("kind,id,sxx,syy,sxy,eps_p,thick,eint,deleted\n");
-    for (ge, v) in rows {
-        s.push_str(&format!("SHELL,{}", g.element_ids[0][ge as usize]));
+    for (ki, ge, v) in rows {
+        s.push_str(&format!(
+            "{},{}",
+            kind_name(crate::deck::Elements::KINDS[ki]),
+            g.element_ids[ki][ge as usize]
+        ));
         for val in &v[..6] {
             s.push_str(&format!(",{val:.16e}"));
         }
