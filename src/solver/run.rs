@@ -106,26 +106,43 @@ fn check_supported(m: &Model) -> Result<(), String> {
     // Every kind's sections are built once over the whole model: what the
     // engine cannot compute is refused here, on rank 0, with its card.
     for set in &m.elements {
-        if set.is_empty() {
-            continue;
+        // One element of each part is enough to build (and so check) its section.
+        let mut seen = std::collections::BTreeSet::new();
+        for e in 0..set.len() {
+            if !seen.insert(set.part[e]) {
+                continue;
+            }
+            let n = set.kind.nodes();
+            let le = domain::LocalElements {
+                kind: set.kind,
+                global: vec![e as u32],
+                part: vec![set.part[e]],
+                nodes: set.nodes[n * e..n * (e + 1)].to_vec(),
+                thick: vec![set.thick[e]],
+            };
+            super::blocks::make_block(
+                &le,
+                &m.nodes.x,
+                &m.nodal_mass,
+                &m.parts,
+                &m.properties,
+                &m.materials,
+                &m.functions,
+            )
+            .map_err(|err| {
+                let part = &m.parts[set.part[e] as usize];
+                match part.prop.map(|i| &m.properties[i as usize].card) {
+                    Some(c) => format!(
+                        "{}: /PROP/{} (part {}, {} elements): {err}",
+                        c.loc,
+                        c.id,
+                        part.id,
+                        set.kind.keyword()
+                    ),
+                    None => format!("part {} ({} elements): {err}", part.id, set.kind.keyword()),
+                }
+            })?;
         }
-        let le = domain::LocalElements {
-            kind: set.kind,
-            global: (0..set.len() as u32).collect(),
-            part: set.part.clone(),
-            nodes: set.nodes.clone(),
-            thick: set.thick.clone(),
-        };
-        super::blocks::make_block(
-            &le,
-            &m.nodes.x,
-            &m.nodal_mass,
-            &m.parts,
-            &m.properties,
-            &m.materials,
-            &m.functions,
-        )
-        .map_err(|e| format!("{} elements: {e}", set.kind.keyword()))?;
     }
     let unsupported = |what: &str, loc: &deck::Loc| {
         Err(format!("{loc}: {what} is not supported by the engine yet"))
