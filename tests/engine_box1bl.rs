@@ -149,3 +149,41 @@ fn box1bl_final_state_is_identical_for_1_2_4_ranks_and_1_2_threads() {
         );
     }
 }
+
+/// A rank that dies mid-run takes the whole job down quickly (no hang), and
+/// the listing written so far is kept.
+#[test]
+fn a_dying_rank_takes_the_job_down() {
+    let dir = out_dir("fault");
+    let deck = qa_deck("BOX1BL");
+    let started = std::time::Instant::now();
+    let mut c = Command::new("mpirun");
+    c.env("OMPI_ALLOW_RUN_AS_ROOT", "1")
+        .env("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
+        .env("OMPI_MCA_hwloc_base_binding_policy", "none")
+        .env("OMPI_MCA_btl_vader_single_copy_mechanism", "none")
+        .env("CRASHSIM_FAULT", "1:300")
+        .args([
+            "-x",
+            "CRASHSIM_FAULT",
+            "-n",
+            "2",
+            env!("CARGO_BIN_EXE_crashsim"),
+            "run",
+            deck.to_str().unwrap(),
+            "--out",
+            dir.to_str().unwrap(),
+        ]);
+    let out = c.output().unwrap();
+    let secs = started.elapsed().as_secs_f64();
+    assert!(!out.status.success(), "the job must fail when a rank dies");
+    assert!(
+        secs < 30.0,
+        "the job took {secs} s to end after a rank died"
+    );
+    let listing = std::fs::read_to_string(dir.join("BOX1BL.out")).unwrap();
+    assert!(
+        listing.lines().any(|l| l.trim_start().starts_with("299 ")),
+        "the listing up to the fault is kept"
+    );
+}

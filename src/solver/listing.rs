@@ -61,10 +61,13 @@ impl Listing {
         };
         Ok(Listing { file })
     }
+    /// Writes one line to stdout and the file, flushed at once: a run that is
+    /// killed keeps every line printed before.
     pub fn line(&mut self, s: &str) {
         println!("{s}");
         if let Some(f) = &mut self.file {
             let _ = writeln!(f, "{s}");
+            let _ = f.flush();
         }
     }
     pub fn flush(&mut self) {

@@ -519,6 +519,11 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
     };
     sample(0.0, &x, &mut history);
     next_th += th_period;
+    // CRASHSIM_FAULT=RANK:CYCLE makes that rank abort at that cycle (tests only).
+    let fault: Option<(u32, u64)> = std::env::var("CRASHSIM_FAULT").ok().and_then(|v| {
+        let (r, c) = v.split_once(':')?;
+        Some((r.parse().ok()?, c.parse().ok()?))
+    });
     let loop_started = Instant::now();
 
     // ---- the cycle ----------------------------------------------------------
@@ -672,6 +677,11 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
         t += dt;
         cycle += 1;
         dt_prev = dt;
+        if fault.is_some_and(|(r, c)| r == rank && c == cycle) {
+            // Fault injection for the resilience tests: this rank dies abruptly.
+            eprintln!("crashsim: rank {rank}: CRASHSIM_FAULT: aborting at cycle {cycle}");
+            std::process::abort();
+        }
         // Non-finite state: name the node.
         if let Some(l) = (0..n).find(|&l| {
             !(x[l]
