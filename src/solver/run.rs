@@ -160,8 +160,17 @@ fn check_supported(m: &Model) -> Result<(), String> {
             );
         }
     }
-    if let Some(c) = m.imposed_displacements.first() {
-        return unsupported("/IMPDISP", &c.card.loc);
+    for c in &m.imposed_displacements {
+        if c.card.skew_id != 0
+            || c.card.sens_id != 0
+            || c.card.icoor != 0
+            || c.card.dir.index() >= 3
+        {
+            return unsupported(
+                "/IMPDISP with a skew, sensor, cylindrical coordinates or a rotation",
+                &c.card.loc,
+            );
+        }
     }
     for c in &m.initial_velocities {
         if c.card.skew_id != 0 {
@@ -176,11 +185,6 @@ fn check_supported(m: &Model) -> Result<(), String> {
     for c in &m.gravity {
         if c.card.skew_id != 0 || c.card.sens_id != 0 {
             return unsupported("/GRAV with a skew system or sensor", &c.card.loc);
-        }
-    }
-    for w in &m.rigid_walls {
-        if w.node.is_some() {
-            return unsupported("a moving /RWALL/PLANE (node_ID > 0)", &w.card.loc);
         }
     }
     for r in &m.rigid_bodies {
@@ -336,6 +340,37 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
         .map(|w| (locals(&w.secondary_nodes), w))
         .collect();
     let mut tied: Vec<Vec<bool>> = walls.iter().map(|(l, _)| vec![false; l.len()]).collect();
+    // Wall motion, replicated on every rank: point, velocity. A moving wall
+    // follows its node: that node's /IMPVEL if it has one, else its own mass
+    // pushed back by the nodes it stops (forces summed in global node order).
+    let mut wall_p: Vec<[f64; 3]> = g.rigid_walls.iter().map(|w| w.point).collect();
+    let mut wall_v: Vec<[f64; 3]> = g
+        .rigid_walls
+        .iter()
+        .map(|w| {
+            if w.node.is_some() {
+                w.card.v0
+            } else {
+                [0.0; 3]
+            }
+        })
+        .collect();
+    let wall_driver: Vec<Option<&model::ImposedMotion>> = g
+        .rigid_walls
+        .iter()
+        .map(|w| {
+            w.node.and_then(|nd| {
+                g.imposed_velocities
+                    .iter()
+                    .find(|c| c.nodes.binary_search(&nd).is_ok() && c.card.dir.index() < 3)
+            })
+        })
+        .collect();
+    let impdisp: Vec<(Vec<u32>, &model::ImposedMotion)> = g
+        .imposed_displacements
+        .iter()
+        .map(|c| (locals(&c.nodes), c))
+        .collect();
     let impvel: Vec<(Vec<u32>, &model::ImposedMotion)> = g
         .imposed_velocities
         .iter()
@@ -620,24 +655,81 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
                 }
             }
         }
+        // Imposed displacements: the velocity that reaches u(t + Δt) at the end of the step.
+        for (nodes, c) in &impdisp {
+            let card = &c.card;
+            let t1 = t + dt;
+            if t1 < card.tstart || t1 > card.tstop {
+                continue;
+            }
+            let u = function::scaled(
+                &g.functions[fct_index[&card.fct]],
+                t1,
+                card.ascale_x,
+                card.fscale_y,
+            );
+            let d = card.dir.index();
+            for &l in nodes {
+                let l = l as usize;
+                v[l][d] = (u - (x[l][d] - sd.x[l][d])) / dt;
+            }
+        }
         // Rigid walls.
         for (w, (nodes, wall)) in walls.iter().enumerate() {
+            if let Some(c) = wall_driver[w] {
+                let card = &c.card;
+                if th >= card.tstart && th <= card.tstop {
+                    wall_v[w][card.dir.index()] = function::scaled(
+                        &g.functions[fct_index[&card.fct]],
+                        th,
+                        card.ascale_x,
+                        card.fscale_y,
+                    );
+                }
+            }
+            let mut push: Vec<(u32, [f64; 3])> = Vec::new();
             for (i, &l) in nodes.iter().enumerate() {
                 let l = l as usize;
-                let (nv, now_tied, _f) = wall_velocity(
+                let (nv, now_tied, f) = wall_velocity(
                     x[l],
                     v[l],
                     mass[l],
                     dt,
-                    wall.point,
+                    wall_p[w],
                     wall.normal,
-                    [0.0; 3],
+                    wall_v[w],
                     wall.card.slide,
                     wall.card.fric,
                     tied[w][i],
                 );
                 v[l] = nv;
                 tied[w][i] = now_tied;
+                if owned[l] && f != [0.0; 3] {
+                    push.push((sd.node_global[l], f));
+                }
+            }
+            if wall.node.is_some() && wall_driver[w].is_none() && wall.card.mass > 0.0 {
+                // Free moving wall: its mass takes the momentum the nodes lost.
+                let mut all: Vec<(u32, [f64; 3])> =
+                    world.allgather(&push).into_iter().flatten().collect();
+                all.sort_by_key(|p| p.0);
+                let mut f = [0.0; 3];
+                for (_, fi) in &all {
+                    for k in 0..3 {
+                        f[k] += fi[k];
+                    }
+                }
+                for k in 0..3 {
+                    wall_v[w][k] += f[k] / wall.card.mass * dt;
+                }
+            }
+            for k in 0..3 {
+                wall_p[w][k] += wall_v[w][k] * dt;
+            }
+            if let Some(nd) = wall.node {
+                if let Some(&l) = local_of.get(&nd) {
+                    v[l as usize] = wall_v[w];
+                }
             }
         }
         // Boundary conditions have the last word.

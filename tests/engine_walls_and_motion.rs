@@ -1,0 +1,173 @@
+//! Moving rigid walls and imposed displacements.
+
+mod common;
+use std::path::PathBuf;
+
+fn tmp(tag: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("crashsim-{tag}-{}", std::process::id()));
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+/// decks/brick_bar_wall: a free wall of 0.01 kg (node 9999) strikes a resting
+/// brick bar at 5 mm/ms. The wall slows down, the bar starts moving, and the
+/// total momentum stays 0.05 kg·mm/ms to round-off.
+#[test]
+fn free_moving_wall_conserves_momentum() {
+    let deck = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("decks/brick_bar_wall/brick_bar_wall_0000.rad");
+    let dir = tmp("wall");
+    let fs = dir.join("final.csv");
+    let out = common::crashsim(&[
+        "run",
+        deck.to_str().unwrap(),
+        "--out",
+        dir.to_str().unwrap(),
+        "--final-state",
+        fs.to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let (n, nx, h, rho) = (4usize, 40usize, 2.5f64, 7.85e-6f64);
+    let corner = rho * h * h * h / 8.0;
+    let count = |i: usize, m: usize| if i == 0 || i == m { 1.0 } else { 2.0 };
+    let (mut p_bar, mut v_wall) = (0.0f64, f64::NAN);
+    for line in std::fs::read_to_string(&fs).unwrap().lines().skip(1) {
+        let c: Vec<f64> = line.split(',').map(|s| s.parse().unwrap()).collect();
+        let id = c[0] as usize;
+        if id == 9999 {
+            v_wall = c[4];
+            continue;
+        }
+        let k = id - 1;
+        let (i, j, kk) = (
+            k % (nx + 1),
+            (k / (nx + 1)) % (n + 1),
+            k / ((nx + 1) * (n + 1)),
+        );
+        p_bar += corner * count(i, nx) * count(j, n) * count(kk, n) * c[4];
+    }
+    let p = p_bar + 0.01 * v_wall;
+    assert!((p - 0.05).abs() < 1e-12, "total momentum {p} vs 0.05");
+    assert!(
+        v_wall < 5.0 && v_wall > 0.0,
+        "the wall slowed down (v = {v_wall})"
+    );
+    assert!(p_bar > 0.0, "the bar was set moving");
+}
+
+/// /IMPDISP drives its nodes along u(t) = Fscale·f(t/Ascale) exactly.
+#[test]
+fn imposed_displacement_is_followed_exactly() {
+    let dir = tmp("impdisp");
+    let i10 = |v: i64| format!("{v:>10}");
+    let r20 = |v: f64| format!("{v:>20}");
+    let mut d = vec![
+        "/BEGIN".to_string(),
+        "impdisp".into(),
+        i10(2019) + &i10(0),
+        format!("{:>20}{:>20}{:>20}", "kg", "mm", "ms"),
+        format!("{:>20}{:>20}{:>20}", "kg", "mm", "ms"),
+        "/MAT/LAW1/1".into(),
+        "steel".into(),
+        r20(7.85e-6),
+        r20(210.0) + &r20(0.3),
+        "/PROP/SHELL/1".into(),
+        "1 mm".into(),
+        i10(1) + &i10(2),
+        r20(0.0),
+        i10(3) + &i10(0) + &r20(1.0),
+        "/PART/1".into(),
+        "plate".into(),
+        i10(1) + &i10(1),
+        "/NODE".into(),
+    ];
+    for (id, x, y) in [
+        (1, 0.0, 0.0),
+        (2, 10.0, 0.0),
+        (3, 10.0, 10.0),
+        (4, 0.0, 10.0),
+    ] {
+        d.push(i10(id) + &r20(x) + &r20(y) + &r20(0.0));
+    }
+    d.extend([
+        "/SHELL/1".into(),
+        i10(1) + &i10(1) + &i10(2) + &i10(3) + &i10(4),
+    ]);
+    d.extend([
+        "/BCS/1".into(),
+        "left".into(),
+        format!("{:>10}{}{}", "111 111", i10(0), i10(1)),
+        "/GRNOD/NODE/1".into(),
+        "left".into(),
+        i10(1) + &i10(4),
+    ]);
+    // u(t) = 0.5 * t^... : a ramp u = 0.02 * t (mm, ms) via f(t) = t, Fscale 0.02.
+    d.extend([
+        "/FUNCT/1".into(),
+        "ramp".into(),
+        r20(0.0) + &r20(0.0),
+        r20(1.0) + &r20(1.0),
+    ]);
+    d.extend([
+        "/IMPDISP/1".into(),
+        "pull".into(),
+        i10(1) + &format!("{:>10}", "X") + &i10(0) + &i10(0) + &i10(2),
+        r20(0.0) + &r20(0.02) + &r20(0.0) + &r20(0.0),
+    ]);
+    d.extend([
+        "/GRNOD/NODE/2".into(),
+        "right".into(),
+        i10(2) + &i10(3),
+        "/END".into(),
+    ]);
+    std::fs::write(dir.join("impdisp_0000.rad"), d.join("\n") + "\n").unwrap();
+    std::fs::write(
+        dir.join("impdisp_0001.rad"),
+        "/RUN/impdisp/1\n0.05\n/DT\n0.9 0.0\n",
+    )
+    .unwrap();
+    let fs = dir.join("final.csv");
+    let out = common::crashsim(&[
+        "run",
+        dir.join("impdisp_0000.rad").to_str().unwrap(),
+        "--out",
+        dir.to_str().unwrap(),
+        "--final-state",
+        fs.to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let listing = std::fs::read_to_string(dir.join("impdisp.out")).unwrap();
+    let t_end: f64 = listing
+        .lines()
+        .filter_map(|l| {
+            let t: Vec<&str> = l.split_whitespace().collect();
+            (t.len() > 5 && t[0].parse::<u64>().is_ok() && t[5].ends_with('%'))
+                .then(|| t[1].parse::<f64>().unwrap())
+        })
+        .last()
+        .unwrap();
+    for line in std::fs::read_to_string(&fs).unwrap().lines().skip(1) {
+        let c: Vec<f64> = line.split(',').map(|s| s.parse().unwrap()).collect();
+        if c[0] == 2.0 || c[0] == 3.0 {
+            let u = c[1] - 10.0;
+            // The listing prints time to 5 digits: compare within that.
+            assert!(
+                (u - 0.02 * t_end).abs() <= 0.02 * t_end * 1e-3,
+                "node {}: u = {u}, expected {}",
+                c[0],
+                0.02 * t_end
+            );
+        }
+        if c[0] == 1.0 || c[0] == 4.0 {
+            assert_eq!(c[1], 0.0, "the held side stays put");
+        }
+    }
+}
