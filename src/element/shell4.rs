@@ -17,11 +17,13 @@
 //!   applies to BLT membrane rates. Internal forces use the x^{n+1} frame and
 //!   b-vectors, so that they are in exact force and moment equilibrium at x^{n+1}.
 //! * **Local frame** (one choice for all decks, /SHFRA V4 or V5): e3 = normal of
-//!   the diagonals d13 × d24; e1 = bisector of the two mid-lines
-//!   g1 = ½(d13 − d24) and g2 = ½(d13 + d24) turned by −90° (e1 ∝ ĝ1 + ĝ2 × e3);
-//!   e2 = e3 × e1. It does not depend on which node is numbered first and turns
-//!   with the mean material rotation; for isotropic materials the choice only
-//!   affects the stored stress and hourglass rotation at second order.
+//!   the diagonals d13 × d24; e1 ∝ g1 + g2 × e3 with the mid-lines
+//!   g1 = d13 − d24, g2 = d13 + d24 (g2 turned by −90°); e2 = e3 × e1.
+//!   Renumbering the nodes by one turns it by 90°. The frame does not change the
+//!   results: the stored stresses are turned each step by the material spin
+//!   minus the frame spin (Jaumann rate, see [`shell4_step`]), so the in-plane
+//!   frame choice (V4 or V5) does not change our results (Radioss stores its
+//!   stresses in its convected frame without this correction).
 //! * **Warped elements**: with this frame the nodes sit at z_I = w·(1,−1,1,−1).
 //!   The orthogonal hourglass rates (Ishell 1, 3, 4) add the warping term
 //!   (γ·z)(b·v_z) — the Belytschko-Wong-Chiang correction Radioss applies for
@@ -48,16 +50,23 @@
 //!   (Belytschko-Bachrach / Flanagan-Belytschko); Ishell 2 uses Γ itself
 //!   ("without orthogonality", Hallquist), which does not conserve angular
 //!   momentum on non-parallelogram or warped elements (as in Radioss).
-//!   Rates q_x, q_y (membrane), q_z (out of plane), q_rx, q_ry (rotations).
+//!   Rates q_x, q_y (membrane), q_z (out of plane), q_rx, q_ry (rotations),
+//!   all with γ for Ishell 1, 3, 4 (the reference engine uses Γ for the
+//!   rotational modes in every Ishell, which also resists constant curvature on
+//!   non-parallelograms; γ keeps the modes orthogonal to it).
 //!   - Ishell 1, 2, 4 (visco-elastic): Q = H + C q with viscous
 //!     C_m = ¼ρc t √(h_m A/2), C_f = ¼ρc t² √(h_f k/(6(1+ν))),
 //!     C_r = ¼ρc t² A √(h_r/2)/(8√3), and elastic resultants integrated in time,
 //!     H_m += ¼h_m E t q_m Δt, H_f += ¼h_f E k/(3(1+ν)) t³/B q_z Δt,
-//!     B = A²(|b_1|² + |b_2|²).  (k = Ashear, c = √(E/ρ₀).)
+//!     B = A²(|b_1|² + |b_2|²).  (k = Ashear, c = √(E/ρ₀).) The viscous
+//!     factors carry √h, as the theory manual's in-plane force
+//!     f = ¼ρc t √(h_m A/2) q Γ; the elastic ones carry h.
 //!   - Ishell 3 (elasto-plastic): H_m += ⅛h_m E t q_m Δt capped at ½σ_y t √A h_m,
 //!     H_f += ⅛h_f E k/(3(1+ν)) t³/B q_z Δt capped at ¼σ_y t² h_f (σ_y: mean
 //!     current yield stress of the points), rotations viscous ¼ρc t² A √h_r/(8√3).
-//!   The quadratic hourglass viscosity of the reference engine is not used.
+//!
+//!   The quadratic hourglass viscosity of the reference engine is not used;
+//!   its global switches for the viscous and elastic parts are taken as on.
 //!   Degenerate quads (node 3 = node 4) get no hourglass forces.
 //! * **Time step** (reference engine's shell characteristic length): with the
 //!   local edge lengths l_12, l_23, l_34, l_41 and diagonals d_13, d_24,
@@ -357,7 +366,7 @@ impl Geom {
         let nn2 = dot(n, n);
         let dd = 1e-12 * (dot(d13, d13) + dot(d24, d24));
         // NaN-safe: a non-finite or vanishing area is refused.
-        if !(nn2 > dd * dd) {
+        if nn2.is_nan() || nn2 <= dd * dd {
             return None;
         }
         let e3 = scale(n, 1.0 / nn2.sqrt());
@@ -377,7 +386,7 @@ impl Geom {
         let (x13, x24, xh) = (dot(e1, d13), dot(e1, d24), dot(e1, h));
         let (y13, y24, yh) = (dot(e2, d13), dot(e2, d24), dot(e2, h));
         let area = 0.5 * (x13 * y24 - x24 * y13);
-        if !(area > 0.0) {
+        if area.is_nan() || area <= 0.0 {
             return None;
         }
         let x = [
@@ -459,8 +468,7 @@ pub fn shell4_resultants(
     let mut nr = [0.0; 3];
     let mut mr = [0.0; 3];
     let mut q = [0.0; 2];
-    for k in 0..sec.n_ip {
-        let s = &sig[k];
+    for (k, s) in sig[..sec.n_ip].iter().enumerate() {
         let (wm, wb) = (sec.w_mem[k] * thick, sec.w_bend[k] * thick * thick);
         for c in 0..3 {
             nr[c] += wm * s[c];
@@ -802,8 +810,8 @@ pub fn shell4_step(
     let my = comb3(-a * mr[1], e1, a * mr[2], e2, 0.0, e3);
     let m0 = comb3(-0.25 * a * q1, e1, 0.25 * a * q0, e2, 0.0, e3);
     let hm = comb3(mrx, e1, mry, e2, 0.0, e3);
-    for i in 0..4 {
-        let (bxi, byi, gi) = (ge.bx[i], ge.by[i], gev[i]);
+    for (i, &gi) in gev.iter().enumerate() {
+        let (bxi, byi) = (ge.bx[i], ge.by[i]);
         out.f[i] = comb3(bxi, fx, byi, fy, gi, hf);
         let mm = comb3(bxi, mx, byi, my, gi, hm);
         out.m[i] = [mm[0] + m0[0], mm[1] + m0[1], mm[2] + m0[2]];

@@ -1,5 +1,7 @@
 //! Physics tests of the Belytschko-Tsay shell (see the module doc of `shell4`).
 
+#![allow(clippy::needless_range_loop)] // index loops mirror the tensor formulas
+
 use super::*;
 use crate::deck::{JohnsonCook, Loc, MaterialCard, MaterialLaw, NO_LIMIT};
 

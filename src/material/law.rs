@@ -122,6 +122,18 @@ impl Material {
         }
     }
 
+    /// The flow stress depends on the strain rate (LAW2 with c ≠ 0).
+    #[inline]
+    pub fn is_rate_dependent(&self) -> bool {
+        matches!(*self, Material::JohnsonCook { c, .. } if c != 0.0)
+    }
+
+    /// The flow stress depends on the temperature (LAW2 with ρC_p given).
+    #[inline]
+    pub fn is_thermal(&self) -> bool {
+        matches!(*self, Material::JohnsonCook { rho_cp, .. } if rho_cp < NO_LIMIT)
+    }
+
     /// Initial density RHO_I.
     #[inline]
     pub fn rho(&self) -> f64 {
@@ -353,7 +365,7 @@ impl PointLaw {
     /// 2 approximate normal + radial (see the johnson_cook module doc).
     ///
     /// Elastic trial: σ += C Δε with C the plane-stress Hooke matrix
-    /// (E/(1−ν²)[[1,ν,0],[ν,1,0],[0,0,(1−ν)/2]]). Thickness strain:
+    /// (E/(1−ν²)·`[[1,ν,0],[ν,1,0],[0,0,(1−ν)/2]]`). Thickness strain:
     /// Δε_zz = [−ν(Δεxx+Δεyy) + (1−2ν)Δε^p_zz]/(1−ν) (elastic plane stress plus
     /// incompressible plastic flow).
     /// A point whose ε_p reaches EPS_p_max fails: its stress is set to zero and
@@ -385,6 +397,16 @@ impl PointLaw {
                 ..Default::default()
             };
         };
+        // Fast elastic exit below the initial yield stress (a lower bound of σ_y
+        // when b ≥ 0): no power of ε_p and no call.
+        let svm2 = sig[0] * sig[0] + sig[1] * sig[1] - sig[0] * sig[1] + 3.0 * sig[2] * sig[2];
+        let y_low = flow.a.min(flow.cap);
+        if flow.b >= 0.0 && svm2 <= y_low * y_low {
+            return PlaneStressResult {
+                d_ezz: ezz_el / (1.0 - nu),
+                ..Default::default()
+            };
+        }
         let (dep, ezz_p) = jc::plane_stress_return(sig, *eps_p, &flow, e, nu, g, iplas);
         if dep == 0.0 {
             return PlaneStressResult {
