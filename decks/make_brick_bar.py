@@ -12,9 +12,15 @@ import sys
 # at 5 mm/ms; momentum (bar + wall) is conserved. Written to decks/brick_bar_wall.
 moving = len(sys.argv) > 1 and sys.argv[1] == "moving"
 name = "brick_bar_wall" if moving else "brick_bar"
+# "bench OUT NAME N NX": an N x N x NX bar for ci/bench, written to OUT/NAME.
+bench = len(sys.argv) > 1 and sys.argv[1] == "bench"
+if bench:
+    out_dir, name = sys.argv[2], sys.argv[3]
 i10 = lambda v: f"{v:>10d}"
 r20 = lambda v: f"{v:>20.10g}"
 n, nx, h = 4, 40, 2.5  # 4 x 4 cross-section, 40 along x
+if bench:
+    n, nx = int(sys.argv[4]), int(sys.argv[5])
 E, rho, v0 = 210.0, 7.85e-6, 5.0
 nid = lambda i, j, k: 1 + i + (nx + 1) * (j + (n + 1) * k)
 L = ["#RADIOSS STARTER", f"# {name}: stress wave in a bar of bricks (decks/make_brick_bar.py)", "/BEGIN", name,
@@ -47,8 +53,10 @@ else:
     L += ["/RWALL/PLANE/1", "wall at x = 0", i10(0) + i10(0) + i10(2) + i10(0), r20(0) * 4 + i10(0), r20(0) * 3, r20(1.0) + r20(0) + r20(0)]
 L += ["/GRNOD/NODE/2", "end nodes"] + ["".join(i10(x) for x in wall[s:s + 10]) for s in range(0, len(wall), 10)]
 L.append("/END")
-os.makedirs(name, exist_ok=True)
-open(f"{name}/{name}_0000.rad", "w").write("\n".join(L) + "\n")
+folder = os.path.join(out_dir, name) if bench else name
+os.makedirs(folder, exist_ok=True)
+open(f"{folder}/{name}_0000.rad", "w").write("\n".join(L) + "\n")
 # End at half the transit time L/c: the front is mid-bar.
 c = (E / rho) ** 0.5
-open(f"{name}/{name}_0001.rad", "w").write("\n".join([f"/RUN/{name}/1", f"{0.5 * nx * h / c:>20.8g}", "/DT", "0.9 0.0", "/PRINT/-50/55"]) + "\n")
+tend = 50 * 0.9 * h / c if bench else 0.5 * nx * h / c
+open(f"{folder}/{name}_0001.rad", "w").write("\n".join([f"/RUN/{name}/1", f"{tend:>20.8g}", "/DT", "0.9 0.0", "/PRINT/-50/55"]) + "\n")
