@@ -49,6 +49,10 @@ pub trait Block: Send + Sync {
     fn alive(&self, e: usize) -> bool;
     /// Internal energy (with hourglass) of the block's elements.
     fn energy(&self) -> f64;
+    /// Hourglass energy and plastic work (parts of `energy`).
+    fn energy_parts(&self) -> (f64, f64) {
+        (0.0, 0.0)
+    }
     fn rows(&self) -> Vec<ElemRow>;
 }
 
@@ -239,6 +243,12 @@ impl Block for Shell4Block {
     fn energy(&self) -> f64 {
         self.state.iter().map(|s| s.eint + s.ehg).sum()
     }
+    fn energy_parts(&self) -> (f64, f64) {
+        (
+            self.state.iter().map(|s| s.ehg).sum(),
+            self.state.iter().map(|s| s.eplas).sum(),
+        )
+    }
     fn rows(&self) -> Vec<ElemRow> {
         (0..self.le.global.len())
             .map(|e| {
@@ -390,6 +400,9 @@ impl Block for Shell3Block {
     }
     fn energy(&self) -> f64 {
         self.state.iter().map(|s| s.eint).sum()
+    }
+    fn energy_parts(&self) -> (f64, f64) {
+        (0.0, self.state.iter().map(|s| s.eplas).sum())
     }
     fn rows(&self) -> Vec<ElemRow> {
         (0..self.le.global.len())

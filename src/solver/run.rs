@@ -51,7 +51,7 @@ impl RunError {
 }
 
 /// What rank 0 prepares: the shared data and one subdomain per rank.
-type Prepared = (GlobalData, Vec<Subdomain>, Vec<RigidBodyState>);
+type Prepared = (GlobalData, Vec<Subdomain>, Vec<RigidBodyState>, Vec<String>);
 
 fn prepare(opts: &RunOptions, nranks: usize) -> Result<Prepared, String> {
     let engine = match &opts.engine {
@@ -98,7 +98,16 @@ fn prepare(opts: &RunOptions, nranks: usize) -> Result<Prepared, String> {
             g.th_nodes.push(i as u32);
         }
     }
-    Ok((g, sds, rbs))
+    // Where the engine computes a card's option another way, the listing says so.
+    let mut notes = Vec::new();
+    for p in &m.properties {
+        if let Some(s) = &p.shell {
+            if s.ismstr == 1 {
+                notes.push(format!("{}: /PROP/{}: Ismstr = 1 (small strain) is computed with the large-strain corotational rate form", p.card.loc, p.card.id));
+            }
+        }
+    }
+    Ok((g, sds, rbs, notes))
 }
 
 /// The engine refuses what it does not compute yet, by name — never a silent substitute.
@@ -264,9 +273,9 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
         .broadcast(if rank == 0 { Some(&status) } else { None })
         .map_err(RunError::Input)?
         .map_err(RunError::Input)?;
-    let (g, sds, rbs) = match prepared {
-        Some(Ok((g, s, r))) => (Some(g), Some(s), Some(r)),
-        _ => (None, None, None),
+    let (g, sds, rbs, notes) = match prepared {
+        Some(Ok((g, s, r, n))) => (Some(g), Some(s), Some(r), n),
+        _ => (None, None, None, Vec::new()),
     };
     let g: GlobalData = world.broadcast(g.as_ref()).map_err(RunError::Input)?;
     let mut bodies: Vec<RigidBodyState> = world.broadcast(rbs.as_ref()).map_err(RunError::Input)?;
@@ -463,6 +472,12 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
             g.units.mass, g.units.length, g.units.time, tstop, engine.dt_scale
         ));
         l.line("");
+        for n in &notes {
+            l.line(&format!(" note: {n}"));
+        }
+        if !notes.is_empty() {
+            l.line("");
+        }
         l.line(HEADER);
     }
     let print_every = engine.print_every.unsigned_abs().max(1);
@@ -472,10 +487,11 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
     let mut cycle: u64 = 0;
     let mut e_int = 0.0f64;
     let mut w_ext = 0.0f64;
+    let mut wall_work = 0.0f64;
     let stop = compute_all(&mut blocks, &offsets, &x, &v, &vr, 0.0, &mut contrib);
     plan.assemble(world, &contrib, &mut fint);
     external_forces(&g, &fct_index, &cloads, &gravity, &mass, t, &mut fext);
-    let mut step = global_step(world, &g, &blocks, engine.dt_scale, stop, cycle, t)?;
+    let mut step = global_step(world, &g, &blocks, engine.dt_scale, stop, None, cycle, t)?;
     let mut dt = step.dt;
     let (ke0, ker0) = kinetic(
         world,
@@ -702,6 +718,14 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
                     wall.card.fric,
                     tied[w][i],
                 );
+                if owned[l] {
+                    // Work of the wall's force on the node over the step,
+                    // f·v·dt with f = m(v_after − v_before)/dt: zero for a fixed wall.
+                    wall_work += mass[l]
+                        * ((nv[0] - v[l][0]) * nv[0]
+                            + (nv[1] - v[l][1]) * nv[1]
+                            + (nv[2] - v[l][2]) * nv[2]);
+                }
                 v[l] = nv;
                 tied[w][i] = now_tied;
                 if owned[l] && f != [0.0; 3] {
@@ -774,25 +798,27 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
             eprintln!("crashsim: rank {rank}: CRASHSIM_FAULT: aborting at cycle {cycle}");
             std::process::abort();
         }
-        // Non-finite state: name the node.
-        if let Some(l) = (0..n).find(|&l| {
-            !(x[l]
-                .iter()
-                .chain(&v[l])
-                .chain(&vr[l])
-                .all(|c| c.is_finite()))
-        }) {
-            let msg = format!(
-                "node {} has a non-finite position or velocity at cycle {cycle}, time {t:e}",
-                g.node_ids[sd.node_global[l] as usize]
-            );
-            break Err(RunError::Physics(msg));
-        }
+        // Non-finite state: name the node (reported with the element problems,
+        // collectively, so that every rank stops at the same cycle).
+        let nan_msg = (0..n)
+            .find(|&l| {
+                !(x[l]
+                    .iter()
+                    .chain(&v[l])
+                    .chain(&vr[l])
+                    .all(|c| c.is_finite()))
+            })
+            .map(|l| {
+                format!(
+                    "node {} has a non-finite position or velocity at cycle {cycle}, time {t:e}",
+                    g.node_ids[sd.node_global[l] as usize]
+                )
+            });
         // Forces at n+1.
         let stop = compute_all(&mut blocks, &offsets, &x, &v, &vr, dt, &mut contrib);
         plan.assemble(world, &contrib, &mut fint);
         external_forces(&g, &fct_index, &cloads, &gravity, &mass, t, &mut fext);
-        step = match global_step(world, &g, &blocks, engine.dt_scale, stop, cycle, t) {
+        step = match global_step(world, &g, &blocks, engine.dt_scale, stop, nan_msg, cycle, t) {
             Ok(s) => s,
             Err(e) => break Err(e),
         };
@@ -831,6 +857,31 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
     };
     let elapsed = started.elapsed().as_secs_f64();
     let looped = loop_started.elapsed().as_secs_f64();
+    // Energy breakdown (collective: every rank takes part, even after a stop).
+    let final_energies = {
+        let mut e = [0.0f64; 5];
+        for b in &blocks {
+            let (hg, pl) = b.energy_parts();
+            e[0] += b.energy();
+            e[1] += hg;
+            e[2] += pl;
+        }
+        e[3] = w_ext;
+        e[4] = wall_work;
+        world.sum_f64(&mut e);
+        let (ke, ker) = kinetic(
+            world,
+            &v,
+            &vr,
+            &mass,
+            &inertia,
+            &owned,
+            &is_main,
+            &bodies,
+            &local_bodies,
+        );
+        Some([e[0], e[1], e[2], ke, ker, e[3], e[4]])
+    };
     if let Some(l) = &mut listing {
         l.line("");
         match &result {
@@ -838,6 +889,13 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
             Err(e) => l.line(&format!("     ERROR TERMINATION: {}", e.message())),
         }
         l.line(&format!("     TOTAL NUMBER OF CYCLES  : {cycle:>10}"));
+        if let Some(e) = &final_energies {
+            l.line(&format!("     ENERGIES AT THE END     : internal {:.6E} (hourglass {:.6E}, plastic work {:.6E}), kinetic {:.6E} + rotational {:.6E}", e[0], e[1], e[2], e[3], e[4]));
+            l.line(&format!(
+                "                               external work {:.6E}, rigid-wall work {:.6E}",
+                e[5], e[6]
+            ));
+        }
         l.line(&format!("     ELAPSED TIME            : {elapsed:>10.3} s   (set-up {:.3} s, cycles {looped:.3} s)", elapsed - looped));
         let elems = g.element_ids.iter().map(|e| e.len()).sum::<usize>().max(1);
         l.line(&format!(
@@ -928,6 +986,7 @@ fn global_step(
     blocks: &[Box<dyn Block>],
     scale: f64,
     problem: Option<(ElementKind, u32, &'static str)>,
+    node_problem: Option<String>,
     cycle: u64,
     t: f64,
 ) -> Result<Step, RunError> {
@@ -958,6 +1017,7 @@ fn global_step(
             g.element_ids[kind_index(k)][ge as usize]
         )
     });
+    let prob = node_problem.or(prob);
     let all: Vec<(f64, usize, u64, Option<String>)> =
         world.allgather(&(best.0, best.1, best.2, prob));
     if let Some(m) = all.iter().find_map(|(_, _, _, p)| p.clone()) {
