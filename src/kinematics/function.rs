@@ -23,6 +23,15 @@ pub fn scaled(f: &FunctionCard, t: f64, ascale_x: f64, fscale_y: f64) -> f64 {
     fscale_y * eval(f, t / ascale_x)
 }
 
+/// The value of an /IMPVEL or /IMPDISP at time t, or `None` outside [Tstart, Tstop].
+pub fn imposed_value(
+    f: &FunctionCard,
+    card: &crate::deck::ImposedMotionCard,
+    t: f64,
+) -> Option<f64> {
+    (t >= card.tstart && t <= card.tstop).then(|| scaled(f, t, card.ascale_x, card.fscale_y))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -651,18 +651,12 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
         }
         // Imposed velocities at t + ½Δt.
         let th = t + 0.5 * dt;
+        let imposed = |c: &model::ImposedMotion, t: f64| {
+            function::imposed_value(&g.functions[fct_index[&c.card.fct]], &c.card, t)
+        };
         for (nodes, c) in &impvel {
-            let card = &c.card;
-            if th < card.tstart || th > card.tstop {
-                continue;
-            }
-            let val = function::scaled(
-                &g.functions[fct_index[&card.fct]],
-                th,
-                card.ascale_x,
-                card.fscale_y,
-            );
-            let d = card.dir.index();
+            let Some(val) = imposed(c, th) else { continue };
+            let d = c.card.dir.index();
             for &l in nodes {
                 if d < 3 {
                     v[l as usize][d] = val;
@@ -673,18 +667,10 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
         }
         // Imposed displacements: the velocity that reaches u(t + Δt) at the end of the step.
         for (nodes, c) in &impdisp {
-            let card = &c.card;
-            let t1 = t + dt;
-            if t1 < card.tstart || t1 > card.tstop {
+            let Some(u) = imposed(c, t + dt) else {
                 continue;
-            }
-            let u = function::scaled(
-                &g.functions[fct_index[&card.fct]],
-                t1,
-                card.ascale_x,
-                card.fscale_y,
-            );
-            let d = card.dir.index();
+            };
+            let d = c.card.dir.index();
             for &l in nodes {
                 let l = l as usize;
                 v[l][d] = (u - (x[l][d] - sd.x[l][d])) / dt;
@@ -693,14 +679,8 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
         // Rigid walls.
         for (w, (nodes, wall)) in walls.iter().enumerate() {
             if let Some(c) = wall_driver[w] {
-                let card = &c.card;
-                if th >= card.tstart && th <= card.tstop {
-                    wall_v[w][card.dir.index()] = function::scaled(
-                        &g.functions[fct_index[&card.fct]],
-                        th,
-                        card.ascale_x,
-                        card.fscale_y,
-                    );
+                if let Some(val) = imposed(c, th) {
+                    wall_v[w][c.card.dir.index()] = val;
                 }
             }
             let mut push: Vec<(u32, [f64; 3])> = Vec::new();
