@@ -81,19 +81,7 @@ fn settle_common(
     problem
 }
 
-// ---- 4-node shells -----------------------------------------------------------
-
-pub struct Shell4Block {
-    pub le: LocalElements,
-    pub sections: Vec<ShellSection>,
-    pub section: Vec<u16>,
-    pub state: Vec<Shell4State>,
-    pub sig: Vec<[f64; 5]>,
-    pub eps_p: Vec<f64>,
-    pub nip: usize,
-    pub alive: Vec<bool>,
-    pub steps: Vec<ElemStep>,
-}
+// ---- shells (4- and 3-node) -------------------------------------------------
 
 /// Shell sections per part (built once per part used).
 fn shell_sections(
@@ -132,304 +120,187 @@ fn shell_sections(
     Ok((sections, section))
 }
 
-impl Shell4Block {
-    pub fn new(
-        le: LocalElements,
-        x: &[[f64; 3]],
-        parts: &[Part],
-        props: &[Property],
-        mats: &[crate::deck::MaterialCard],
-    ) -> Result<Self, String> {
-        let (sections, section) = shell_sections(&le, parts, props, mats, false)?;
-        let n = le.global.len();
-        let nip = sections.iter().map(|s| s.n_ip).max().unwrap_or(1).max(1);
-        let state = (0..n)
-            .map(|e| {
-                shell4::shell4_init(
-                    &sections[section[e] as usize],
-                    &gather::<4>(&le, e, x),
-                    le.thick[e],
-                )
-            })
-            .collect();
-        Ok(Shell4Block {
-            le,
-            sections,
-            section,
-            state,
-            sig: vec![[0.0; 5]; n * nip],
-            eps_p: vec![0.0; n * nip],
-            nip,
-            alive: vec![true; n],
-            steps: vec![ElemStep::default(); n],
-        })
-    }
-}
+/// 4-node and 3-node shells share this shape: a section per part, `nip`
+/// integration points per element (stress and plastic strain), rotations.
+macro_rules! shell_block {
+    ($name:ident, $kind:expr, $nn:literal, $state:ty, $init:path, $step:path, $tri:expr) => {
+        pub struct $name {
+            le: LocalElements,
+            sections: Vec<ShellSection>,
+            section: Vec<u16>,
+            state: Vec<$state>,
+            sig: Vec<[f64; 5]>,
+            eps_p: Vec<f64>,
+            nip: usize,
+            alive: Vec<bool>,
+            steps: Vec<ElemStep>,
+        }
 
-impl Block for Shell4Block {
-    fn kind(&self) -> ElementKind {
-        ElementKind::Shell4
-    }
-    fn local(&self) -> &LocalElements {
-        &self.le
-    }
-    fn corners(&self) -> usize {
-        4
-    }
-    fn compute(
-        &mut self,
-        x: &[[f64; 3]],
-        v: &[[f64; 3]],
-        vr: &[[f64; 3]],
-        dt: f64,
-        contrib: &mut [[f64; SLOT]],
-    ) {
-        let (le, sections, section, nip) = (&self.le, &self.sections, &self.section, self.nip);
-        contrib
-            .par_chunks_mut(4)
-            .zip(self.state.par_iter_mut())
-            .zip(self.sig.par_chunks_mut(nip))
-            .zip(self.eps_p.par_chunks_mut(nip))
-            .zip(self.steps.par_iter_mut())
-            .zip(self.alive.par_iter())
-            .enumerate()
-            .for_each(|(e, (((((c, st), sig), eps), out), alive))| {
-                if !*alive {
-                    c.iter_mut().for_each(|s| *s = [0.0; SLOT]);
-                    *out = ElemStep {
-                        dt: f64::INFINITY,
-                        ..Default::default()
-                    };
-                    return;
-                }
-                let sec = &sections[section[e] as usize];
-                let n = sec.n_ip.max(1);
-                let o = shell4::shell4_step(
-                    sec,
-                    &gather::<4>(le, e, x),
-                    &gather::<4>(le, e, v),
-                    &gather::<4>(le, e, vr),
-                    dt,
-                    st,
-                    &mut sig[..n],
-                    &mut eps[..n],
-                );
-                for k in 0..4 {
-                    c[k] = [
-                        o.f[k][0], o.f[k][1], o.f[k][2], o.m[k][0], o.m[k][1], o.m[k][2],
-                    ];
-                }
-                *out = ElemStep {
-                    dt: o.dt,
-                    failed: o.failed,
-                    bad: o.bad_area,
-                };
-            });
-    }
-    fn steps(&self) -> &[ElemStep] {
-        &self.steps
-    }
-    fn settle(&mut self) -> Option<(u32, &'static str)> {
-        settle_common(
-            &mut self.alive,
-            &self.steps,
-            &self.le,
-            "has a zero or negative area (inverted element)",
-        )
-    }
-    fn alive(&self, e: usize) -> bool {
-        self.alive[e]
-    }
-    fn energy(&self) -> f64 {
-        self.state.iter().map(|s| s.eint + s.ehg).sum()
-    }
-    fn energy_parts(&self) -> (f64, f64) {
-        (
-            self.state.iter().map(|s| s.ehg).sum(),
-            self.state.iter().map(|s| s.eplas).sum(),
-        )
-    }
-    fn rows(&self) -> Vec<ElemRow> {
-        (0..self.le.global.len())
-            .map(|e| {
-                let n = self.sections[self.section[e] as usize].n_ip.max(1);
-                let sig = &self.sig[e * self.nip..e * self.nip + n];
-                let mean = |k: usize| sig.iter().map(|s| s[k]).sum::<f64>() / n as f64;
-                let epsp = self.eps_p[e * self.nip..e * self.nip + n]
-                    .iter()
-                    .fold(0.0f64, |a, &b| a.max(b));
-                let st = &self.state[e];
+        impl $name {
+            pub fn new(
+                le: LocalElements,
+                x: &[[f64; 3]],
+                parts: &[Part],
+                props: &[Property],
+                mats: &[crate::deck::MaterialCard],
+            ) -> Result<Self, String> {
+                let (sections, section) = shell_sections(&le, parts, props, mats, $tri)?;
+                let n = le.global.len();
+                let nip = sections.iter().map(|s| s.n_ip).max().unwrap_or(1).max(1);
+                let state = (0..n)
+                    .map(|e| {
+                        $init(
+                            &sections[section[e] as usize],
+                            &gather::<$nn>(&le, e, x),
+                            le.thick[e],
+                        )
+                    })
+                    .collect();
+                Ok($name {
+                    le,
+                    sections,
+                    section,
+                    state,
+                    sig: vec![[0.0; 5]; n * nip],
+                    eps_p: vec![0.0; n * nip],
+                    nip,
+                    alive: vec![true; n],
+                    steps: vec![ElemStep::default(); n],
+                })
+            }
+        }
+
+        impl Block for $name {
+            fn kind(&self) -> ElementKind {
+                $kind
+            }
+            fn local(&self) -> &LocalElements {
+                &self.le
+            }
+            fn corners(&self) -> usize {
+                $nn
+            }
+            fn compute(
+                &mut self,
+                x: &[[f64; 3]],
+                v: &[[f64; 3]],
+                vr: &[[f64; 3]],
+                dt: f64,
+                contrib: &mut [[f64; SLOT]],
+            ) {
+                let (le, sections, section, nip) =
+                    (&self.le, &self.sections, &self.section, self.nip);
+                contrib
+                    .par_chunks_mut($nn)
+                    .zip(self.state.par_iter_mut())
+                    .zip(self.sig.par_chunks_mut(nip))
+                    .zip(self.eps_p.par_chunks_mut(nip))
+                    .zip(self.steps.par_iter_mut())
+                    .zip(self.alive.par_iter())
+                    .enumerate()
+                    .for_each(|(e, (((((c, st), sig), eps), out), alive))| {
+                        if !*alive {
+                            c.iter_mut().for_each(|s| *s = [0.0; SLOT]);
+                            *out = ElemStep {
+                                dt: f64::INFINITY,
+                                ..Default::default()
+                            };
+                            return;
+                        }
+                        let sec = &sections[section[e] as usize];
+                        let n = sec.n_ip.max(1);
+                        let o = $step(
+                            sec,
+                            &gather::<$nn>(le, e, x),
+                            &gather::<$nn>(le, e, v),
+                            &gather::<$nn>(le, e, vr),
+                            dt,
+                            st,
+                            &mut sig[..n],
+                            &mut eps[..n],
+                        );
+                        for k in 0..$nn {
+                            c[k] = [
+                                o.f[k][0], o.f[k][1], o.f[k][2], o.m[k][0], o.m[k][1], o.m[k][2],
+                            ];
+                        }
+                        *out = ElemStep {
+                            dt: o.dt,
+                            failed: o.failed,
+                            bad: o.bad_area,
+                        };
+                    });
+            }
+            fn steps(&self) -> &[ElemStep] {
+                &self.steps
+            }
+            fn settle(&mut self) -> Option<(u32, &'static str)> {
+                settle_common(
+                    &mut self.alive,
+                    &self.steps,
+                    &self.le,
+                    "has a zero or negative area (inverted element)",
+                )
+            }
+            fn alive(&self, e: usize) -> bool {
+                self.alive[e]
+            }
+            fn energy(&self) -> f64 {
+                self.state.iter().map(|s| s.eint + hourglass_of(s)).sum()
+            }
+            fn energy_parts(&self) -> (f64, f64) {
                 (
-                    self.le.global[e],
-                    [
-                        mean(0),
-                        mean(1),
-                        mean(2),
-                        epsp,
-                        st.thick,
-                        st.eint + st.ehg,
-                        if self.alive[e] { 0.0 } else { 1.0 },
-                    ],
+                    self.state.iter().map(hourglass_of).sum(),
+                    self.state.iter().map(|s| s.eplas).sum(),
                 )
-            })
-            .collect()
-    }
+            }
+            fn rows(&self) -> Vec<ElemRow> {
+                (0..self.le.global.len())
+                    .map(|e| {
+                        let n = self.sections[self.section[e] as usize].n_ip.max(1);
+                        let sig = &self.sig[e * self.nip..e * self.nip + n];
+                        let mean = |k: usize| sig.iter().map(|s| s[k]).sum::<f64>() / n as f64;
+                        let epsp = self.eps_p[e * self.nip..e * self.nip + n]
+                            .iter()
+                            .fold(0.0f64, |a, &b| a.max(b));
+                        let st = &self.state[e];
+                        (
+                            self.le.global[e],
+                            [
+                                mean(0),
+                                mean(1),
+                                mean(2),
+                                epsp,
+                                st.thick,
+                                st.eint + hourglass_of(st),
+                                if self.alive[e] { 0.0 } else { 1.0 },
+                            ],
+                        )
+                    })
+                    .collect()
+            }
+        }
+    };
 }
 
-// ---- 3-node shells -----------------------------------------------------------
-
-pub struct Shell3Block {
-    le: LocalElements,
-    sections: Vec<ShellSection>,
-    section: Vec<u16>,
-    state: Vec<Shell3State>,
-    sig: Vec<[f64; 5]>,
-    eps_p: Vec<f64>,
-    nip: usize,
-    alive: Vec<bool>,
-    steps: Vec<ElemStep>,
-}
-
-impl Shell3Block {
-    pub fn new(
-        le: LocalElements,
-        x: &[[f64; 3]],
-        parts: &[Part],
-        props: &[Property],
-        mats: &[crate::deck::MaterialCard],
-    ) -> Result<Self, String> {
-        let (sections, section) = shell_sections(&le, parts, props, mats, true)?;
-        let n = le.global.len();
-        let nip = sections.iter().map(|s| s.n_ip).max().unwrap_or(1).max(1);
-        let state = (0..n)
-            .map(|e| {
-                shell3::shell3_init(
-                    &sections[section[e] as usize],
-                    &gather::<3>(&le, e, x),
-                    le.thick[e],
-                )
-            })
-            .collect();
-        Ok(Shell3Block {
-            le,
-            sections,
-            section,
-            state,
-            sig: vec![[0.0; 5]; n * nip],
-            eps_p: vec![0.0; n * nip],
-            nip,
-            alive: vec![true; n],
-            steps: vec![ElemStep::default(); n],
-        })
-    }
-}
-
-impl Block for Shell3Block {
-    fn kind(&self) -> ElementKind {
-        ElementKind::Shell3
-    }
-    fn local(&self) -> &LocalElements {
-        &self.le
-    }
-    fn corners(&self) -> usize {
-        3
-    }
-    fn compute(
-        &mut self,
-        x: &[[f64; 3]],
-        v: &[[f64; 3]],
-        vr: &[[f64; 3]],
-        dt: f64,
-        contrib: &mut [[f64; SLOT]],
-    ) {
-        let (le, sections, section, nip) = (&self.le, &self.sections, &self.section, self.nip);
-        contrib
-            .par_chunks_mut(3)
-            .zip(self.state.par_iter_mut())
-            .zip(self.sig.par_chunks_mut(nip))
-            .zip(self.eps_p.par_chunks_mut(nip))
-            .zip(self.steps.par_iter_mut())
-            .zip(self.alive.par_iter())
-            .enumerate()
-            .for_each(|(e, (((((c, st), sig), eps), out), alive))| {
-                if !*alive {
-                    c.iter_mut().for_each(|s| *s = [0.0; SLOT]);
-                    *out = ElemStep {
-                        dt: f64::INFINITY,
-                        ..Default::default()
-                    };
-                    return;
-                }
-                let sec = &sections[section[e] as usize];
-                let n = sec.n_ip.max(1);
-                let o = shell3::shell3_step(
-                    sec,
-                    &gather::<3>(le, e, x),
-                    &gather::<3>(le, e, v),
-                    &gather::<3>(le, e, vr),
-                    dt,
-                    st,
-                    &mut sig[..n],
-                    &mut eps[..n],
-                );
-                for k in 0..3 {
-                    c[k] = [
-                        o.f[k][0], o.f[k][1], o.f[k][2], o.m[k][0], o.m[k][1], o.m[k][2],
-                    ];
-                }
-                *out = ElemStep {
-                    dt: o.dt,
-                    failed: o.failed,
-                    bad: o.bad_area,
-                };
-            });
-    }
-    fn steps(&self) -> &[ElemStep] {
-        &self.steps
-    }
-    fn settle(&mut self) -> Option<(u32, &'static str)> {
-        settle_common(
-            &mut self.alive,
-            &self.steps,
-            &self.le,
-            "has a zero or negative area (inverted element)",
-        )
-    }
-    fn alive(&self, e: usize) -> bool {
-        self.alive[e]
-    }
-    fn energy(&self) -> f64 {
-        self.state.iter().map(|s| s.eint).sum()
-    }
-    fn energy_parts(&self) -> (f64, f64) {
-        (0.0, self.state.iter().map(|s| s.eplas).sum())
-    }
-    fn rows(&self) -> Vec<ElemRow> {
-        (0..self.le.global.len())
-            .map(|e| {
-                let n = self.sections[self.section[e] as usize].n_ip.max(1);
-                let sig = &self.sig[e * self.nip..e * self.nip + n];
-                let mean = |k: usize| sig.iter().map(|s| s[k]).sum::<f64>() / n as f64;
-                let epsp = self.eps_p[e * self.nip..e * self.nip + n]
-                    .iter()
-                    .fold(0.0f64, |a, &b| a.max(b));
-                let st = &self.state[e];
-                (
-                    self.le.global[e],
-                    [
-                        mean(0),
-                        mean(1),
-                        mean(2),
-                        epsp,
-                        st.thick,
-                        st.eint,
-                        if self.alive[e] { 0.0 } else { 1.0 },
-                    ],
-                )
-            })
-            .collect()
-    }
-}
+shell_block!(
+    Shell4Block,
+    ElementKind::Shell4,
+    4,
+    Shell4State,
+    shell4::shell4_init,
+    shell4::shell4_step,
+    false
+);
+shell_block!(
+    Shell3Block,
+    ElementKind::Shell3,
+    3,
+    Shell3State,
+    shell3::shell3_init,
+    shell3::shell3_step,
+    true
+);
 
 // ---- solids ------------------------------------------------------------------
 
@@ -571,10 +442,7 @@ macro_rules! solid_block {
                 self.alive[e]
             }
             fn energy(&self) -> f64 {
-                self.state
-                    .iter()
-                    .map(|s| s.eint + solid_hourglass_energy(s))
-                    .sum()
+                self.state.iter().map(|s| s.eint + hourglass_of(s)).sum()
             }
             fn rows(&self) -> Vec<ElemRow> {
                 (0..self.le.global.len())
@@ -588,7 +456,7 @@ macro_rules! solid_block {
                                 s.sig[3],
                                 s.eps_p,
                                 0.0,
-                                s.eint + solid_hourglass_energy(s),
+                                s.eint + hourglass_of(s),
                                 if self.alive[e] { 0.0 } else { 1.0 },
                             ],
                         )
@@ -599,8 +467,19 @@ macro_rules! solid_block {
     };
 }
 
+/// Hourglass energy kept by an element state (0 for elements without hourglass modes).
 trait HourglassEnergy {
     fn hourglass_energy(&self) -> f64;
+}
+impl HourglassEnergy for Shell4State {
+    fn hourglass_energy(&self) -> f64 {
+        self.ehg
+    }
+}
+impl HourglassEnergy for Shell3State {
+    fn hourglass_energy(&self) -> f64 {
+        0.0
+    }
 }
 impl HourglassEnergy for Hex8State {
     fn hourglass_energy(&self) -> f64 {
@@ -612,7 +491,7 @@ impl HourglassEnergy for Tet4State {
         0.0
     }
 }
-fn solid_hourglass_energy<S: HourglassEnergy>(s: &S) -> f64 {
+fn hourglass_of<S: HourglassEnergy>(s: &S) -> f64 {
     s.hourglass_energy()
 }
 
