@@ -6,6 +6,7 @@
 //! MPI lives only in `parallel`.
 
 pub mod deck;
+pub mod contact;
 pub mod domain;
 pub mod element;
 pub mod kinematics;

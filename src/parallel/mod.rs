@@ -200,4 +200,45 @@ impl World {
             }
         });
     }
+
+    /// Maximum over ranks of each entry.
+    pub fn max_f64(&self, v: &mut [f64]) {
+        use mpi::collective::SystemOperation;
+        let send = v.to_vec();
+        self.comm
+            .all_reduce_into(&send[..], v, SystemOperation::max());
+    }
+
+    /// Sends `send[r]` to every rank r (itself included) and returns what each
+    /// rank sent here, in rank order (an all-to-all with variable counts).
+    pub fn alltoallv_u64(&self, send: &[Vec<u64>]) -> Vec<Vec<u64>> {
+        use mpi::datatype::{Partition, PartitionMut};
+        let n = self.size() as usize;
+        assert_eq!(send.len(), n);
+        let counts: Vec<i32> = send.iter().map(|s| s.len() as i32).collect();
+        let mut rcounts = vec![0i32; n];
+        self.comm.all_to_all_into(&counts[..], &mut rcounts[..]);
+        let displs = |c: &[i32]| -> Vec<i32> {
+            c.iter()
+                .scan(0, |a, &x| {
+                    let d = *a;
+                    *a += x;
+                    Some(d)
+                })
+                .collect()
+        };
+        let sd = displs(&counts);
+        let rd = displs(&rcounts);
+        let flat: Vec<u64> = send.iter().flatten().copied().collect();
+        let total: i32 = rcounts.iter().sum();
+        let mut buf = vec![0u64; total as usize];
+        {
+            let sp = Partition::new(&flat[..], &counts[..], &sd[..]);
+            let mut rp = PartitionMut::new(&mut buf[..], &rcounts[..], &rd[..]);
+            self.comm.all_to_all_varcount_into(&sp, &mut rp);
+        }
+        (0..n)
+            .map(|r| buf[rd[r] as usize..(rd[r] + rcounts[r]) as usize].to_vec())
+            .collect()
+    }
 }

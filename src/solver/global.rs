@@ -34,6 +34,8 @@ pub struct GlobalData {
     pub added_mass: f64,
     /// Global indices of the /TH/NODE nodes, in the order the deck lists them.
     pub th_nodes: Vec<u32>,
+    /// Contact interfaces, resolved (empty without /INTER).
+    pub contact: crate::contact::setup::ContactSetup,
 }
 
 impl GlobalData {
@@ -60,6 +62,7 @@ impl GlobalData {
             total_mass: m.mass.total,
             added_mass: m.mass.added_total,
             th_nodes: Vec::new(),
+            contact: Default::default(),
         }
     }
 }

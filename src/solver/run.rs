@@ -3,6 +3,7 @@
 use super::assembly::{key, AssemblyPlan, SLOT};
 use super::blocks::{make_block, Block};
 use super::global::GlobalData;
+use crate::contact::{ContactStep, ContactSystem};
 use super::listing::{format_row, Listing, Row, HEADER};
 use crate::deck::{self, Dof, ElementKind, EngineFile, ReadOptions};
 use crate::domain::{self, Subdomain};
@@ -87,6 +88,14 @@ fn prepare(opts: &RunOptions, nranks: usize) -> Result<Prepared, String> {
     let sds = domain::split(&m, &p.part, nranks);
     let rbs = initial_rigid_bodies(&m);
     let mut g = GlobalData::from_model(&m, eng);
+    // Contact: which ranks hold each node, then the interfaces' static data.
+    let mut holders: Vec<Vec<u32>> = vec![Vec::new(); m.nodes.ids.len()];
+    for sd in &sds {
+        for &gn in &sd.node_global {
+            holders[gn as usize].push(sd.rank);
+        }
+    }
+    g.contact = crate::contact::setup::build(&m, &holders)?;
     for th in m.time_histories.iter().filter(|t| t.kind == "NODE") {
         for &id in &th.objects {
             let i = m.nodes.ids.binary_search(&id).map_err(|_| {
@@ -201,14 +210,75 @@ fn check_supported(m: &Model) -> Result<(), String> {
             return unsupported("/RBODY with a sensor, skew, IKREM or surface", &r.card.loc);
         }
     }
-    if let Some(i) = m.interfaces.first() {
-        return Err(format!(
-            "{}: /INTER/TYPE{}: contact interfaces are not computed by the engine yet",
-            i.card.loc,
-            i.card.type_number()
-        ));
+    for i in &m.interfaces {
+        check_interface(&i.card)?;
     }
     Ok(())
+}
+
+/// Interface options the engine does not compute are refused by name.
+fn check_interface(c: &deck::InterfaceCard) -> Result<(), String> {
+    use deck::InterfaceKind as K;
+    let kw = format!("{}: /INTER/TYPE{}/{}", c.loc, c.type_number(), c.id);
+    let no = |what: &str| Err(format!("{kw}: {what} is not supported by the engine yet"));
+    match &c.kind {
+        K::Type2(_) => no("TYPE2 (tied interface)"),
+        K::Type11(_) => no("TYPE11 (edge to edge)"),
+        K::Type3(t) => {
+            if t.idel != 0 {
+                return no("Idel (segment deletion)");
+            }
+            Ok(())
+        }
+        K::Type5(t) => {
+            if t.sens_id != 0 {
+                return no("an activation sensor (sens_ID)");
+            }
+            if t.idel != 0 {
+                return no("Idel (segment deletion)");
+            }
+            if t.inacti != 0 {
+                return no("Inacti (moving nodes out of initial penetrations)");
+            }
+            if t.ptlim < 1e29 {
+                return no("a tangential pressure limit (Ptlim)");
+            }
+            Ok(())
+        }
+        K::Type7(t) => {
+            if t.sens_id != 0 {
+                return no("an activation sensor (sens_ID)");
+            }
+            if t.ithe != 0 {
+                return no("heat transfer (Ithe = 1)");
+            }
+            if t.icurv != 0 {
+                return no("a curved gap envelope (Icurv)");
+            }
+            if t.iadm != 0 {
+                return no("adaptive meshing (Iadm)");
+            }
+            if t.ists != 0 {
+                return no("surface-to-surface contact (Ists)");
+            }
+            if t.fct_idf != 0 || t.fric_id != 0 {
+                return no("friction from a function or /FRICTION (fct_IDF, fric_ID)");
+            }
+            if t.ibag == 1 {
+                return no("airbag vent closure (Ibag = 1)");
+            }
+            if t.idel != 1000 && t.idel != 0 {
+                return no("Idel (node and segment deletion)");
+            }
+            if t.inacti == 3 {
+                return no("Inacti = 3 (moving nodes out of initial penetrations)");
+            }
+            if t.ifric == 4 {
+                return no("Ifric = 4 (exponential decay law)");
+            }
+            Ok(())
+        }
+    }
 }
 
 /// Rigid bodies at t = 0: mass, centre, inertia from the model; velocity the
@@ -442,6 +512,35 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
     let mut contrib = vec![[0.0f64; SLOT]; slot_meta.len()];
     let mut fint = vec![[0.0f64; SLOT]; n];
     let mut fext = vec![[0.0f64; SLOT]; n];
+    // Contact: forces and stiffness per local node, summed in a fixed global order.
+    let mut contact = ContactSystem::new(g.contact.clone(), &sd, &g.node_ids);
+    contact.always_sort = std::env::var_os("CRASHSIM_SORT_EVERY_CYCLE").is_some();
+    let mut fcont = vec![[0.0f64; 3]; n];
+    let mut kcont = vec![0.0f64; n];
+    let mut release: Vec<(u32, u8)> = Vec::new();
+    let mut contact_forces = |contact: &mut ContactSystem,
+                              x: &[[f64; 3]],
+                              v: &[[f64; 3]],
+                              t: f64,
+                              dt: f64,
+                              fcont: &mut [[f64; 3]],
+                              fixed: &mut [[bool; 6]]|
+     -> Option<ContactStep> {
+        fcont.iter_mut().for_each(|f| *f = [0.0; 3]);
+        kcont.iter_mut().for_each(|k| *k = 0.0);
+        release.clear();
+        let s = contact.compute(world, x, v, &mass, t, dt, fcont, &mut kcont, &mut release);
+        // IBC: an impact releases the secondary node's boundary conditions.
+        for &(l, bits) in &release {
+            for k in 0..3 {
+                if bits >> k & 1 == 1 {
+                    fixed[l as usize][k] = false;
+                }
+            }
+        }
+        s
+    };
+    let mut e_contact = 0.0f64;
 
     // ---- listing ----------------------------------------------------------
     let mut listing = if rank == 0 {
@@ -491,7 +590,8 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
     let stop = compute_all(&mut blocks, &offsets, &x, &v, &vr, 0.0, &mut contrib);
     plan.assemble(world, &contrib, &mut fint);
     external_forces(&g, &fct_index, &cloads, &gravity, &mass, t, &mut fext);
-    let mut step = global_step(world, &g, &blocks, engine.dt_scale, stop, None, cycle, t)?;
+    let cstep = contact_forces(&mut contact, &x, &v, t, 0.0, &mut fcont, &mut fixed);
+    let mut step = global_step(world, &g, &blocks, engine.dt_scale, stop, None, cstep, cycle, t)?;
     let mut dt = step.dt;
     let (ke0, ker0) = kinetic(
         world,
@@ -513,10 +613,12 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
                 ie: f64,
                 ke: f64,
                 ker: f64,
-                w: f64| {
+                w: f64,
+                ec: f64| {
         if let Some(l) = listing {
+            // The balance counts the energy contact took (ec) with the internal energy.
             let err = if e0 + w != 0.0 {
-                100.0 * (ie + ke + ker - e0 - w) / (e0 + w).abs()
+                100.0 * (ie + ec + ke + ker - e0 - w) / (e0 + w).abs()
             } else {
                 0.0
             };
@@ -537,7 +639,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
             }));
         }
     };
-    emit(&mut listing, cycle, t, dt, &step, 0.0, ke0, ker0, 0.0);
+    emit(&mut listing, cycle, t, dt, &step, 0.0, ke0, ker0, 0.0, 0.0);
     let mut dt_prev = 0.0f64;
     let th_period = engine.th_period.unwrap_or(f64::INFINITY);
     let th_local: Vec<(usize, u32)> = g
@@ -595,7 +697,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
             if mass[l] > 0.0 {
                 for k in 0..3 {
                     if !fixed[l][k] {
-                        v[l][k] += (fext[l][k] - fint[l][k]) / mass[l] * dt_v;
+                        v[l][k] += (fext[l][k] - fint[l][k] + fcont[l][k]) / mass[l] * dt_v;
                     }
                 }
             }
@@ -617,7 +719,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
                         .filter(|(l, _)| owned[*l as usize])
                         .map(|&(l, gl)| {
                             let l = l as usize;
-                            let f = [0, 1, 2].map(|k| fext[l][k] - fint[l][k]);
+                            let f = [0, 1, 2].map(|k| fext[l][k] - fint[l][k] + fcont[l][k]);
                             let m = [0, 1, 2].map(|k| fext[l][3 + k] - fint[l][3 + k]);
                             NodeLoad {
                                 node: gl,
@@ -753,6 +855,8 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
                 for k in 0..3 {
                     w_ext += fext[l][k] * v[l][k] * dt_v;
                     w_ext += fext[l][3 + k] * vr[l][k] * dt_v;
+                    // Energy the contact forces take (elastic, damping, friction).
+                    e_contact -= fcont[l][k] * v[l][k] * dt_v;
                 }
             }
         }
@@ -798,7 +902,8 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
         let stop = compute_all(&mut blocks, &offsets, &x, &v, &vr, dt, &mut contrib);
         plan.assemble(world, &contrib, &mut fint);
         external_forces(&g, &fct_index, &cloads, &gravity, &mass, t, &mut fext);
-        step = match global_step(world, &g, &blocks, engine.dt_scale, stop, nan_msg, cycle, t) {
+        let cstep = contact_forces(&mut contact, &x, &v, t, dt, &mut fcont, &mut fixed);
+        step = match global_step(world, &g, &blocks, engine.dt_scale, stop, nan_msg, cstep, cycle, t) {
             Ok(s) => s,
             Err(e) => break Err(e),
         };
@@ -819,7 +924,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
             let mut ie = [blocks.iter().map(|b| b.energy()).sum::<f64>()];
             world.sum_f64(&mut ie);
             e_int = ie[0];
-            let mut w = [w_ext];
+            let mut w = [w_ext, e_contact];
             world.sum_f64(&mut w);
             let (ke, ker) = kinetic(
                 world,
@@ -832,14 +937,41 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
                 &bodies,
                 &local_bodies,
             );
-            emit(&mut listing, cycle, t, dt, &step, e_int, ke, ker, w[0]);
+            emit(&mut listing, cycle, t, dt, &step, e_int, ke, ker, w[0], w[1]);
+            if std::env::var_os("CRASHSIM_DEBUG_NODEKE").is_some() {
+                let mut groups: std::collections::BTreeMap<u64, f64> = Default::default();
+                for l in 0..n {
+                    let id = g.node_ids[sd.node_global[l] as usize];
+                    let e = 0.5 * mass[l] * (v[l][0] * v[l][0] + v[l][1] * v[l][1] + v[l][2] * v[l][2]);
+                    *groups.entry(id / 10).or_default() += e;
+                }
+                eprintln!("KE t={t:.3e} {:?}", groups.iter().map(|(k, e)| format!("{k}:{e:.3}")).collect::<Vec<_>>());
+            }
+            // Contact force resultants per interface (secondary side).
+            if !contact.is_empty() {
+                let mut r: Vec<f64> = contact
+                    .sums
+                    .iter()
+                    .flat_map(|s| [s.f_normal[0], s.f_normal[1], s.f_normal[2], s.f_tangent[0], s.f_tangent[1], s.f_tangent[2], s.pairs as f64])
+                    .collect();
+                world.sum_f64(&mut r);
+                if let Some(l) = &mut listing {
+                    for (i, it) in contact.setup.interfaces.iter().enumerate() {
+                        let q = &r[7 * i..7 * i + 7];
+                        l.line(&format!(
+                            "     INTER {:>8} TYPE{:<2} NORMAL FORCE {:>12.5E} {:>12.5E} {:>12.5E}  TANGENT {:>12.5E} {:>12.5E} {:>12.5E}  PAIRS {:>6}",
+                            it.id, it.type_number, q[0], q[1], q[2], q[3], q[4], q[5], q[6] as u64
+                        ));
+                    }
+                }
+            }
         }
     };
     let elapsed = started.elapsed().as_secs_f64();
     let looped = loop_started.elapsed().as_secs_f64();
     // Energy breakdown (collective: every rank takes part, even after a stop).
     let final_energies = {
-        let mut e = [0.0f64; 5];
+        let mut e = [0.0f64; 6];
         for b in &blocks {
             let (hg, pl) = b.energy_parts();
             e[0] += b.energy();
@@ -848,6 +980,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
         }
         e[3] = w_ext;
         e[4] = wall_work;
+        e[5] = e_contact;
         world.sum_f64(&mut e);
         let (ke, ker) = kinetic(
             world,
@@ -860,7 +993,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
             &bodies,
             &local_bodies,
         );
-        Some([e[0], e[1], e[2], ke, ker, e[3], e[4]])
+        Some([e[0], e[1], e[2], ke, ker, e[3], e[4], e[5]])
     };
     if let Some(l) = &mut listing {
         l.line("");
@@ -872,8 +1005,8 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
         if let Some(e) = &final_energies {
             l.line(&format!("     ENERGIES AT THE END     : internal {:.6E} (hourglass {:.6E}, plastic work {:.6E}), kinetic {:.6E} + rotational {:.6E}", e[0], e[1], e[2], e[3], e[4]));
             l.line(&format!(
-                "                               external work {:.6E}, rigid-wall work {:.6E}",
-                e[5], e[6]
+                "                               external work {:.6E}, rigid-wall work {:.6E}, contact energy {:.6E}",
+                e[5], e[6], e[7]
             ));
         }
         l.line(&format!("     ELAPSED TIME            : {elapsed:>10.3} s   (set-up {:.3} s, cycles {looped:.3} s)", elapsed - looped));
@@ -967,6 +1100,7 @@ fn global_step(
     scale: f64,
     problem: Option<(ElementKind, u32, &'static str)>,
     node_problem: Option<String>,
+    contact: Option<ContactStep>,
     cycle: u64,
     t: f64,
 ) -> Result<Step, RunError> {
@@ -988,6 +1122,14 @@ fn global_step(
                     best = cand;
                 }
             }
+        }
+    }
+    // Contact steps (EQ. 8.8.5.1, 8.8.5.2) compete in the same minimum; ties
+    // go to elements, then nodal, then interface steps.
+    if let Some(c) = contact {
+        let ki = if c.what == "NODE" { 100 } else { 101 };
+        if c.dt < best.0 || (c.dt == best.0 && (ki, c.id) < (best.1, best.2)) {
+            best = (c.dt, ki, c.id);
         }
     }
     let prob = problem.map(|(k, ge, m)| {
@@ -1020,7 +1162,11 @@ fn global_step(
     }
     Ok(Step {
         dt: scale * d,
-        what: kind_name(crate::deck::Elements::KINDS[ki]),
+        what: match ki {
+            100 => "NODE",
+            101 => "INTER",
+            _ => kind_name(crate::deck::Elements::KINDS[ki]),
+        },
         id,
     })
 }

@@ -1,0 +1,182 @@
+//! Contact across ranks (ARCHITECTURE "Parallel design"): ghost nodes and
+//! force routing.
+//!
+//! - **Ghosts.** When the candidate lists are rebuilt, every rank publishes,
+//!   per interface, the box of the secondary nodes it owns, grown by the gap,
+//!   twice the sorting margin and the largest segment size. Each rank then
+//!   sends the owners' main-surface nodes that fall in another rank's box; from
+//!   then on, until the next sort, only their positions and velocities travel
+//!   (every cycle). Any segment within reach of a secondary node has all its
+//!   nodes inside that node's box, so each node–segment pair is found on the
+//!   one rank that owns the secondary node.
+//! - **Forces.** A pair's forces go to every rank that holds the node (its
+//!   holders), keyed by (interface, pass, secondary node, segment, corner);
+//!   each rank sums a node's contributions in key order, so the sum is the
+//!   same bits on every rank and for any number of ranks.
+
+use super::geometry::V3;
+use super::search::Aabb;
+use super::setup::ContactSetup;
+use crate::parallel::World;
+
+/// Who sends which contact nodes to whom every cycle.
+#[derive(Clone, Debug, Default)]
+pub struct GhostPlan {
+    pub ranks: Vec<u32>,
+    pub send: Vec<Vec<u32>>,
+    pub recv: Vec<Vec<u32>>,
+}
+
+fn box_to(b: &Aabb) -> [f64; 6] {
+    [b.min[0], b.min[1], b.min[2], b.max[0], b.max[1], b.max[2]]
+}
+fn box_from(a: &[f64; 6]) -> Aabb {
+    Aabb {
+        min: [a[0], a[1], a[2]],
+        max: [a[3], a[4], a[5]],
+    }
+}
+
+impl GhostPlan {
+    /// Builds the plan (collective). `my_boxes[i]`: this rank's grown box of
+    /// interface i; `main_owned[i]`: the main-surface cnodes of interface i that
+    /// this rank owns.
+    pub fn build(world: &World, my_boxes: &[Aabb], main_owned: &[Vec<u32>], cx: &[V3]) -> GhostPlan {
+        let me = world.rank() as usize;
+        let n = world.size() as usize;
+        if n == 1 {
+            return GhostPlan::default();
+        }
+        let mine: Vec<[f64; 6]> = my_boxes.iter().map(box_to).collect();
+        let all = world.allgather(&mine);
+        let mut send: Vec<Vec<u64>> = vec![Vec::new(); n];
+        for (q, boxes) in all.iter().enumerate() {
+            if q == me {
+                continue;
+            }
+            let mut ids: Vec<u32> = Vec::new();
+            for (i, b) in boxes.iter().enumerate() {
+                let b = box_from(b);
+                if b.is_empty() {
+                    continue;
+                }
+                ids.extend(main_owned[i].iter().copied().filter(|&c| b.contains(cx[c as usize])));
+            }
+            ids.sort_unstable();
+            ids.dedup();
+            send[q] = ids.into_iter().map(u64::from).collect();
+        }
+        let got = world.alltoallv_u64(&send);
+        let mut plan = GhostPlan::default();
+        for q in 0..n {
+            if q == me || (send[q].is_empty() && got[q].is_empty()) {
+                continue;
+            }
+            plan.ranks.push(q as u32);
+            plan.send.push(send[q].iter().map(|&c| c as u32).collect());
+            plan.recv.push(got[q].iter().map(|&c| c as u32).collect());
+        }
+        plan
+    }
+
+    /// Ghost positions and velocities: owners send, the others receive (collective
+    /// among the plan's ranks).
+    pub fn exchange(&self, world: &World, cx: &mut [V3], cv: &mut [V3]) {
+        if self.ranks.is_empty() {
+            return;
+        }
+        let send: Vec<Vec<f64>> = self
+            .send
+            .iter()
+            .map(|ids| {
+                let mut b = Vec::with_capacity(ids.len() * 6);
+                for &c in ids {
+                    b.extend_from_slice(&cx[c as usize]);
+                    b.extend_from_slice(&cv[c as usize]);
+                }
+                b
+            })
+            .collect();
+        let mut recv: Vec<Vec<f64>> = self.recv.iter().map(|ids| vec![0.0; ids.len() * 6]).collect();
+        world.exchange_f64(&self.ranks, &send, &mut recv);
+        for (ids, buf) in self.recv.iter().zip(&recv) {
+            for (j, &c) in ids.iter().enumerate() {
+                let b = &buf[6 * j..6 * j + 6];
+                cx[c as usize] = [b[0], b[1], b[2]];
+                cv[c as usize] = [b[3], b[4], b[5]];
+            }
+        }
+    }
+
+    pub fn ghost_count(&self) -> usize {
+        self.recv.iter().map(|r| r.len()).sum()
+    }
+}
+
+/// One contribution of a pair to one node.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Contribution {
+    /// The node (cnode).
+    pub c: u32,
+    /// Sort key: (interface, pass, secondary node global id) and (segment, corner).
+    pub hi: u64,
+    pub lo: u64,
+    pub f: V3,
+    /// Stiffness added to the node (nodal time step).
+    pub k: f64,
+    /// IBC bits (x = 1, y = 2, z = 4) to release on the secondary node at impact.
+    pub ibc: u8,
+}
+
+impl Contribution {
+    pub fn key(iface: usize, pass: usize, sec_global: u32, seg: u32, corner: u8) -> (u64, u64) {
+        (
+            ((iface as u64) << 40) | ((pass as u64) << 32) | sec_global as u64,
+            ((seg as u64) << 8) | corner as u64,
+        )
+    }
+    fn encode(&self, out: &mut Vec<u64>) {
+        out.extend_from_slice(&[
+            self.c as u64,
+            self.hi,
+            self.lo,
+            self.f[0].to_bits(),
+            self.f[1].to_bits(),
+            self.f[2].to_bits(),
+            self.k.to_bits(),
+            self.ibc as u64,
+        ]);
+    }
+    fn decode(b: &[u64]) -> Contribution {
+        Contribution {
+            c: b[0] as u32,
+            hi: b[1],
+            lo: b[2],
+            f: [f64::from_bits(b[3]), f64::from_bits(b[4]), f64::from_bits(b[5])],
+            k: f64::from_bits(b[6]),
+            ibc: b[7] as u8,
+        }
+    }
+}
+
+/// Sends each contribution to every holder of its node; returns the ones for
+/// this rank's nodes, sorted by (node, key): the fixed summation order.
+pub fn route(world: &World, setup: &ContactSetup, out: Vec<Contribution>) -> Vec<Contribution> {
+    let n = world.size() as usize;
+    let mut got: Vec<Contribution> = if n == 1 {
+        out
+    } else {
+        let mut send: Vec<Vec<u64>> = vec![Vec::new(); n];
+        for c in &out {
+            for &r in setup.holders_of(c.c) {
+                c.encode(&mut send[r as usize]);
+            }
+        }
+        let recv = world.alltoallv_u64(&send);
+        recv.iter()
+            .flat_map(|b| b.chunks_exact(8).map(Contribution::decode))
+            .collect()
+    };
+    got.sort_unstable_by(|a, b| (a.c, a.hi, a.lo).cmp(&(b.c, b.hi, b.lo)));
+    got
+}

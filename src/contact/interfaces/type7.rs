@@ -1,0 +1,188 @@
+//! TYPE7 node-to-segment penalty contact (theory manual §8.8): both sides,
+//! edges and corners; F = K0·P·Gap/(Gap − P) + C·dP/dt with C = VISs·√(2·Kt·M)
+//! (EQ. 8.8.9.1, 8.8.3.3); friction by Ifric/Iform/Ifiltr (EQ. 8.8.3.4–5).
+
+use super::{PairForce, PairState};
+use crate::contact::friction::{self, FrictionLaw};
+use crate::contact::geometry::{self as geo, V3};
+use crate::contact::stiffness;
+
+/// A TYPE7 pair's inputs.
+pub struct Pair<'a> {
+    pub xs: V3,
+    pub vs: V3,
+    pub ms: f64,
+    pub xm: &'a [V3; 4],
+    pub vm: &'a [V3; 4],
+    pub tri: bool,
+    /// Initial stiffness K0 of the pair (Istf).
+    pub k0: f64,
+    /// The pair's gap (constant, variable, or reduced for an initial penetration).
+    pub gap: f64,
+    pub viss: f64,
+    pub friction: &'a FrictionLaw,
+    /// Area of the main segment, for the contact pressure of the friction laws.
+    pub area: f64,
+    pub dt: f64,
+}
+
+/// The pair's force, or `None` when the node is outside the gap (or at the
+/// segment's mid-plane, where it is deactivated, §8.8.11.1).
+pub fn pair(p: &Pair, st: &mut PairState) -> Option<PairForce> {
+    let pr = geo::project(p.xs, p.xm, p.tri);
+    if pr.dist >= p.gap || pr.dist < 1e-10 * p.gap {
+        st.ft = [0.0; 3];
+        st.ff = [0.0; 3];
+        return None;
+    }
+    let pen = p.gap - pr.dist;
+    let (f_el, kt) = stiffness::type7_reaction(p.k0, p.gap, pen);
+    let vc = geo::interpolate(&pr.shape, p.vm);
+    let vrel = geo::sub(p.vs, vc);
+    // Penetration rate: the node closing on the contact point.
+    let dpdt = -geo::dot(vrel, pr.dir);
+    let c = p.viss * (2.0 * kt * p.ms).sqrt();
+    let f_n = (f_el + c * dpdt).max(0.0);
+    let mut f_t = [0.0; 3];
+    if p.friction.active() && f_n > 0.0 {
+        let vt = friction::tangential(vrel, pr.dir);
+        let pressure = if p.area > 0.0 { f_n / p.area } else { 0.0 };
+        let mu = p.friction.mu(pressure, geo::norm(vt));
+        let k = if p.friction.iform == 1 { kt } else { p.k0 };
+        let raw = friction::tangential_force(p.friction, mu, f_n, vt, pr.dir, k, p.ms, p.dt, &mut st.ft);
+        let a = p.friction.filter_alpha(p.dt);
+        st.ff = geo::add(geo::scale(raw, a), geo::scale(st.ff, 1.0 - a));
+        f_t = st.ff;
+    }
+    let fs = geo::add(geo::scale(pr.dir, f_n), f_t);
+    let dt_kin = if dpdt > 0.0 {
+        0.5 * pr.dist / dpdt
+    } else {
+        f64::INFINITY
+    };
+    Some(PairForce {
+        fs,
+        shape: pr.shape,
+        kt,
+        dt_kin,
+        f_n,
+        f_t,
+        pen,
+        dir: pr.dir,
+        point: pr.point,
+    })
+}
+
+/// A tied pair (ITIED 1, 2): a spring K0 with critical damping VISs holds the
+/// node at the point of the segment where it was tied. With ITIED = 1 the tie
+/// lets go when the spring pulls the node towards the segment (rebound).
+pub fn tied(p: &Pair, st: &mut PairState, itied: i64) -> Option<PairForce> {
+    let (shape, offset) = st.tie?;
+    let anchor = geo::add(geo::interpolate(&shape, p.xm), offset);
+    let vc = geo::interpolate(&shape, p.vm);
+    let err = geo::sub(p.xs, anchor);
+    let vrel = geo::sub(p.vs, vc);
+    let c = p.viss.max(0.05) * (2.0 * p.k0 * p.ms).sqrt();
+    let fs = geo::sub(geo::scale(err, -p.k0), geo::scale(vrel, c));
+    let ol = geo::norm(offset);
+    let dir = if ol > 0.0 { geo::scale(offset, 1.0 / ol) } else { [0.0; 3] };
+    let f_n = geo::dot(fs, dir);
+    if itied == 1 && f_n < 0.0 {
+        st.tie = None;
+        return None;
+    }
+    Some(PairForce {
+        fs,
+        shape,
+        kt: p.k0,
+        dt_kin: f64::INFINITY,
+        f_n: f_n.max(0.0),
+        f_t: geo::sub(fs, geo::scale(dir, f_n)),
+        pen: 0.0,
+        dir,
+        point: anchor,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn plate() -> [V3; 4] {
+        [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 1.0, 0.0], [0.0, 1.0, 0.0]]
+    }
+
+    fn input<'a>(xs: V3, vs: V3, xm: &'a [V3; 4], vm: &'a [V3; 4], law: &'a FrictionLaw) -> Pair<'a> {
+        Pair {
+            xs,
+            vs,
+            ms: 1.0,
+            xm,
+            vm,
+            tri: false,
+            k0: 1000.0,
+            gap: 0.1,
+            viss: 0.0,
+            friction: law,
+            area: 1.0,
+            dt: 1e-3,
+        }
+    }
+
+    #[test]
+    fn both_sides_and_balanced_moments() {
+        let xm = plate();
+        let vm = [[0.0; 3]; 4];
+        let law = FrictionLaw::none();
+        let mut st = PairState::default();
+        let up = pair(&input([0.25, 0.5, 0.05], [0.0; 3], &xm, &vm, &law), &mut st).unwrap();
+        assert!(up.fs[2] > 0.0);
+        // F = K0·P·Gap/(Gap − P) with P = 0.05: 1000·0.05·2 = 100.
+        assert!((up.fs[2] - 100.0).abs() < 1e-9);
+        let down = pair(&input([0.25, 0.5, -0.05], [0.0; 3], &xm, &vm, &law), &mut st).unwrap();
+        assert!((down.fs[2] + 100.0).abs() < 1e-9);
+        // Segment forces −N_i·F have the same moment about the node as −F at the contact point.
+        let mut m = [0.0; 3];
+        for i in 0..4 {
+            let f = geo::scale(up.fs, -up.shape[i]);
+            m = geo::add(m, geo::cross(xm[i], f));
+        }
+        let m_ref = geo::cross(up.point, geo::scale(up.fs, -1.0));
+        for k in 0..3 {
+            assert!((m[k] - m_ref[k]).abs() < 1e-12);
+        }
+        // Outside the gap: nothing.
+        assert!(pair(&input([0.25, 0.5, 0.2], [0.0; 3], &xm, &vm, &law), &mut st).is_none());
+    }
+
+    #[test]
+    fn closing_speed_gives_damping_and_a_kinematic_step() {
+        let xm = plate();
+        let vm = [[0.0; 3]; 4];
+        let law = FrictionLaw::none();
+        let mut st = PairState::default();
+        let mut inp = input([0.5, 0.5, 0.05], [0.0, 0.0, -2.0], &xm, &vm, &law);
+        inp.viss = 0.05;
+        let f = pair(&inp, &mut st).unwrap();
+        let kt = 1000.0 * 4.0;
+        assert!((f.kt - kt).abs() < 1e-9);
+        let expect = 100.0 + 0.05 * (2.0f64 * kt).sqrt() * 2.0;
+        assert!((f.fs[2] - expect).abs() < 1e-9);
+        // EQ. 8.8.5.1: 0.5·(Gap − P)/(dP/dt) = 0.5·0.05/2.
+        assert!((f.dt_kin - 0.0125).abs() < 1e-15);
+    }
+
+    #[test]
+    fn coulomb_friction_opposes_sliding() {
+        let xm = plate();
+        let vm = [[0.0; 3]; 4];
+        let law = FrictionLaw { fric: 0.3, ..FrictionLaw::none() };
+        let mut st = PairState::default();
+        let inp = input([0.5, 0.5, 0.05], [5.0, 0.0, 0.0], &xm, &vm, &law);
+        let mut f = pair(&inp, &mut st).unwrap();
+        for _ in 0..1000 {
+            f = pair(&inp, &mut st).unwrap();
+        }
+        assert!((f.fs[0] + 0.3 * 100.0).abs() < 1e-9, "{:?}", f.fs);
+    }
+}

@@ -1,0 +1,738 @@
+//! Contact interfaces, laid out as Tribol does: `search` finds candidate
+//! pairs, `geometry` measures them, `stiffness`/`gap`/`friction` turn a
+//! measured gap into a force, `interfaces` composes them per interface type,
+//! and `exchange` carries ghosts and forces between ranks.
+//!
+//! [`ContactSystem`] is one rank's runtime: it keeps the positions and
+//! velocities of the contact nodes it holds or receives as ghosts, rebuilds
+//! candidate lists when the largest motion since the last sort exceeds half
+//! the sorting margin (decided globally), computes the pairs of the secondary
+//! nodes it owns, and returns each node's contact force summed in a fixed
+//! global order.
+
+pub mod exchange;
+pub mod friction;
+pub mod gap;
+pub mod geometry;
+pub mod interfaces;
+pub mod search;
+pub mod setup;
+pub mod stiffness;
+
+use crate::domain::Subdomain;
+use crate::parallel::World;
+use exchange::{Contribution, GhostPlan};
+use geometry::{self as geo, V3};
+use interfaces::{type5, type7, PairForce, PairState};
+use rayon::prelude::*;
+use search::{Aabb, Candidates};
+use setup::{ContactSetup, Law, NONE};
+
+/// Per secondary node memory (owned secondary nodes of a pass).
+#[derive(Clone, Debug, Default)]
+struct NodeState {
+    /// Removed from the interface (Inacti = 1, Fpenmax, dtmin with ITIED = 0).
+    off: bool,
+    /// TYPE5 walk: the closest segment at the last cycle.
+    last_seg: u32,
+    /// Inacti = 2: segments deactivated for this node.
+    off_segs: Vec<u32>,
+    /// Inacti = 5, 6: (segment, corrected gap).
+    gap0: Vec<(u32, f64)>,
+}
+
+/// One pass on this rank: the owned secondary nodes, their candidates and pair memory.
+#[derive(Clone, Debug, Default)]
+struct PassRun {
+    /// Indices into `Pass::sec` of the secondary nodes this rank owns.
+    mine: Vec<u32>,
+    nodes: Vec<NodeState>,
+    cand: Candidates,
+    state: Vec<PairState>,
+    /// TYPE5: one pair state per node (its current segment).
+    state5: Vec<(u32, PairState)>,
+}
+
+/// Per-interface sums over this rank's pairs (diagnostics, summed over ranks by the caller).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct InterfaceSums {
+    /// Normal and tangential force resultants on the secondary side.
+    pub f_normal: V3,
+    pub f_tangent: V3,
+    /// Number of pairs in contact.
+    pub pairs: u64,
+}
+
+/// What set the contact time step.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ContactStep {
+    /// Unscaled time step.
+    pub dt: f64,
+    /// "NODE" (EQ. 8.8.5.2) or "INTER" (EQ. 8.8.5.1).
+    pub what: &'static str,
+    /// Node id or interface id.
+    pub id: u64,
+}
+
+/// Counters for the benchmark.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct ContactTimers {
+    pub sorts: u64,
+    pub search_s: f64,
+    pub force_s: f64,
+    pub exchange_s: f64,
+}
+
+pub struct ContactSystem {
+    pub setup: ContactSetup,
+    /// Local index of each cnode (NONE: not on this rank).
+    local: Vec<u32>,
+    owned: Vec<bool>,
+    /// Local cnodes (held), and the owned ones per interface's main side.
+    held: Vec<u32>,
+    main_owned: Vec<Vec<u32>>,
+    cx: Vec<V3>,
+    cv: Vec<V3>,
+    avail: Vec<bool>,
+    x_sort: Vec<V3>,
+    plan: GhostPlan,
+    runs: Vec<Vec<PassRun>>,
+    sorted_once: bool,
+    /// Sort every cycle (benchmark reference).
+    pub always_sort: bool,
+    pub sums: Vec<InterfaceSums>,
+    pub timers: ContactTimers,
+    node_ids: Vec<u64>,
+}
+
+impl ContactSystem {
+    pub fn new(setup: ContactSetup, sd: &Subdomain, node_ids: &[u64]) -> ContactSystem {
+        let nc = setup.nodes.len();
+        let mut local = vec![NONE; nc];
+        let mut owned = vec![false; nc];
+        let mut held = Vec::new();
+        let mut i = 0usize;
+        for (c, &g) in setup.nodes.iter().enumerate() {
+            while i < sd.node_global.len() && sd.node_global[i] < g {
+                i += 1;
+            }
+            if i < sd.node_global.len() && sd.node_global[i] == g {
+                local[c] = i as u32;
+                owned[c] = sd.owns(i as u32);
+                held.push(c as u32);
+            }
+        }
+        let main_owned = setup
+            .interfaces
+            .iter()
+            .map(|it| {
+                let mut v: Vec<u32> = it
+                    .passes
+                    .iter()
+                    .flat_map(|p| p.segs.iter().flatten().copied())
+                    .filter(|&c| owned[c as usize])
+                    .collect();
+                v.sort_unstable();
+                v.dedup();
+                v
+            })
+            .collect();
+        let runs = setup
+            .interfaces
+            .iter()
+            .map(|it| {
+                it.passes
+                    .iter()
+                    .map(|p| {
+                        let mine: Vec<u32> = (0..p.sec.len() as u32)
+                            .filter(|&k| owned[p.sec[k as usize] as usize])
+                            .collect();
+                        let nodes = mine
+                            .iter()
+                            .map(|&k| NodeState {
+                                last_seg: p.sec_start_seg.get(k as usize).copied().unwrap_or(NONE),
+                                ..Default::default()
+                            })
+                            .collect();
+                        let n = mine.len();
+                        PassRun {
+                            mine,
+                            nodes,
+                            cand: Candidates { ptr: vec![0; n + 1], segs: Vec::new() },
+                            state: Vec::new(),
+                            state5: vec![(NONE, PairState::default()); n],
+                        }
+                    })
+                    .collect()
+            })
+            .collect();
+        let sums = vec![InterfaceSums::default(); setup.interfaces.len()];
+        ContactSystem {
+            local,
+            owned,
+            held,
+            main_owned,
+            cx: setup.x0.clone(),
+            cv: vec![[0.0; 3]; nc],
+            avail: vec![false; nc],
+            x_sort: setup.x0.clone(),
+            plan: GhostPlan::default(),
+            runs,
+            sorted_once: false,
+            always_sort: false,
+            sums,
+            timers: ContactTimers::default(),
+            node_ids: setup.nodes.iter().map(|&g| node_ids[g as usize]).collect(),
+            setup,
+        }
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.setup.is_empty()
+    }
+
+    /// Ghost nodes this rank currently receives.
+    pub fn ghost_count(&self) -> usize {
+        self.plan.ghost_count()
+    }
+
+    /// Secondary nodes this rank owns (all passes, all interfaces).
+    pub fn owned_secondary(&self) -> usize {
+        self.runs.iter().flatten().map(|r| r.mine.len()).sum()
+    }
+
+    /// Contact forces at the current state, added to `fc` (local nodes, in the
+    /// fixed order of their keys); contact stiffness per node added to `kc`.
+    /// Returns the smallest unscaled contact time step on this rank and the
+    /// local nodes whose boundary conditions an impact releases (IBC).
+    #[allow(clippy::too_many_arguments)]
+    pub fn compute(
+        &mut self,
+        world: &World,
+        x: &[V3],
+        v: &[V3],
+        mass: &[f64],
+        t: f64,
+        dt: f64,
+        fc: &mut [V3],
+        kc: &mut [f64],
+        release: &mut Vec<(u32, u8)>,
+    ) -> Option<ContactStep> {
+        if self.is_empty() {
+            return None;
+        }
+        let t0 = std::time::Instant::now();
+        for &c in &self.held {
+            let l = self.local[c as usize] as usize;
+            self.cx[c as usize] = x[l];
+            self.cv[c as usize] = v[l];
+        }
+        // Sort decision: largest motion since the last sort against half the smallest margin.
+        let mut motion = [0.0f64];
+        for &c in &self.held {
+            if self.owned[c as usize] {
+                let d = geo::norm(geo::sub(self.cx[c as usize], self.x_sort[c as usize]));
+                motion[0] = motion[0].max(d);
+            }
+        }
+        world.max_f64(&mut motion);
+        let margin = self
+            .setup
+            .interfaces
+            .iter()
+            .map(|i| i.margin)
+            .fold(f64::INFINITY, f64::min);
+        let sort = !self.sorted_once || self.always_sort || 2.0 * motion[0] >= margin;
+        if sort {
+            self.rebuild_plan(world);
+        }
+        self.plan.exchange(world, &mut self.cx, &mut self.cv);
+        self.timers.exchange_s += t0.elapsed().as_secs_f64();
+        if sort {
+            let ts = std::time::Instant::now();
+            self.search();
+            let first = !self.sorted_once;
+            self.sorted_once = true;
+            self.timers.sorts += 1;
+            if first {
+                self.initial_penetrations();
+            }
+            self.timers.search_s += ts.elapsed().as_secs_f64();
+        }
+        let tf = std::time::Instant::now();
+        let (contribs, step) = self.pairs(mass, t, dt);
+        self.timers.force_s += tf.elapsed().as_secs_f64();
+        let te = std::time::Instant::now();
+        let got = exchange::route(world, &self.setup, contribs);
+        self.timers.exchange_s += te.elapsed().as_secs_f64();
+        // Sum in key order (route sorted them).
+        let mut nodal_k: Vec<(u32, f64)> = Vec::new();
+        for c in &got {
+            let l = self.local[c.c as usize];
+            if l == NONE {
+                continue;
+            }
+            let l = l as usize;
+            for k in 0..3 {
+                fc[l][k] += c.f[k];
+            }
+            kc[l] += c.k;
+            if c.ibc != 0 {
+                release.push((l as u32, c.ibc));
+            }
+            if nodal_k.last().map(|e| e.0) != Some(c.c) {
+                nodal_k.push((c.c, 0.0));
+            }
+            nodal_k.last_mut().unwrap().1 += c.k;
+        }
+        // Nodal time step √(2M/K) (EQ. 8.8.5.2) on owned nodes.
+        let mut best = step;
+        for (c, k) in nodal_k {
+            if !self.owned[c as usize] || k <= 0.0 {
+                continue;
+            }
+            let l = self.local[c as usize] as usize;
+            if mass[l] <= 0.0 {
+                continue;
+            }
+            let d = (2.0 * mass[l] / k).sqrt();
+            let cand = ContactStep { dt: d, what: "NODE", id: self.node_ids[c as usize] };
+            if best.is_none_or(|b| (cand.dt, cand.id) < (b.dt, b.id)) {
+                best = Some(cand);
+            }
+        }
+        best
+    }
+
+    /// New ghost plan from the current positions (collective).
+    fn rebuild_plan(&mut self, world: &World) {
+        let boxes: Vec<Aabb> = self
+            .setup
+            .interfaces
+            .iter()
+            .zip(&self.runs)
+            .map(|(it, runs)| {
+                let mut b = Aabb::EMPTY;
+                let mut diag = 0.0f64;
+                for (p, r) in it.passes.iter().zip(runs) {
+                    diag = diag.max(p.max_diag);
+                    for &k in &r.mine {
+                        b.include(self.cx[p.sec[k as usize] as usize]);
+                    }
+                }
+                if b.is_empty() {
+                    return b;
+                }
+                let walk = if it.law == Law::Type5 { 2.0 * diag } else { 0.0 };
+                b.grown(it.max_gap + 2.0 * it.margin + diag + walk)
+            })
+            .collect();
+        self.plan = GhostPlan::build(world, &boxes, &self.main_owned, &self.cx);
+        self.avail.iter_mut().for_each(|a| *a = false);
+        for &c in &self.held {
+            self.avail[c as usize] = true;
+        }
+        for ids in &self.plan.recv {
+            for &c in ids {
+                self.avail[c as usize] = true;
+            }
+        }
+        self.x_sort.clone_from(&self.cx);
+    }
+
+    fn seg_x(&self, seg: &[u32; 4]) -> Option<[V3; 4]> {
+        if seg.iter().all(|&c| self.avail[c as usize]) {
+            Some(seg.map(|c| self.cx[c as usize]))
+        } else {
+            None
+        }
+    }
+
+    /// Broad phase for every TYPE7 pass: candidates within gap + margin, segments
+    /// connected to the node excluded (and, with Irem_gap = 2, segments with a node
+    /// initially closer than 2·Gap); pair memory kept for pairs that remain.
+    fn search(&mut self) {
+        for (ii, it) in self.setup.interfaces.iter().enumerate() {
+            if it.law != Law::Type7 {
+                continue;
+            }
+            for (pi, p) in it.passes.iter().enumerate() {
+                let boxes: Vec<Aabb> = p
+                    .segs
+                    .iter()
+                    .map(|s| match self.seg_x(s) {
+                        Some(x) => Aabb::of_points(&x),
+                        None => Aabb::EMPTY,
+                    })
+                    .collect();
+                let run = &self.runs[ii][pi];
+                let pts: Vec<V3> = run.mine.iter().map(|&k| self.cx[p.sec[k as usize] as usize]).collect();
+                let method = search::choose(&boxes);
+                let raw = search::candidates(&pts, it.max_gap + it.margin, &boxes, method);
+                // Exclusions.
+                let x0 = &self.setup.x0;
+                let mut cand = Candidates { ptr: vec![0], segs: Vec::with_capacity(raw.segs.len()) };
+                for (j, &k) in run.mine.iter().enumerate() {
+                    let s = p.sec[k as usize];
+                    for &m in &raw.segs[raw.ptr[j]..raw.ptr[j + 1]] {
+                        let seg = &p.segs[m as usize];
+                        if seg.contains(&s) {
+                            continue;
+                        }
+                        if it.irem_gap {
+                            let g = it.gap.gapmin;
+                            if seg.iter().any(|&c| geo::norm(geo::sub(x0[c as usize], x0[s as usize])) < 2.0 * g) {
+                                continue;
+                            }
+                        }
+                        cand.segs.push(m);
+                    }
+                    cand.ptr.push(cand.segs.len());
+                }
+                // Keep the memory of pairs that survive.
+                let old = &run.cand;
+                let mut state = Vec::with_capacity(cand.segs.len());
+                for j in 0..run.mine.len() {
+                    let olds = if old.ptr.len() > j + 1 { &old.segs[old.ptr[j]..old.ptr[j + 1]] } else { &[][..] };
+                    for &m in &cand.segs[cand.ptr[j]..cand.ptr[j + 1]] {
+                        let st = match olds.binary_search(&m) {
+                            Ok(q) => run.state[old.ptr[j] + q],
+                            Err(_) => PairState::default(),
+                        };
+                        state.push(st);
+                    }
+                }
+                if std::env::var_os("CRASHSIM_DEBUG_CONTACT").is_some() {
+                    eprintln!("search iface {} pass {pi}: {} sec, {} segs, raw {} cand {} reach {} method {:?}", it.id, run.mine.len(), p.segs.len(), raw.segs.len(), cand.segs.len(), it.max_gap + it.margin, method);
+                }
+                let run = &mut self.runs[ii][pi];
+                run.cand = cand;
+                run.state = state;
+            }
+        }
+    }
+
+    /// Inacti / Fpenmax at the first sort: decide for every pair found inside its gap.
+    fn initial_penetrations(&mut self) {
+        for (ii, it) in self.setup.interfaces.iter().enumerate() {
+            for (pi, p) in it.passes.iter().enumerate() {
+                let run = &mut self.runs[ii][pi];
+                for j in 0..run.mine.len() {
+                    let k = run.mine[j] as usize;
+                    let s = p.sec[k];
+                    let xs = self.cx[s as usize];
+                    let segs: Vec<u32> = match it.law {
+                        Law::Type7 => run.cand.segs[run.cand.ptr[j]..run.cand.ptr[j + 1]].to_vec(),
+                        Law::Type5 => {
+                            let m = run.nodes[j].last_seg;
+                            if m == NONE { vec![] } else { vec![m] }
+                        }
+                    };
+                    for m in segs {
+                        let seg = &p.segs[m as usize];
+                        let Some(xm) = (if seg.iter().all(|&c| self.avail[c as usize]) {
+                            Some(seg.map(|c| self.cx[c as usize]))
+                        } else {
+                            None
+                        }) else {
+                            continue;
+                        };
+                        let tri = p.is_tri(m as usize);
+                        let g = pair_gap(it, p, k, m as usize);
+                        let p0 = match it.law {
+                            Law::Type7 => g - geo::project(xs, &xm, tri).dist,
+                            Law::Type5 => type5::penetration(xs, &xm, tri, g).map(|r| r.0).unwrap_or(0.0),
+                        };
+                        match gap::initial_penetration(it.inacti, it.fpenmax, p0, g) {
+                            gap::InitialPenetration::DeactivateNode => run.nodes[j].off = true,
+                            gap::InitialPenetration::DeactivateSegment => run.nodes[j].off_segs.push(m),
+                            gap::InitialPenetration::ReduceGap => {
+                                run.nodes[j].gap0.push((m, gap::initial_gap(it.inacti, g, p0)))
+                            }
+                            _ => {}
+                        }
+                    }
+                    run.nodes[j].off_segs.sort_unstable();
+                    run.nodes[j].gap0.sort_by_key(|e| e.0);
+                }
+            }
+        }
+    }
+
+    /// Every owned pair's force, as contributions, and the smallest kinematic step.
+    fn pairs(&mut self, mass: &[f64], t: f64, dt: f64) -> (Vec<Contribution>, Option<ContactStep>) {
+        let mut out: Vec<Contribution> = Vec::new();
+        let mut best: Option<ContactStep> = None;
+        for s in self.sums.iter_mut() {
+            *s = InterfaceSums::default();
+        }
+        let cx = &self.cx;
+        let cv = &self.cv;
+        let avail = &self.avail;
+        let local = &self.local;
+        let nodes_g = &self.setup.nodes;
+        for (ii, it) in self.setup.interfaces.iter().enumerate() {
+            if t < it.tstart || t > it.tstop {
+                continue;
+            }
+            let ibc = (it.ibc[0] as u8) | ((it.ibc[1] as u8) << 1) | ((it.ibc[2] as u8) << 2);
+            for (pi, p) in it.passes.iter().enumerate() {
+                let run = &mut self.runs[ii][pi];
+                let seg_xv = |m: u32| -> Option<([V3; 4], [V3; 4])> {
+                    let seg = &p.segs[m as usize];
+                    if seg.iter().all(|&c| avail[c as usize]) {
+                        Some((seg.map(|c| cx[c as usize]), seg.map(|c| cv[c as usize])))
+                    } else {
+                        None
+                    }
+                };
+                // Per node: its pairs' forces, computed in parallel, gathered in order.
+                let results: Vec<(Vec<Contribution>, Option<ContactStep>, InterfaceSums)> = match it.law {
+                    Law::Type7 => {
+                        let cand = &run.cand;
+                        let nodes = &mut run.nodes;
+                        // Split the pair memory by node so each node owns its slice.
+                        let mut slices: Vec<&mut [PairState]> = Vec::with_capacity(run.mine.len());
+                        let mut rest: &mut [PairState] = &mut run.state;
+                        for j in 0..run.mine.len() {
+                            let (a, b) = rest.split_at_mut(cand.ptr[j + 1] - cand.ptr[j]);
+                            slices.push(a);
+                            rest = b;
+                        }
+                        run.mine
+                            .par_iter()
+                            .zip(nodes.par_iter_mut())
+                            .zip(slices.into_par_iter())
+                            .enumerate()
+                            .map(|(j, ((&k, ns), states))| {
+                                let k = k as usize;
+                                let s = p.sec[k];
+                                let ms = mass[local[s as usize] as usize];
+                                let mut contribs = Vec::new();
+                                let mut step: Option<ContactStep> = None;
+                                let mut sums = InterfaceSums::default();
+                                if ns.off {
+                                    return (contribs, step, sums);
+                                }
+                                let xs = cx[s as usize];
+                                let vs = cv[s as usize];
+                                for (q, &m) in cand.segs[cand.ptr[j]..cand.ptr[j + 1]].iter().enumerate() {
+                                    if ns.off_segs.binary_search(&m).is_ok() {
+                                        continue;
+                                    }
+                                    let Some((xm, vm)) = seg_xv(m) else { continue };
+                                    let tri = p.is_tri(m as usize);
+                                    let nominal = pair_gap(it, p, k, m as usize);
+                                    let gi = ns.gap0.binary_search_by_key(&m, |e| e.0);
+                                    let g = match gi {
+                                        Ok(i) => ns.gap0[i].1,
+                                        Err(_) => nominal,
+                                    };
+                                    let k0 = pair_stiffness(it, p, k, m as usize);
+                                    let inp = type7::Pair {
+                                        xs,
+                                        vs,
+                                        ms,
+                                        xm: &xm,
+                                        vm: &vm,
+                                        tri,
+                                        k0,
+                                        gap: g,
+                                        viss: it.viss,
+                                        friction: &it.friction,
+                                        area: p.seg_area[m as usize],
+                                        dt,
+                                    };
+                                    let st = &mut states[q];
+                                    let f = if st.tie.is_some() {
+                                        type7::tied(&inp, st, it.itied)
+                                    } else {
+                                        type7::pair(&inp, st)
+                                    };
+                                    // Inacti 5/6: the corrected gap follows the node back out.
+                                    if let Ok(i) = gi {
+                                        let d = geo::project(xs, &xm, tri).dist;
+                                        ns.gap0[i].1 = gap::relax_gap(ns.gap0[i].1, nominal, d);
+                                    }
+                                    let Some(f) = f else { continue };
+                                    // dtmin / ITIED.
+                                    if it.dtmin > 0.0 && st.tie.is_none() {
+                                        let dtp = f.dt_kin.min((2.0 * ms / f.kt).sqrt());
+                                        if dtp < it.dtmin {
+                                            if it.itied == 0 {
+                                                ns.off = true;
+                                                return (Vec::new(), None, InterfaceSums::default());
+                                            }
+                                            st.tie = Some((f.shape, geo::sub(xs, f.point)));
+                                        }
+                                    }
+                                    emit(&mut contribs, &mut sums, ii, pi, nodes_g[s as usize], s, m, &p.segs[m as usize], &f, ibc);
+                                    if f.dt_kin < step.map_or(f64::INFINITY, |b| b.dt) {
+                                        step = Some(ContactStep { dt: f.dt_kin, what: "INTER", id: it.id });
+                                    }
+                                }
+                                (contribs, step, sums)
+                            })
+                            .collect()
+                    }
+                    Law::Type5 => {
+                        let walk_reach = it.max_gap + 2.0 * it.margin + p.max_diag;
+                        run.mine
+                            .par_iter()
+                            .zip(run.nodes.par_iter_mut())
+                            .zip(run.state5.par_iter_mut())
+                            .map(|((&k, ns), st5)| {
+                                let k = k as usize;
+                                let s = p.sec[k];
+                                let mut contribs = Vec::new();
+                                let mut sums = InterfaceSums::default();
+                                if ns.off || ns.last_seg == NONE {
+                                    return (contribs, None, sums);
+                                }
+                                let xs = cx[s as usize];
+                                let Some(m) = type5_walk(p, ns.last_seg, xs, walk_reach, &|c| {
+                                    if avail[c as usize] { Some(cx[c as usize]) } else { None }
+                                }) else {
+                                    return (contribs, None, sums);
+                                };
+                                ns.last_seg = m;
+                                if st5.0 != m {
+                                    *st5 = (m, PairState::default());
+                                }
+                                if ns.off_segs.binary_search(&m).is_ok() {
+                                    return (contribs, None, sums);
+                                }
+                                let Some((xm, vm)) = seg_xv(m) else { return (contribs, None, sums) };
+                                let inp = type5::Pair {
+                                    xs,
+                                    vs: cv[s as usize],
+                                    xm: &xm,
+                                    vm: &vm,
+                                    tri: p.is_tri(m as usize),
+                                    k: pair_stiffness(it, p, k, m as usize),
+                                    gap: it.gap.gapmin,
+                                    friction: &it.friction,
+                                    area: p.seg_area[m as usize],
+                                    dt,
+                                };
+                                if let Some(f) = type5::pair(&inp, &mut st5.1) {
+                                    emit(&mut contribs, &mut sums, ii, pi, nodes_g[s as usize], s, m, &p.segs[m as usize], &f, ibc);
+                                }
+                                (contribs, None, sums)
+                            })
+                            .collect()
+                    }
+                };
+                for (c, st, su) in results {
+                    out.extend(c);
+                    if let Some(st) = st {
+                        if best.is_none_or(|b| (st.dt, st.id) < (b.dt, b.id)) {
+                            best = Some(st);
+                        }
+                    }
+                    let acc = &mut self.sums[ii];
+                    for k in 0..3 {
+                        acc.f_normal[k] += su.f_normal[k];
+                        acc.f_tangent[k] += su.f_tangent[k];
+                    }
+                    acc.pairs += su.pairs;
+                }
+            }
+        }
+        (out, best)
+    }
+}
+
+/// Contributions of one pair: +F on the secondary node, −N_i·F on the segment
+/// nodes (EQ. 8.6.6.4–6), and its tangent stiffness on each.
+#[allow(clippy::too_many_arguments)]
+fn emit(
+    out: &mut Vec<Contribution>,
+    sums: &mut InterfaceSums,
+    iface: usize,
+    pass: usize,
+    sec_global: u32,
+    s: u32,
+    m: u32,
+    seg: &[u32; 4],
+    f: &PairForce,
+    ibc: u8,
+) {
+    let (hi, lo) = Contribution::key(iface, pass, sec_global, m, 4);
+    out.push(Contribution { c: s, hi, lo, f: f.fs, k: f.kt, ibc: if f.f_n > 0.0 { ibc } else { 0 } });
+    let n = if seg[3] == seg[2] { 3 } else { 4 };
+    for i in 0..n {
+        if f.shape[i] == 0.0 {
+            continue;
+        }
+        let (hi, lo) = Contribution::key(iface, pass, sec_global, m, i as u8);
+        out.push(Contribution {
+            c: seg[i],
+            hi,
+            lo,
+            f: geo::scale(f.fs, -f.shape[i]),
+            k: f.kt * f.shape[i],
+            ibc: 0,
+        });
+    }
+    for k in 0..3 {
+        sums.f_normal[k] += f.dir[k] * f.f_n;
+        sums.f_tangent[k] += f.f_t[k];
+    }
+    sums.pairs += 1;
+}
+
+/// The gap of pair (secondary k, segment m) (card eq. (8)–(10)).
+fn pair_gap(it: &setup::Interface, p: &setup::Pass, k: usize, m: usize) -> f64 {
+    it.gap.pair_gap(p.sec_gap[k], p.seg_gap[m], p.sec_lmin[k], p.seg_lmin[m])
+}
+
+/// The stiffness of pair (secondary k, segment m): TYPE7 by Istf (card
+/// eq. (1)–(3)), TYPE5 s·Km (§8.6.3), TYPE3 s·K1·K2/(K1+K2) (EQ. 8.5.3.1).
+fn pair_stiffness(it: &setup::Interface, p: &setup::Pass, k: usize, m: usize) -> f64 {
+    match (it.law, it.type_number) {
+        (Law::Type7, _) => stiffness::type7_pair(it.istf, it.stfac, it.stfac * p.seg_k[m], p.sec_k[k], it.stmin, it.stmax),
+        (Law::Type5, 3) => it.stfac * stiffness::series(p.sec_k[k], p.seg_k[m]),
+        (Law::Type5, _) => it.stfac * p.seg_k[m],
+    }
+}
+
+/// TYPE5's engine search (§8.6.6.1): from the previous closest segment S0,
+/// the node M1 of S0 closest to N; the segments around M1; the closest main
+/// node M2 among their nodes; the closest of the segments around M2. The walk
+/// is only taken while N is within `reach` of S0's nodes (farther nodes keep
+/// their segment), so it only ever reads nodes every rank can see.
+fn type5_walk(p: &setup::Pass, s0: u32, xs: V3, reach: f64, x_of: &dyn Fn(u32) -> Option<V3>) -> Option<u32> {
+    let seg0 = p.segs[s0 as usize];
+    let mut m1: Option<(f64, u32)> = None;
+    for &c in &seg0 {
+        let xc = x_of(c)?;
+        let d = geo::norm(geo::sub(xc, xs));
+        if d > reach {
+            return None;
+        }
+        if m1.is_none_or(|b| d < b.0 || (d == b.0 && c < b.1)) {
+            m1 = Some((d, c));
+        }
+    }
+    let (_, m1) = m1?;
+    let mut m2: Option<(f64, u32)> = None;
+    for &sg in p.segments_around(m1) {
+        for &c in &p.segs[sg as usize] {
+            let xc = x_of(c)?;
+            let d = geo::norm(geo::sub(xc, xs));
+            if m2.is_none_or(|b| d < b.0 || (d == b.0 && c < b.1)) {
+                m2 = Some((d, c));
+            }
+        }
+    }
+    let (_, m2) = m2?;
+    setup::closest_segment(p.segments_around(m2), xs, |sg| {
+        let seg = p.segs[sg as usize];
+        let mut x = [[0.0; 3]; 4];
+        for i in 0..4 {
+            x[i] = x_of(seg[i])?;
+        }
+        Some(x)
+    })
+}

@@ -1,0 +1,658 @@
+//! What every rank needs to know about the interfaces, built once on rank 0
+//! from the model and broadcast: for each interface its passes (secondary
+//! nodes against main segments), segment and node stiffness, gaps and sizes,
+//! and the global table of contact nodes with the ranks that hold each one.
+//!
+//! Contact nodes are numbered densely in global node order ("cnode"); every
+//! array below speaks in cnodes.
+
+use super::friction::FrictionLaw;
+use super::gap::{self, GapRule};
+use super::geometry::{self as geo, V3};
+use super::stiffness;
+use crate::deck::{ElementKind, InterfaceKind, MaterialCard};
+use crate::model::{geometry as mgeo, Model};
+use serde::{Deserialize, Serialize};
+use std::collections::HashMap;
+
+pub const NONE: u32 = u32::MAX;
+
+/// How a pass turns a measured gap into a force.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub enum Law {
+    /// TYPE7: every secondary node against every main segment not connected
+    /// to it, both sides, edges and corners; non-linear reaction.
+    Type7,
+    /// TYPE5 (and each pass of TYPE3): closest main node / segment walk,
+    /// one-sided penetration by tetrahedron volume, linear spring.
+    Type5,
+}
+
+/// One pass: secondary nodes against main segments.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct Pass {
+    /// Main segments as cnodes (a triangle repeats its third node).
+    pub segs: Vec<[u32; 4]>,
+    /// Main segment stiffness (scale factor included, see `Interface::istf`).
+    pub seg_k: Vec<f64>,
+    /// Main element gap g_m (half the shell thickness, 0 on solids).
+    pub seg_gap: Vec<f64>,
+    /// Smallest edge of each main segment (initial).
+    pub seg_lmin: Vec<f64>,
+    /// Contact pressure area of each main segment (initial).
+    pub seg_area: Vec<f64>,
+    /// The element under each main segment: (kind index, element index).
+    pub seg_elem: Vec<(u8, u32)>,
+    /// Secondary nodes (cnodes, ascending).
+    pub sec: Vec<u32>,
+    /// Secondary node stiffness Ks (card eq. (6)/(7)), TYPE3 own-surface stiffness.
+    pub sec_k: Vec<f64>,
+    /// Secondary gap g_s (half the largest connected shell thickness) and smallest connected edge.
+    pub sec_gap: Vec<f64>,
+    pub sec_lmin: Vec<f64>,
+    /// TYPE5: closest main segment found by the Starter's full search (NONE if none).
+    pub sec_start_seg: Vec<u32>,
+    /// Segments around each main node (CSR over cnodes of the segments): TYPE5 walk.
+    pub node_segs_ptr: Vec<u32>,
+    pub node_segs_key: Vec<u32>,
+    pub node_segs: Vec<u32>,
+    /// Largest segment diagonal (for the ghost boxes).
+    pub max_diag: f64,
+}
+
+impl Pass {
+    /// Segments around main cnode `c` (empty when `c` is on no segment).
+    pub fn segments_around(&self, c: u32) -> &[u32] {
+        match self.node_segs_key.binary_search(&c) {
+            Ok(i) => &self.node_segs[self.node_segs_ptr[i] as usize..self.node_segs_ptr[i + 1] as usize],
+            Err(_) => &[],
+        }
+    }
+    pub fn is_tri(&self, s: usize) -> bool {
+        self.segs[s][3] == self.segs[s][2]
+    }
+}
+
+/// One interface, resolved.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct Interface {
+    pub id: u64,
+    pub type_number: u32,
+    pub title: String,
+    pub law: Law,
+    pub passes: Vec<Pass>,
+    pub gap: GapRule,
+    /// Largest gap of any pair (search reach without the margin).
+    pub max_gap: f64,
+    /// Sorting margin: candidates are kept while motion stays below it (Bumult).
+    pub margin: f64,
+    pub stfac: f64,
+    pub istf: i64,
+    pub stmin: f64,
+    pub stmax: f64,
+    pub friction: FrictionLaw,
+    pub viss: f64,
+    pub tstart: f64,
+    pub tstop: f64,
+    pub ibc: [bool; 3],
+    pub inacti: i64,
+    pub fpenmax: f64,
+    pub dtmin: f64,
+    pub itied: i64,
+    /// Idel: 0/1000 none; ±1 all elements of a segment deleted; ±2 any.
+    pub idel: i64,
+    /// Irem_gap = 2: in self-contact, ignore main segments with a node closer
+    /// than 2·Gap to the secondary node in the initial configuration.
+    pub irem_gap: bool,
+}
+
+/// All interfaces plus the contact-node table.
+#[derive(Clone, Debug, Default, Serialize, Deserialize)]
+pub struct ContactSetup {
+    pub interfaces: Vec<Interface>,
+    /// Global node index of each cnode, ascending.
+    pub nodes: Vec<u32>,
+    /// Initial position of each cnode.
+    pub x0: Vec<V3>,
+    /// Ranks holding each cnode (CSR), ascending.
+    pub holders_ptr: Vec<u32>,
+    pub holders: Vec<u32>,
+}
+
+impl ContactSetup {
+    pub fn is_empty(&self) -> bool {
+        self.interfaces.is_empty()
+    }
+    pub fn holders_of(&self, c: u32) -> &[u32] {
+        &self.holders[self.holders_ptr[c as usize] as usize..self.holders_ptr[c as usize + 1] as usize]
+    }
+    pub fn cnode_of(&self, global: u32) -> Option<u32> {
+        self.nodes.binary_search(&global).ok().map(|i| i as u32)
+    }
+}
+
+fn bulk(m: &MaterialCard) -> f64 {
+    m.e / (3.0 * (1.0 - 2.0 * m.nu))
+}
+
+/// What lies under a face: (kind index, element index), shells first.
+struct FaceIndex {
+    map: HashMap<[u32; 4], (u8, u32)>,
+}
+
+fn face_key(f: &[u32]) -> [u32; 4] {
+    let mut k = [f[0], f[1], f[2], *f.get(3).unwrap_or(&f[2])];
+    k.sort_unstable();
+    k
+}
+
+impl FaceIndex {
+    fn build(m: &Model) -> FaceIndex {
+        let mut map = HashMap::new();
+        for (ki, set) in m.elements.iter().enumerate() {
+            let faces: &[[usize; 4]] = match set.kind {
+                ElementKind::Shell4 => &[[0, 1, 2, 3]],
+                ElementKind::Shell3 => &[[0, 1, 2, 2]],
+                ElementKind::Brick8 => &mgeo::HEXA_FACES,
+                ElementKind::Tetra4 => &[[0, 2, 1, 1], [0, 1, 3, 3], [1, 2, 3, 3], [2, 0, 3, 3]],
+                _ => continue,
+            };
+            let shell = matches!(set.kind, ElementKind::Shell4 | ElementKind::Shell3);
+            for e in 0..set.len() {
+                let n = set.nodes_of(e);
+                for f in faces {
+                    let key = face_key(&[n[f[0]], n[f[1]], n[f[2]], n[f[3]]]);
+                    let v = (ki as u8, e as u32);
+                    if shell {
+                        map.insert(key, v);
+                    } else {
+                        map.entry(key).or_insert(v);
+                    }
+                }
+            }
+        }
+        FaceIndex { map }
+    }
+}
+
+fn element_volume(m: &Model, ki: usize, e: usize) -> f64 {
+    let set = &m.elements[ki];
+    let n = set.nodes_of(e);
+    let x = |i: usize| m.nodes.x[n[i] as usize];
+    match set.kind {
+        ElementKind::Brick8 => mgeo::hexa_volume([x(0), x(1), x(2), x(3), x(4), x(5), x(6), x(7)]),
+        ElementKind::Tetra4 => mgeo::tetra_volume([x(0), x(1), x(2), x(3)]).abs(),
+        _ => 0.0,
+    }
+}
+
+/// Per-node data from the elements touching it: (Ks, g_s, smallest edge):
+/// Ks = 0.5·E·t on shells, B·V^(1/3) on solids (card eq. (6), (7)), the largest
+/// over the node's elements; g_s = half the largest shell thickness (card
+/// comment 11); the smallest edge of the node's elements.
+fn node_data(m: &Model, nodes: &[u32]) -> HashMap<u32, (f64, f64, f64)> {
+    let mut out: HashMap<u32, (f64, f64, f64)> =
+        nodes.iter().map(|&n| (n, (0.0, 0.0, f64::INFINITY))).collect();
+    for (ki, set) in m.elements.iter().enumerate() {
+        let shell = matches!(set.kind, ElementKind::Shell4 | ElementKind::Shell3);
+        let solid = matches!(set.kind, ElementKind::Brick8 | ElementKind::Tetra4);
+        if !shell && !solid {
+            continue;
+        }
+        for e in 0..set.len() {
+            let n = set.nodes_of(e);
+            if !n.iter().any(|q| out.contains_key(q)) {
+                continue;
+            }
+            let part = &m.parts[set.part[e] as usize];
+            let Some(mat) = part.mat.map(|i| &m.materials[i as usize]) else {
+                continue;
+            };
+            let (stiff, g) = if shell {
+                (stiffness::shell(mat.e, set.thick[e]), 0.5 * set.thick[e])
+            } else {
+                (stiffness::solid_node(bulk(mat), element_volume(m, ki, e)), 0.0)
+            };
+            let lmin = (0..n.len())
+                .map(|i| {
+                    let a = m.nodes.x[n[i] as usize];
+                    let b = m.nodes.x[n[(i + 1) % n.len()] as usize];
+                    geo::norm(geo::sub(a, b))
+                })
+                .filter(|&l| l > 0.0)
+                .fold(f64::INFINITY, f64::min);
+            for q in n {
+                if let Some(d) = out.get_mut(q) {
+                    d.0 = d.0.max(stiff);
+                    d.1 = d.1.max(g);
+                    d.2 = d.2.min(lmin);
+                }
+            }
+        }
+    }
+    out
+}
+
+/// Per-segment data from the element under it.
+struct SegData {
+    k: f64,
+    gap: f64,
+    thick: Option<f64>,
+    elem: (u8, u32),
+}
+
+fn segment_data(
+    m: &Model,
+    faces: &FaceIndex,
+    seg: &[u32; 4],
+    law: Law,
+) -> Result<SegData, String> {
+    let Some(&(ki, e)) = faces.map.get(&face_key(seg)) else {
+        return Err(format!(
+            "main segment {} {} {} {} is not the face of a shell or solid element: its stiffness is undefined (each main segment must lie on an element)",
+            m.nodes.ids[seg[0] as usize], m.nodes.ids[seg[1] as usize], m.nodes.ids[seg[2] as usize], m.nodes.ids[seg[3] as usize]
+        ));
+    };
+    let set = &m.elements[ki as usize];
+    let part = &m.parts[set.part[e as usize] as usize];
+    let mat = part
+        .mat
+        .map(|i| &m.materials[i as usize])
+        .ok_or_else(|| format!("part {} under a contact segment has no material", part.id))?;
+    if matches!(set.kind, ElementKind::Shell4 | ElementKind::Shell3) {
+        let t = set.thick[e as usize];
+        return Ok(SegData {
+            k: stiffness::shell(mat.e, t),
+            gap: 0.5 * t,
+            thick: Some(t),
+            elem: (ki, e),
+        });
+    }
+    let x: Vec<V3> = seg.iter().map(|&n| m.nodes.x[n as usize]).collect();
+    let xs = [x[0], x[1], x[2], x[3]];
+    let area = geo::segment_area(&xs, seg[3] == seg[2]);
+    let vol = element_volume(m, ki as usize, e as usize);
+    let k = match law {
+        Law::Type7 => stiffness::brick_type7(bulk(mat), area, vol),
+        Law::Type5 => stiffness::brick_type3(bulk(mat), area, vol),
+    };
+    Ok(SegData {
+        k,
+        gap: 0.0,
+        thick: None,
+        elem: (ki, e),
+    })
+}
+
+/// Options common to the interface kinds, from their cards.
+struct Common {
+    law: Law,
+    stfac: f64,
+    fric: FrictionLaw,
+    gap_card: f64,
+    tstart: f64,
+    tstop: f64,
+    ibc: [bool; 3],
+    inacti: i64,
+    idel: i64,
+}
+
+/// Builds the contact set-up; `holders[g]` lists the ranks holding global node g.
+pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<ContactSetup, String> {
+    if m.interfaces.is_empty() {
+        return Ok(ContactSetup::default());
+    }
+    let faces = FaceIndex::build(m);
+    // Contact nodes.
+    let mut all: Vec<u32> = Vec::new();
+    for i in &m.interfaces {
+        all.extend(i.secondary_nodes.iter().copied());
+        all.extend(i.main_segments.iter().flatten().copied());
+        all.extend(i.secondary_segments.iter().flatten().copied());
+    }
+    all.sort_unstable();
+    all.dedup();
+    let cn = |g: u32| all.binary_search(&g).expect("contact node") as u32;
+    let mut interfaces = Vec::new();
+    for i in &m.interfaces {
+        let c = &i.card;
+        let kw = format!("{}: /INTER/TYPE{}/{}", c.loc, c.type_number(), c.id);
+        let (common, t7) = match &c.kind {
+            InterfaceKind::Type7(t) => (
+                Common {
+                    law: Law::Type7,
+                    stfac: t.stfac,
+                    fric: FrictionLaw {
+                        ifric: t.ifric,
+                        fric: t.fric,
+                        c: t.fric_coefs.unwrap_or([0.0; 6]),
+                        ifiltr: t.ifiltr,
+                        xfreq: t.xfreq,
+                        iform: if t.iform == 2 { 2 } else { 1 },
+                        visf: t.visf,
+                    },
+                    gap_card: t.gapmin,
+                    tstart: t.tstart,
+                    tstop: t.tstop,
+                    ibc: t.ibc,
+                    inacti: t.inacti,
+                    idel: t.idel,
+                },
+                Some(t),
+            ),
+            InterfaceKind::Type5(t) => (
+                Common {
+                    law: Law::Type5,
+                    stfac: t.stfac,
+                    fric: FrictionLaw {
+                        ifric: t.ifric,
+                        fric: t.fric,
+                        c: t.fric_coefs.unwrap_or([0.0; 6]),
+                        ifiltr: t.ifiltr,
+                        xfreq: t.xfreq,
+                        iform: 2,
+                        visf: 0.0,
+                    },
+                    gap_card: t.gap,
+                    tstart: t.tstart,
+                    tstop: t.tstop,
+                    ibc: t.ibc,
+                    inacti: t.inacti,
+                    idel: t.idel,
+                },
+                None,
+            ),
+            InterfaceKind::Type3(t) => (
+                Common {
+                    law: Law::Type5,
+                    stfac: t.stfac,
+                    fric: FrictionLaw {
+                        ifric: 0,
+                        fric: t.fric,
+                        c: [0.0; 6],
+                        ifiltr: 0,
+                        xfreq: 0.0,
+                        iform: 2,
+                        visf: 0.0,
+                    },
+                    gap_card: t.gap,
+                    tstart: t.tstart,
+                    tstop: t.tstop,
+                    ibc: t.ibc,
+                    inacti: 0,
+                    idel: t.idel,
+                },
+                None,
+            ),
+            _ => return Err(format!("{kw}: this interface type is not computed by the engine yet")),
+        };
+        // Passes: (secondary nodes, own segments for TYPE3 node stiffness, main segments).
+        let mut pass_defs: Vec<(Vec<u32>, Option<&Vec<[u32; 4]>>, &Vec<[u32; 4]>)> = Vec::new();
+        match &c.kind {
+            InterfaceKind::Type3(_) => {
+                let mut n1: Vec<u32> = i.secondary_segments.iter().flatten().copied().collect();
+                n1.sort_unstable();
+                n1.dedup();
+                let mut n2: Vec<u32> = i.main_segments.iter().flatten().copied().collect();
+                n2.sort_unstable();
+                n2.dedup();
+                pass_defs.push((n1, Some(&i.secondary_segments), &i.main_segments));
+                pass_defs.push((n2, Some(&i.main_segments), &i.secondary_segments));
+            }
+            _ => pass_defs.push((i.secondary_nodes.clone(), None, &i.main_segments)),
+        }
+        let mut passes = Vec::new();
+        let mut thick_sum = 0.0;
+        let mut thick_min = f64::INFINITY;
+        let mut n_shell = 0usize;
+        let mut l_min = f64::INFINITY;
+        let mut l_sum = 0.0;
+        let mut n_edges = 0usize;
+        let mut gs_max = 0.0f64;
+        let mut gm_max = 0.0f64;
+        for (sec, own, main) in pass_defs {
+            let mut segs = Vec::new();
+            let mut seg_k = Vec::new();
+            let mut seg_gap = Vec::new();
+            let mut seg_lmin = Vec::new();
+            let mut seg_area = Vec::new();
+            let mut seg_elem = Vec::new();
+            let mut max_diag = 0.0f64;
+            for s in main.iter() {
+                let d = segment_data(m, &faces, s, common.law).map_err(|e| format!("{kw}: {e}"))?;
+                let x = s.map(|n| m.nodes.x[n as usize]);
+                let tri = s[3] == s[2];
+                let lm = geo::min_edge(&x, tri);
+                let nn = if tri { 3 } else { 4 };
+                for e in 0..nn {
+                    l_sum += geo::norm(geo::sub(x[(e + 1) % nn], x[e]));
+                    n_edges += 1;
+                }
+                l_min = l_min.min(lm);
+                if let Some(t) = d.thick {
+                    thick_sum += t;
+                    thick_min = thick_min.min(t);
+                    n_shell += 1;
+                }
+                gm_max = gm_max.max(d.gap);
+                max_diag = max_diag.max(super::search::Aabb::of_points(&x).diagonal());
+                segs.push(s.map(cn));
+                seg_k.push(d.k);
+                seg_gap.push(d.gap);
+                seg_lmin.push(lm);
+                seg_area.push(geo::segment_area(&x, tri));
+                seg_elem.push(d.elem);
+            }
+            let nd = node_data(m, &sec);
+            let own_k: HashMap<u32, f64> = match own {
+                Some(own) => {
+                    let mut h: HashMap<u32, f64> = HashMap::new();
+                    for s in own.iter() {
+                        let d = segment_data(m, &faces, s, common.law).map_err(|e| format!("{kw}: {e}"))?;
+                        for &n in s {
+                            let e = h.entry(n).or_insert(0.0);
+                            *e = e.max(d.k);
+                        }
+                    }
+                    h
+                }
+                None => HashMap::new(),
+            };
+            let mut sec_k = Vec::new();
+            let mut sec_gap = Vec::new();
+            let mut sec_lmin = Vec::new();
+            for &n in &sec {
+                let (k, g, l) = nd[&n];
+                sec_k.push(own_k.get(&n).copied().unwrap_or(k));
+                sec_gap.push(g);
+                gs_max = gs_max.max(g);
+                sec_lmin.push(if l.is_finite() { l } else { 0.0 });
+            }
+            // Segments around each main node.
+            let mut pairs: Vec<(u32, u32)> = Vec::new();
+            for (si, s) in segs.iter().enumerate() {
+                let mut u = s.to_vec();
+                u.sort_unstable();
+                u.dedup();
+                for n in u {
+                    pairs.push((n, si as u32));
+                }
+            }
+            pairs.sort_unstable();
+            let mut node_segs_key = Vec::new();
+            let mut node_segs_ptr = vec![0u32];
+            let mut node_segs = Vec::new();
+            for (n, s) in pairs {
+                if node_segs_key.last() != Some(&n) {
+                    if !node_segs_key.is_empty() {
+                        node_segs_ptr.push(node_segs.len() as u32);
+                    }
+                    node_segs_key.push(n);
+                }
+                node_segs.push(s);
+            }
+            node_segs_ptr.push(node_segs.len() as u32);
+            let sec_c: Vec<u32> = sec.iter().map(|&n| cn(n)).collect();
+            let mut pass = Pass {
+                segs,
+                seg_k,
+                seg_gap,
+                seg_lmin,
+                seg_area,
+                seg_elem,
+                sec: sec_c,
+                sec_k,
+                sec_gap,
+                sec_lmin,
+                sec_start_seg: Vec::new(),
+                node_segs_ptr,
+                node_segs_key,
+                node_segs,
+                max_diag,
+            };
+            if common.law == Law::Type5 {
+                pass.sec_start_seg = starter_closest_segments(m, &all, &pass);
+            }
+            passes.push(pass);
+        }
+        let l_min = if l_min.is_finite() { l_min } else { 0.0 };
+        let l_mean = if n_edges > 0 { l_sum / n_edges as f64 } else { 0.0 };
+        let (gap_rule, istf, stmin, stmax, viss, bumult, fpenmax, dtmin, itied, irem_gap) = match t7 {
+            Some(t) => {
+                let igap = t.igap;
+                let shell_t = if n_shell == 0 {
+                    None
+                } else if igap == 1000 || igap == 0 {
+                    Some(thick_sum / n_shell as f64)
+                } else {
+                    Some(thick_min)
+                };
+                let gapmin = if t.gapmin > 0.0 {
+                    t.gapmin
+                } else {
+                    gap::type7_default_gapmin(shell_t, l_min)
+                };
+                (
+                    GapRule {
+                        igap: if igap == 0 { 1000 } else { igap },
+                        gapmin,
+                        fscalegap: t.fscalegap,
+                        gapmax: t.gapmax,
+                        mesh_size_pct: t.mesh_size_pct,
+                    },
+                    t.istf,
+                    t.stmin,
+                    t.stmax,
+                    t.viss,
+                    t.bumult,
+                    t.fpenmax,
+                    t.dtmin,
+                    t.itied,
+                    t.irem_gap == 2,
+                )
+            }
+            None => (
+                GapRule {
+                    igap: 1000,
+                    gapmin: common.gap_card,
+                    fscalegap: 1.0,
+                    gapmax: 1e30,
+                    mesh_size_pct: 0.4,
+                },
+                1000,
+                0.0,
+                1e30,
+                0.0,
+                0.2,
+                0.0,
+                0.0,
+                0,
+                false,
+            ),
+        };
+        let max_gap = gap_rule.max_gap(gs_max, gm_max);
+        let margin = (bumult * l_mean).max(0.1 * max_gap).max(1e-12 * l_mean.max(1.0));
+        interfaces.push(Interface {
+            id: c.id,
+            type_number: c.type_number(),
+            title: c.title.clone(),
+            law: common.law,
+            passes,
+            gap: gap_rule,
+            max_gap,
+            margin,
+            stfac: common.stfac,
+            istf,
+            stmin,
+            stmax,
+            friction: common.fric,
+            viss,
+            tstart: common.tstart,
+            tstop: common.tstop,
+            ibc: common.ibc,
+            inacti: common.inacti,
+            fpenmax,
+            dtmin,
+            itied,
+            idel: common.idel,
+            irem_gap,
+        });
+    }
+    let x0 = all.iter().map(|&g| m.nodes.x[g as usize]).collect();
+    let mut holders_ptr = vec![0u32];
+    let mut hs = Vec::new();
+    for &g in &all {
+        hs.extend_from_slice(&holders[g as usize]);
+        holders_ptr.push(hs.len() as u32);
+    }
+    Ok(ContactSetup {
+        interfaces,
+        nodes: all,
+        x0,
+        holders_ptr,
+        holders: hs,
+    })
+}
+
+/// The Starter's TYPE5 search (§8.6.6.1): for each secondary node the closest
+/// main node over the whole surface, then the closest of the segments around it.
+/// Its cost is (secondary nodes) × (main nodes), as the manual says.
+fn starter_closest_segments(m: &Model, cnodes: &[u32], pass: &Pass) -> Vec<u32> {
+    let xg = |c: u32| m.nodes.x[cnodes[c as usize] as usize];
+    pass.sec
+        .iter()
+        .map(|&s| {
+            let p = xg(s);
+            let mut best: Option<(f64, u32)> = None;
+            for &mn in &pass.node_segs_key {
+                if mn == s {
+                    continue;
+                }
+                let d = geo::norm(geo::sub(xg(mn), p));
+                if best.is_none_or(|b| d < b.0) {
+                    best = Some((d, mn));
+                }
+            }
+            let Some((_, mn)) = best else { return NONE };
+            closest_segment(pass.segments_around(mn), p, |seg| {
+                Some(pass.segs[seg as usize].map(xg))
+            })
+            .unwrap_or(NONE)
+        })
+        .collect()
+}
+
+/// Among `segs`, the one whose closest point is nearest to p (ties: lowest index);
+/// `None` when the positions of none of them are known.
+pub fn closest_segment(segs: &[u32], p: V3, x_of: impl Fn(u32) -> Option<[V3; 4]>) -> Option<u32> {
+    let mut best: Option<(f64, u32)> = None;
+    for &s in segs {
+        let Some(x) = x_of(s) else { continue };
+        let tri = x[3] == x[2];
+        let pr = geo::project(p, &x, tri);
+        if best.is_none_or(|b| pr.dist < b.0 || (pr.dist == b.0 && s < b.1)) {
+            best = Some((pr.dist, s));
+        }
+    }
+    best.map(|b| b.1)
+}

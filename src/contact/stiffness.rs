@@ -1,0 +1,102 @@
+//! Interface stiffness: segment and node stiffness from the elements under
+//! them, the TYPE7 Istf combinations, and the non-linear TYPE7 reaction.
+//!
+//! Sources: Radioss theory manual ch. 8 (EQ. 8.5.3.1–3, 8.8.9.1–2, 8.8.11.1–2)
+//! and the /INTER/TYPE7 reference card, comment 3 (equations (1)–(7)).
+
+/// Shell segment stiffness K = 0.5·E·t (EQ. 8.5.3.2; TYPE7 card eq. (4) and
+/// (6)): it does not depend on the shell size. The scale factor is applied by
+/// the caller.
+pub fn shell(e: f64, t: f64) -> f64 {
+    0.5 * e * t
+}
+
+/// Brick segment stiffness for TYPE3/TYPE5: K = 0.5·B·A²/V (EQ. 8.5.3.3).
+pub fn brick_type3(bulk: f64, area: f64, volume: f64) -> f64 {
+    0.5 * bulk * area * area / volume
+}
+
+/// Brick main segment stiffness for TYPE7: Km = B·S²/V (card eq. (5)).
+pub fn brick_type7(bulk: f64, area: f64, volume: f64) -> f64 {
+    bulk * area * area / volume
+}
+
+/// Secondary node stiffness of a node on a solid: Ks = B·V^(1/3) (card eq. (7)).
+pub fn solid_node(bulk: f64, volume: f64) -> f64 {
+    bulk * volume.cbrt()
+}
+
+/// Two springs in series: K1·K2/(K1+K2) (EQ. 8.5.3.1 without its scale factor).
+pub fn series(k1: f64, k2: f64) -> f64 {
+    if k1 + k2 > 0.0 {
+        k1 * k2 / (k1 + k2)
+    } else {
+        0.0
+    }
+}
+
+/// TYPE7 stiffness of a node–segment pair from the Istf flag (card eq. (1)–(3)):
+/// - Istf = 1: K = Stfac (the card's stiffness value);
+/// - Istf = 2, 3, 4, 5: Kn = mean, max, min or series of Km and Ks, then
+///   K = max(Stmin, min(Stmax, Kn));
+/// - Istf = 0 / 1000: K = Km (main side only).
+///
+/// `km` already carries Stfac (card eq. (4), (5)).
+pub fn type7_pair(istf: i64, stfac: f64, km: f64, ks: f64, stmin: f64, stmax: f64) -> f64 {
+    let kn = match istf {
+        1 => return stfac,
+        2 => 0.5 * (km + ks),
+        3 => km.max(ks),
+        4 => km.min(ks),
+        5 => series(km, ks),
+        _ => return km,
+    };
+    stmin.max(stmax.min(kn))
+}
+
+/// TYPE7 elastic reaction and tangent stiffness at penetration `p` in gap `g`:
+/// F = K0·P·Gap/(Gap − P) (EQ. 8.8.9.1, 8.8.11.1), Kt = K0·Gap²/(Gap − P)² (EQ. 8.8.9.2).
+/// `p` must be below `g` (the caller deactivates a node at the mid-plane).
+pub fn type7_reaction(k0: f64, g: f64, p: f64) -> (f64, f64) {
+    let r = g / (g - p);
+    (k0 * p * r, k0 * r * r)
+}
+
+/// Elastic energy stored at penetration p: CE = K0·g·(−p − g·ln((g − p)/g)) (EQ. 8.8.11.2).
+pub fn type7_energy(k0: f64, g: f64, p: f64) -> f64 {
+    k0 * g * (-p - g * ((g - p) / g).ln())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn istf_options() {
+        let (km, ks) = (3.0, 1.0);
+        assert_eq!(type7_pair(1000, 1.0, km, ks, 0.0, 1e30), 3.0);
+        assert_eq!(type7_pair(1, 7.0, km, ks, 0.0, 1e30), 7.0);
+        assert_eq!(type7_pair(2, 1.0, km, ks, 0.0, 1e30), 2.0);
+        assert_eq!(type7_pair(3, 1.0, km, ks, 0.0, 1e30), 3.0);
+        assert_eq!(type7_pair(4, 1.0, km, ks, 0.0, 1e30), 1.0);
+        assert_eq!(type7_pair(5, 1.0, km, ks, 0.0, 1e30), 0.75);
+        assert_eq!(type7_pair(4, 1.0, km, ks, 1.5, 1e30), 1.5);
+        assert_eq!(type7_pair(3, 1.0, km, ks, 0.0, 2.0), 2.0);
+    }
+
+    #[test]
+    fn reaction_is_the_derivative_of_the_energy_and_tangent_of_the_force() {
+        let (k0, g) = (2.0e5, 0.01);
+        for p in [1e-4, 3e-3, 8e-3] {
+            let h = 1e-9;
+            let (f, kt) = type7_reaction(k0, g, p);
+            let de = (type7_energy(k0, g, p + h) - type7_energy(k0, g, p - h)) / (2.0 * h);
+            assert!((de - f).abs() < 1e-5 * f, "{de} {f}");
+            let df = (type7_reaction(k0, g, p + h).0 - type7_reaction(k0, g, p - h).0) / (2.0 * h);
+            assert!((df - kt).abs() < 1e-5 * kt);
+        }
+        // Small penetration: linear spring K0.
+        let (f, kt) = type7_reaction(k0, g, 1e-9);
+        assert!((f / 1e-9 - k0).abs() < 1e-3 * k0 && (kt - k0).abs() < 1e-3 * k0);
+    }
+}
