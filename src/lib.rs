@@ -5,8 +5,8 @@
 //! `solver` (explicit cycle over `element`, `material`, `kinematics`).
 //! MPI lives only in `parallel`.
 
-pub mod deck;
 pub mod contact;
+pub mod deck;
 pub mod domain;
 pub mod element;
 pub mod kinematics;

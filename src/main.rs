@@ -71,6 +71,9 @@ enum Command {
         /// Write the /TH/NODE nodes' displacements every /TFILE period to this CSV file
         #[arg(long)]
         history: Option<PathBuf>,
+        /// Write the energies (internal, kinetic, rotational, external work, contact) at every cycle to this CSV file
+        #[arg(long)]
+        energies: Option<PathBuf>,
     },
     /// Under mpirun: rank 0 reads and partitions the deck, scatters one
     /// subdomain per rank; every rank reports what it holds and checks its
@@ -169,6 +172,7 @@ fn main() -> ExitCode {
             final_state,
             final_elements,
             history,
+            energies,
         } => {
             let Some(world) = World::init() else {
                 return input_error("MPI could not be initialised");
@@ -180,6 +184,7 @@ fn main() -> ExitCode {
                 final_state,
                 final_elements,
                 history,
+                energies,
                 strict: deck.strict,
             };
             match crashsim::solver::run(&world, &opts) {

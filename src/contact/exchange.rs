@@ -41,7 +41,12 @@ impl GhostPlan {
     /// Builds the plan (collective). `my_boxes[i]`: this rank's grown box of
     /// interface i; `main_owned[i]`: the main-surface cnodes of interface i that
     /// this rank owns.
-    pub fn build(world: &World, my_boxes: &[Aabb], main_owned: &[Vec<u32>], cx: &[V3]) -> GhostPlan {
+    pub fn build(
+        world: &World,
+        my_boxes: &[Aabb],
+        main_owned: &[Vec<u32>],
+        cx: &[V3],
+    ) -> GhostPlan {
         let me = world.rank() as usize;
         let n = world.size() as usize;
         if n == 1 {
@@ -60,7 +65,12 @@ impl GhostPlan {
                 if b.is_empty() {
                     continue;
                 }
-                ids.extend(main_owned[i].iter().copied().filter(|&c| b.contains(cx[c as usize])));
+                ids.extend(
+                    main_owned[i]
+                        .iter()
+                        .copied()
+                        .filter(|&c| b.contains(cx[c as usize])),
+                );
             }
             ids.sort_unstable();
             ids.dedup();
@@ -97,7 +107,11 @@ impl GhostPlan {
                 b
             })
             .collect();
-        let mut recv: Vec<Vec<f64>> = self.recv.iter().map(|ids| vec![0.0; ids.len() * 6]).collect();
+        let mut recv: Vec<Vec<f64>> = self
+            .recv
+            .iter()
+            .map(|ids| vec![0.0; ids.len() * 6])
+            .collect();
         world.exchange_f64(&self.ranks, &send, &mut recv);
         for (ids, buf) in self.recv.iter().zip(&recv) {
             for (j, &c) in ids.iter().enumerate() {
@@ -152,7 +166,11 @@ impl Contribution {
             c: b[0] as u32,
             hi: b[1],
             lo: b[2],
-            f: [f64::from_bits(b[3]), f64::from_bits(b[4]), f64::from_bits(b[5])],
+            f: [
+                f64::from_bits(b[3]),
+                f64::from_bits(b[4]),
+                f64::from_bits(b[5]),
+            ],
             k: f64::from_bits(b[6]),
             ibc: b[7] as u8,
         }

@@ -189,7 +189,9 @@ mod tests {
     fn darmstad_and_viscous_laws_follow_their_formulas() {
         let l = law(2);
         let (p, v) = (2.0, 0.5);
-        let expect = 0.1 + 0.3 * (0.2f64 * v).exp() * p * p + 0.5 * (0.05f64 * v).exp() * p
+        let expect = 0.1
+            + 0.3 * (0.2f64 * v).exp() * p * p
+            + 0.5 * (0.05f64 * v).exp() * p
             + 1.0 * (3.0f64 * v).exp();
         assert!((l.mu(p, v) - expect).abs() < 1e-14);
         let l1 = law(1);
@@ -204,11 +206,31 @@ mod tests {
         let mut st = [0.0; 3];
         let n = [0.0, 0.0, 1.0];
         // Small slip: elastic stick force K·v·dt.
-        let f = tangential_force(&l, 0.1, 100.0, [1.0, 0.0, 0.0], n, 1000.0, 1.0, 1e-3, &mut st);
+        let f = tangential_force(
+            &l,
+            0.1,
+            100.0,
+            [1.0, 0.0, 0.0],
+            n,
+            1000.0,
+            1.0,
+            1e-3,
+            &mut st,
+        );
         assert!((f[0] + 1.0).abs() < 1e-12);
         // Keep sliding: capped at μ·Fn = 10.
         for _ in 0..100 {
-            tangential_force(&l, 0.1, 100.0, [1.0, 0.0, 0.0], n, 1000.0, 1.0, 1e-3, &mut st);
+            tangential_force(
+                &l,
+                0.1,
+                100.0,
+                [1.0, 0.0, 0.0],
+                n,
+                1000.0,
+                1.0,
+                1e-3,
+                &mut st,
+            );
         }
         assert!((st[0] + 10.0).abs() < 1e-12);
     }
@@ -219,9 +241,29 @@ mod tests {
         l.iform = 1;
         let mut st = [0.0; 3];
         let n = [0.0, 0.0, 1.0];
-        let f = tangential_force(&l, 0.1, 100.0, [0.0, 2.0, 0.0], n, 1.0e6, 1.0, 1e-3, &mut st);
+        let f = tangential_force(
+            &l,
+            0.1,
+            100.0,
+            [0.0, 2.0, 0.0],
+            n,
+            1.0e6,
+            1.0,
+            1e-3,
+            &mut st,
+        );
         assert!((f[1] + 10.0).abs() < 1e-12);
-        let f = tangential_force(&l, 0.1, 100.0, [0.0, 1e-6, 0.0], n, 1.0e6, 1.0, 1e-3, &mut st);
+        let f = tangential_force(
+            &l,
+            0.1,
+            100.0,
+            [0.0, 1e-6, 0.0],
+            n,
+            1.0e6,
+            1.0,
+            1e-3,
+            &mut st,
+        );
         let c = (2.0e6f64).sqrt();
         assert!((f[1] + c * 1e-6).abs() < 1e-12);
     }

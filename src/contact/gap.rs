@@ -136,7 +136,11 @@ mod tests {
         let r2 = GapRule { igap: 2, ..r };
         assert_eq!(r2.pair_gap(0.5, 0.25, 1.0, 1.0), 0.3);
         assert!((r2.pair_gap(0.2, 0.1, 1.0, 1.0) - 0.15).abs() < 1e-15);
-        let r3 = GapRule { igap: 3, gapmax: 1e30, ..r };
+        let r3 = GapRule {
+            igap: 3,
+            gapmax: 1e30,
+            ..r
+        };
         assert!((r3.pair_gap(0.5, 0.5, 0.2, 0.1) - 0.12).abs() < 1e-15);
         let r0 = GapRule { igap: 1000, ..r };
         assert_eq!(r0.pair_gap(0.5, 0.5, 1.0, 1.0), 0.1);

@@ -259,7 +259,12 @@ mod tests {
 
     #[test]
     fn triangle_segment_and_tetra_sign() {
-        let x = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 1.0, 0.0]];
+        let x = [
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [0.0, 1.0, 0.0],
+        ];
         let p = project([0.2, 0.2, -0.1], &x, true);
         assert!((p.dist - 0.1).abs() < 1e-15);
         assert_eq!(p.shape[3], 0.0);

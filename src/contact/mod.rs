@@ -158,7 +158,10 @@ impl ContactSystem {
                         PassRun {
                             mine,
                             nodes,
-                            cand: Candidates { ptr: vec![0; n + 1], segs: Vec::new() },
+                            cand: Candidates {
+                                ptr: vec![0; n + 1],
+                                segs: Vec::new(),
+                            },
                             state: Vec::new(),
                             state5: vec![(NONE, PairState::default()); n],
                         }
@@ -296,7 +299,11 @@ impl ContactSystem {
                 continue;
             }
             let d = (2.0 * mass[l] / k).sqrt();
-            let cand = ContactStep { dt: d, what: "NODE", id: self.node_ids[c as usize] };
+            let cand = ContactStep {
+                dt: d,
+                what: "NODE",
+                id: self.node_ids[c as usize],
+            };
             if best.is_none_or(|b| (cand.dt, cand.id) < (b.dt, b.id)) {
                 best = Some(cand);
             }
@@ -323,7 +330,11 @@ impl ContactSystem {
                 if b.is_empty() {
                     return b;
                 }
-                let walk = if it.law == Law::Type5 { 2.0 * diag } else { 0.0 };
+                let walk = if it.law == Law::Type5 {
+                    2.0 * diag
+                } else {
+                    0.0
+                };
                 b.grown(it.max_gap + 2.0 * it.margin + diag + walk)
             })
             .collect();
@@ -366,12 +377,19 @@ impl ContactSystem {
                     })
                     .collect();
                 let run = &self.runs[ii][pi];
-                let pts: Vec<V3> = run.mine.iter().map(|&k| self.cx[p.sec[k as usize] as usize]).collect();
+                let pts: Vec<V3> = run
+                    .mine
+                    .iter()
+                    .map(|&k| self.cx[p.sec[k as usize] as usize])
+                    .collect();
                 let method = search::choose(&boxes);
                 let raw = search::candidates(&pts, it.max_gap + it.margin, &boxes, method);
                 // Exclusions.
                 let x0 = &self.setup.x0;
-                let mut cand = Candidates { ptr: vec![0], segs: Vec::with_capacity(raw.segs.len()) };
+                let mut cand = Candidates {
+                    ptr: vec![0],
+                    segs: Vec::with_capacity(raw.segs.len()),
+                };
                 for (j, &k) in run.mine.iter().enumerate() {
                     let s = p.sec[k as usize];
                     for &m in &raw.segs[raw.ptr[j]..raw.ptr[j + 1]] {
@@ -381,7 +399,9 @@ impl ContactSystem {
                         }
                         if it.irem_gap {
                             let g = it.gap.gapmin;
-                            if seg.iter().any(|&c| geo::norm(geo::sub(x0[c as usize], x0[s as usize])) < 2.0 * g) {
+                            if seg.iter().any(|&c| {
+                                geo::norm(geo::sub(x0[c as usize], x0[s as usize])) < 2.0 * g
+                            }) {
                                 continue;
                             }
                         }
@@ -393,7 +413,11 @@ impl ContactSystem {
                 let old = &run.cand;
                 let mut state = Vec::with_capacity(cand.segs.len());
                 for j in 0..run.mine.len() {
-                    let olds = if old.ptr.len() > j + 1 { &old.segs[old.ptr[j]..old.ptr[j + 1]] } else { &[][..] };
+                    let olds = if old.ptr.len() > j + 1 {
+                        &old.segs[old.ptr[j]..old.ptr[j + 1]]
+                    } else {
+                        &[][..]
+                    };
                     for &m in &cand.segs[cand.ptr[j]..cand.ptr[j + 1]] {
                         let st = match olds.binary_search(&m) {
                             Ok(q) => run.state[old.ptr[j] + q],
@@ -425,7 +449,11 @@ impl ContactSystem {
                         Law::Type7 => run.cand.segs[run.cand.ptr[j]..run.cand.ptr[j + 1]].to_vec(),
                         Law::Type5 => {
                             let m = run.nodes[j].last_seg;
-                            if m == NONE { vec![] } else { vec![m] }
+                            if m == NONE {
+                                vec![]
+                            } else {
+                                vec![m]
+                            }
                         }
                     };
                     for m in segs {
@@ -441,14 +469,18 @@ impl ContactSystem {
                         let g = pair_gap(it, p, k, m as usize);
                         let p0 = match it.law {
                             Law::Type7 => g - geo::project(xs, &xm, tri).dist,
-                            Law::Type5 => type5::penetration(xs, &xm, tri, g).map(|r| r.0).unwrap_or(0.0),
+                            Law::Type5 => type5::penetration(xs, &xm, tri, g)
+                                .map(|r| r.0)
+                                .unwrap_or(0.0),
                         };
                         match gap::initial_penetration(it.inacti, it.fpenmax, p0, g) {
                             gap::InitialPenetration::DeactivateNode => run.nodes[j].off = true,
-                            gap::InitialPenetration::DeactivateSegment => run.nodes[j].off_segs.push(m),
-                            gap::InitialPenetration::ReduceGap => {
-                                run.nodes[j].gap0.push((m, gap::initial_gap(it.inacti, g, p0)))
+                            gap::InitialPenetration::DeactivateSegment => {
+                                run.nodes[j].off_segs.push(m)
                             }
+                            gap::InitialPenetration::ReduceGap => run.nodes[j]
+                                .gap0
+                                .push((m, gap::initial_gap(it.inacti, g, p0))),
                             _ => {}
                         }
                     }
@@ -487,7 +519,9 @@ impl ContactSystem {
                     }
                 };
                 // Per node: its pairs' forces, computed in parallel, gathered in order.
-                let results: Vec<(Vec<Contribution>, Option<ContactStep>, InterfaceSums)> = match it.law {
+                let results: Vec<(Vec<Contribution>, Option<ContactStep>, InterfaceSums)> = match it
+                    .law
+                {
                     Law::Type7 => {
                         let cand = &run.cand;
                         let nodes = &mut run.nodes;
@@ -516,7 +550,9 @@ impl ContactSystem {
                                 }
                                 let xs = cx[s as usize];
                                 let vs = cv[s as usize];
-                                for (q, &m) in cand.segs[cand.ptr[j]..cand.ptr[j + 1]].iter().enumerate() {
+                                for (q, &m) in
+                                    cand.segs[cand.ptr[j]..cand.ptr[j + 1]].iter().enumerate()
+                                {
                                     if ns.off_segs.binary_search(&m).is_ok() {
                                         continue;
                                     }
@@ -561,14 +597,33 @@ impl ContactSystem {
                                         if dtp < it.dtmin {
                                             if it.itied == 0 {
                                                 ns.off = true;
-                                                return (Vec::new(), None, InterfaceSums::default());
+                                                return (
+                                                    Vec::new(),
+                                                    None,
+                                                    InterfaceSums::default(),
+                                                );
                                             }
                                             st.tie = Some((f.shape, geo::sub(xs, f.point)));
                                         }
                                     }
-                                    emit(&mut contribs, &mut sums, ii, pi, nodes_g[s as usize], s, m, &p.segs[m as usize], &f, ibc);
+                                    emit(
+                                        &mut contribs,
+                                        &mut sums,
+                                        ii,
+                                        pi,
+                                        nodes_g[s as usize],
+                                        s,
+                                        m,
+                                        &p.segs[m as usize],
+                                        &f,
+                                        ibc,
+                                    );
                                     if f.dt_kin < step.map_or(f64::INFINITY, |b| b.dt) {
-                                        step = Some(ContactStep { dt: f.dt_kin, what: "INTER", id: it.id });
+                                        step = Some(ContactStep {
+                                            dt: f.dt_kin,
+                                            what: "INTER",
+                                            id: it.id,
+                                        });
                                     }
                                 }
                                 (contribs, step, sums)
@@ -591,7 +646,11 @@ impl ContactSystem {
                                 }
                                 let xs = cx[s as usize];
                                 let Some(m) = type5_walk(p, ns.last_seg, xs, walk_reach, &|c| {
-                                    if avail[c as usize] { Some(cx[c as usize]) } else { None }
+                                    if avail[c as usize] {
+                                        Some(cx[c as usize])
+                                    } else {
+                                        None
+                                    }
                                 }) else {
                                     return (contribs, None, sums);
                                 };
@@ -602,7 +661,9 @@ impl ContactSystem {
                                 if ns.off_segs.binary_search(&m).is_ok() {
                                     return (contribs, None, sums);
                                 }
-                                let Some((xm, vm)) = seg_xv(m) else { return (contribs, None, sums) };
+                                let Some((xm, vm)) = seg_xv(m) else {
+                                    return (contribs, None, sums);
+                                };
                                 let inp = type5::Pair {
                                     xs,
                                     vs: cv[s as usize],
@@ -616,7 +677,18 @@ impl ContactSystem {
                                     dt,
                                 };
                                 if let Some(f) = type5::pair(&inp, &mut st5.1) {
-                                    emit(&mut contribs, &mut sums, ii, pi, nodes_g[s as usize], s, m, &p.segs[m as usize], &f, ibc);
+                                    emit(
+                                        &mut contribs,
+                                        &mut sums,
+                                        ii,
+                                        pi,
+                                        nodes_g[s as usize],
+                                        s,
+                                        m,
+                                        &p.segs[m as usize],
+                                        &f,
+                                        ibc,
+                                    );
                                 }
                                 (contribs, None, sums)
                             })
@@ -659,7 +731,14 @@ fn emit(
     ibc: u8,
 ) {
     let (hi, lo) = Contribution::key(iface, pass, sec_global, m, 4);
-    out.push(Contribution { c: s, hi, lo, f: f.fs, k: f.kt, ibc: if f.f_n > 0.0 { ibc } else { 0 } });
+    out.push(Contribution {
+        c: s,
+        hi,
+        lo,
+        f: f.fs,
+        k: f.kt,
+        ibc: if f.f_n > 0.0 { ibc } else { 0 },
+    });
     let n = if seg[3] == seg[2] { 3 } else { 4 };
     for i in 0..n {
         if f.shape[i] == 0.0 {
@@ -684,14 +763,22 @@ fn emit(
 
 /// The gap of pair (secondary k, segment m) (card eq. (8)–(10)).
 fn pair_gap(it: &setup::Interface, p: &setup::Pass, k: usize, m: usize) -> f64 {
-    it.gap.pair_gap(p.sec_gap[k], p.seg_gap[m], p.sec_lmin[k], p.seg_lmin[m])
+    it.gap
+        .pair_gap(p.sec_gap[k], p.seg_gap[m], p.sec_lmin[k], p.seg_lmin[m])
 }
 
 /// The stiffness of pair (secondary k, segment m): TYPE7 by Istf (card
 /// eq. (1)–(3)), TYPE5 s·Km (§8.6.3), TYPE3 s·K1·K2/(K1+K2) (EQ. 8.5.3.1).
 fn pair_stiffness(it: &setup::Interface, p: &setup::Pass, k: usize, m: usize) -> f64 {
     match (it.law, it.type_number) {
-        (Law::Type7, _) => stiffness::type7_pair(it.istf, it.stfac, it.stfac * p.seg_k[m], p.sec_k[k], it.stmin, it.stmax),
+        (Law::Type7, _) => stiffness::type7_pair(
+            it.istf,
+            it.stfac,
+            it.stfac * p.seg_k[m],
+            p.sec_k[k],
+            it.stmin,
+            it.stmax,
+        ),
         (Law::Type5, 3) => it.stfac * stiffness::series(p.sec_k[k], p.seg_k[m]),
         (Law::Type5, _) => it.stfac * p.seg_k[m],
     }
@@ -702,7 +789,13 @@ fn pair_stiffness(it: &setup::Interface, p: &setup::Pass, k: usize, m: usize) ->
 /// node M2 among their nodes; the closest of the segments around M2. The walk
 /// is only taken while N is within `reach` of S0's nodes (farther nodes keep
 /// their segment), so it only ever reads nodes every rank can see.
-fn type5_walk(p: &setup::Pass, s0: u32, xs: V3, reach: f64, x_of: &dyn Fn(u32) -> Option<V3>) -> Option<u32> {
+fn type5_walk(
+    p: &setup::Pass,
+    s0: u32,
+    xs: V3,
+    reach: f64,
+    x_of: &dyn Fn(u32) -> Option<V3>,
+) -> Option<u32> {
     let seg0 = p.segs[s0 as usize];
     let mut m1: Option<(f64, u32)> = None;
     for &c in &seg0 {

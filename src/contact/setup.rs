@@ -64,7 +64,9 @@ impl Pass {
     /// Segments around main cnode `c` (empty when `c` is on no segment).
     pub fn segments_around(&self, c: u32) -> &[u32] {
         match self.node_segs_key.binary_search(&c) {
-            Ok(i) => &self.node_segs[self.node_segs_ptr[i] as usize..self.node_segs_ptr[i + 1] as usize],
+            Ok(i) => {
+                &self.node_segs[self.node_segs_ptr[i] as usize..self.node_segs_ptr[i + 1] as usize]
+            }
             Err(_) => &[],
         }
     }
@@ -124,7 +126,8 @@ impl ContactSetup {
         self.interfaces.is_empty()
     }
     pub fn holders_of(&self, c: u32) -> &[u32] {
-        &self.holders[self.holders_ptr[c as usize] as usize..self.holders_ptr[c as usize + 1] as usize]
+        &self.holders
+            [self.holders_ptr[c as usize] as usize..self.holders_ptr[c as usize + 1] as usize]
     }
     pub fn cnode_of(&self, global: u32) -> Option<u32> {
         self.nodes.binary_search(&global).ok().map(|i| i as u32)
@@ -191,8 +194,10 @@ fn element_volume(m: &Model, ki: usize, e: usize) -> f64 {
 /// over the node's elements; g_s = half the largest shell thickness (card
 /// comment 11); the smallest edge of the node's elements.
 fn node_data(m: &Model, nodes: &[u32]) -> HashMap<u32, (f64, f64, f64)> {
-    let mut out: HashMap<u32, (f64, f64, f64)> =
-        nodes.iter().map(|&n| (n, (0.0, 0.0, f64::INFINITY))).collect();
+    let mut out: HashMap<u32, (f64, f64, f64)> = nodes
+        .iter()
+        .map(|&n| (n, (0.0, 0.0, f64::INFINITY)))
+        .collect();
     for (ki, set) in m.elements.iter().enumerate() {
         let shell = matches!(set.kind, ElementKind::Shell4 | ElementKind::Shell3);
         let solid = matches!(set.kind, ElementKind::Brick8 | ElementKind::Tetra4);
@@ -211,7 +216,10 @@ fn node_data(m: &Model, nodes: &[u32]) -> HashMap<u32, (f64, f64, f64)> {
             let (stiff, g) = if shell {
                 (stiffness::shell(mat.e, set.thick[e]), 0.5 * set.thick[e])
             } else {
-                (stiffness::solid_node(bulk(mat), element_volume(m, ki, e)), 0.0)
+                (
+                    stiffness::solid_node(bulk(mat), element_volume(m, ki, e)),
+                    0.0,
+                )
             };
             let lmin = (0..n.len())
                 .map(|i| {
@@ -241,12 +249,7 @@ struct SegData {
     elem: (u8, u32),
 }
 
-fn segment_data(
-    m: &Model,
-    faces: &FaceIndex,
-    seg: &[u32; 4],
-    law: Law,
-) -> Result<SegData, String> {
+fn segment_data(m: &Model, faces: &FaceIndex, seg: &[u32; 4], law: Law) -> Result<SegData, String> {
     let Some(&(ki, e)) = faces.map.get(&face_key(seg)) else {
         return Err(format!(
             "main segment {} {} {} {} is not the face of a shell or solid element: its stiffness is undefined (each main segment must lie on an element)",
@@ -384,7 +387,11 @@ pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<ContactSetup, String> {
                 },
                 None,
             ),
-            _ => return Err(format!("{kw}: this interface type is not computed by the engine yet")),
+            _ => {
+                return Err(format!(
+                    "{kw}: this interface type is not computed by the engine yet"
+                ))
+            }
         };
         // Passes: (secondary nodes, own segments for TYPE3 node stiffness, main segments).
         let mut pass_defs: Vec<(Vec<u32>, Option<&Vec<[u32; 4]>>, &Vec<[u32; 4]>)> = Vec::new();
@@ -448,7 +455,8 @@ pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<ContactSetup, String> {
                 Some(own) => {
                     let mut h: HashMap<u32, f64> = HashMap::new();
                     for s in own.iter() {
-                        let d = segment_data(m, &faces, s, common.law).map_err(|e| format!("{kw}: {e}"))?;
+                        let d = segment_data(m, &faces, s, common.law)
+                            .map_err(|e| format!("{kw}: {e}"))?;
                         for &n in s {
                             let e = h.entry(n).or_insert(0.0);
                             *e = e.max(d.k);
@@ -516,8 +524,13 @@ pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<ContactSetup, String> {
             passes.push(pass);
         }
         let l_min = if l_min.is_finite() { l_min } else { 0.0 };
-        let l_mean = if n_edges > 0 { l_sum / n_edges as f64 } else { 0.0 };
-        let (gap_rule, istf, stmin, stmax, viss, bumult, fpenmax, dtmin, itied, irem_gap) = match t7 {
+        let l_mean = if n_edges > 0 {
+            l_sum / n_edges as f64
+        } else {
+            0.0
+        };
+        let (gap_rule, istf, stmin, stmax, viss, bumult, fpenmax, dtmin, itied, irem_gap) = match t7
+        {
             Some(t) => {
                 let igap = t.igap;
                 let shell_t = if n_shell == 0 {
@@ -571,7 +584,9 @@ pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<ContactSetup, String> {
             ),
         };
         let max_gap = gap_rule.max_gap(gs_max, gm_max);
-        let margin = (bumult * l_mean).max(0.1 * max_gap).max(1e-12 * l_mean.max(1.0));
+        let margin = (bumult * l_mean)
+            .max(0.1 * max_gap)
+            .max(1e-12 * l_mean.max(1.0));
         interfaces.push(Interface {
             id: c.id,
             type_number: c.type_number(),

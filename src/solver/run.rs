@@ -3,8 +3,8 @@
 use super::assembly::{key, AssemblyPlan, SLOT};
 use super::blocks::{make_block, Block};
 use super::global::GlobalData;
-use crate::contact::{ContactStep, ContactSystem};
 use super::listing::{format_row, Listing, Row, HEADER};
+use crate::contact::{ContactStep, ContactSystem};
 use crate::deck::{self, Dof, ElementKind, EngineFile, ReadOptions};
 use crate::domain::{self, Subdomain};
 use crate::kinematics::function;
@@ -25,6 +25,8 @@ pub struct RunOptions {
     pub final_elements: Option<PathBuf>,
     /// Displacements of the /TH/NODE nodes every /TFILE period.
     pub history: Option<PathBuf>,
+    /// Energies at every cycle (CSV; costs reductions every cycle).
+    pub energies: Option<PathBuf>,
     pub strict: bool,
 }
 
@@ -434,15 +436,17 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
             }
         })
         .collect();
-    let wall_driver: Vec<Option<&model::ImposedMotion>> = g
+    // Every translational /IMPVEL on a moving wall's node drives that direction.
+    let wall_driver: Vec<Vec<&model::ImposedMotion>> = g
         .rigid_walls
         .iter()
-        .map(|w| {
-            w.node.and_then(|nd| {
-                g.imposed_velocities
-                    .iter()
-                    .find(|c| c.nodes.binary_search(&nd).is_ok() && c.card.dir.index() < 3)
-            })
+        .map(|w| match w.node {
+            Some(nd) => g
+                .imposed_velocities
+                .iter()
+                .filter(|c| c.nodes.binary_search(&nd).is_ok() && c.card.dir.index() < 3)
+                .collect(),
+            None => Vec::new(),
         })
         .collect();
     let impdisp: Vec<(Vec<u32>, &model::ImposedMotion)> = g
@@ -591,7 +595,17 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
     plan.assemble(world, &contrib, &mut fint);
     external_forces(&g, &fct_index, &cloads, &gravity, &mass, t, &mut fext);
     let cstep = contact_forces(&mut contact, &x, &v, t, 0.0, &mut fcont, &mut fixed);
-    let mut step = global_step(world, &g, &blocks, engine.dt_scale, stop, None, cstep, cycle, t)?;
+    let mut step = global_step(
+        world,
+        &g,
+        &blocks,
+        engine.dt_scale,
+        stop,
+        None,
+        cstep,
+        cycle,
+        t,
+    )?;
     let mut dt = step.dt;
     let (ke0, ker0) = kinetic(
         world,
@@ -678,6 +692,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
         Some((r.parse().ok()?, c.parse().ok()?))
     });
     let loop_started = Instant::now();
+    let mut energy_rows: Vec<[f64; 8]> = Vec::new();
 
     // ---- the cycle ----------------------------------------------------------
     let result: Result<(), RunError> = loop {
@@ -780,7 +795,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
         }
         // Rigid walls.
         for (w, (nodes, wall)) in walls.iter().enumerate() {
-            if let Some(c) = wall_driver[w] {
+            for c in &wall_driver[w] {
                 if let Some(val) = imposed(c, th) {
                     wall_v[w][c.card.dir.index()] = val;
                 }
@@ -814,7 +829,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
                     push.push((sd.node_global[l], f));
                 }
             }
-            if wall.node.is_some() && wall_driver[w].is_none() && wall.card.mass > 0.0 {
+            if wall.node.is_some() && wall_driver[w].is_empty() && wall.card.mass > 0.0 {
                 // Free moving wall: its mass takes the momentum the nodes lost.
                 let mut all: Vec<(u32, [f64; 3])> =
                     world.allgather(&push).into_iter().flatten().collect();
@@ -903,7 +918,17 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
         plan.assemble(world, &contrib, &mut fint);
         external_forces(&g, &fct_index, &cloads, &gravity, &mass, t, &mut fext);
         let cstep = contact_forces(&mut contact, &x, &v, t, dt, &mut fcont, &mut fixed);
-        step = match global_step(world, &g, &blocks, engine.dt_scale, stop, nan_msg, cstep, cycle, t) {
+        step = match global_step(
+            world,
+            &g,
+            &blocks,
+            engine.dt_scale,
+            stop,
+            nan_msg,
+            cstep,
+            cycle,
+            t,
+        ) {
             Ok(s) => s,
             Err(e) => break Err(e),
         };
@@ -919,6 +944,26 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
                 "time step {dt:e} set by {} {} is below the /DT minimum {:e} at cycle {cycle}, time {t:e}",
                 step.what, step.id, engine.dt_min
             )));
+        }
+        if opts.energies.is_some() {
+            let mut e = [
+                blocks.iter().map(|b| b.energy()).sum::<f64>(),
+                w_ext,
+                e_contact,
+            ];
+            world.sum_f64(&mut e);
+            let (ke, ker) = kinetic(
+                world,
+                &v,
+                &vr,
+                &mass,
+                &inertia,
+                &owned,
+                &is_main,
+                &bodies,
+                &local_bodies,
+            );
+            energy_rows.push([t, cycle as f64, dt, e[0], ke, ker, e[1], e[2]]);
         }
         if cycle % print_every == 0 || t >= tstop {
             let mut ie = [blocks.iter().map(|b| b.energy()).sum::<f64>()];
@@ -937,22 +982,34 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
                 &bodies,
                 &local_bodies,
             );
-            emit(&mut listing, cycle, t, dt, &step, e_int, ke, ker, w[0], w[1]);
-            if std::env::var_os("CRASHSIM_DEBUG_NODEKE").is_some() {
-                let mut groups: std::collections::BTreeMap<u64, f64> = Default::default();
-                for l in 0..n {
-                    let id = g.node_ids[sd.node_global[l] as usize];
-                    let e = 0.5 * mass[l] * (v[l][0] * v[l][0] + v[l][1] * v[l][1] + v[l][2] * v[l][2]);
-                    *groups.entry(id / 10).or_default() += e;
-                }
-                eprintln!("KE t={t:.3e} {:?}", groups.iter().map(|(k, e)| format!("{k}:{e:.3}")).collect::<Vec<_>>());
-            }
+            emit(
+                &mut listing,
+                cycle,
+                t,
+                dt,
+                &step,
+                e_int,
+                ke,
+                ker,
+                w[0],
+                w[1],
+            );
             // Contact force resultants per interface (secondary side).
             if !contact.is_empty() {
                 let mut r: Vec<f64> = contact
                     .sums
                     .iter()
-                    .flat_map(|s| [s.f_normal[0], s.f_normal[1], s.f_normal[2], s.f_tangent[0], s.f_tangent[1], s.f_tangent[2], s.pairs as f64])
+                    .flat_map(|s| {
+                        [
+                            s.f_normal[0],
+                            s.f_normal[1],
+                            s.f_normal[2],
+                            s.f_tangent[0],
+                            s.f_tangent[1],
+                            s.f_tangent[2],
+                            s.pairs as f64,
+                        ]
+                    })
                     .collect();
                 world.sum_f64(&mut r);
                 if let Some(l) = &mut listing {
@@ -1023,6 +1080,22 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
     }
     if let Some(path) = &opts.final_elements {
         write_final_elements(world, &g, &blocks, path)?;
+    }
+    if let (Some(path), 0) = (&opts.energies, rank) {
+        let mut s =
+            String::from("time,cycle,dt,internal,kinetic,rotational,external_work,contact\n");
+        for r in &energy_rows {
+            s.push_str(&format!(
+                "{:.16e},{},{:.16e},{:.16e},{:.16e},{:.16e},{:.16e},{:.16e}\n",
+                r[0], r[1] as u64, r[2], r[3], r[4], r[5], r[6], r[7]
+            ));
+        }
+        std::fs::write(path, s).map_err(|e| {
+            RunError::Input(format!(
+                "{}: cannot write the energies: {e}",
+                path.display()
+            ))
+        })?;
     }
     if let (Some(path), 0) = (&opts.history, rank) {
         let mut s = String::from("time");

@@ -57,7 +57,17 @@ pub fn pair(p: &Pair, st: &mut PairState) -> Option<PairForce> {
         let vt = friction::tangential(vrel, n);
         let pressure = if p.area > 0.0 { f_n / p.area } else { 0.0 };
         let mu = p.friction.mu(pressure, geo::norm(vt));
-        let raw = friction::tangential_force(p.friction, mu, f_n, vt, n, 0.1 * p.k, 0.0, p.dt, &mut st.ft);
+        let raw = friction::tangential_force(
+            p.friction,
+            mu,
+            f_n,
+            vt,
+            n,
+            0.1 * p.k,
+            0.0,
+            p.dt,
+            &mut st.ft,
+        );
         let a = p.friction.filter_alpha(p.dt);
         st.ff = geo::add(geo::scale(raw, a), geo::scale(st.ff, 1.0 - a));
         f_t = st.ff;
@@ -82,7 +92,12 @@ mod tests {
 
     #[test]
     fn one_sided_linear_spring() {
-        let xm = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 1.0, 0.0], [0.0, 1.0, 0.0]];
+        let xm = [
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [1.0, 1.0, 0.0],
+            [0.0, 1.0, 0.0],
+        ];
         let vm = [[0.0; 3]; 4];
         let law = FrictionLaw::none();
         let mut st = PairState::default();

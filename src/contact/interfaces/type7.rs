@@ -49,7 +49,8 @@ pub fn pair(p: &Pair, st: &mut PairState) -> Option<PairForce> {
         let pressure = if p.area > 0.0 { f_n / p.area } else { 0.0 };
         let mu = p.friction.mu(pressure, geo::norm(vt));
         let k = if p.friction.iform == 1 { kt } else { p.k0 };
-        let raw = friction::tangential_force(p.friction, mu, f_n, vt, pr.dir, k, p.ms, p.dt, &mut st.ft);
+        let raw =
+            friction::tangential_force(p.friction, mu, f_n, vt, pr.dir, k, p.ms, p.dt, &mut st.ft);
         let a = p.friction.filter_alpha(p.dt);
         st.ff = geo::add(geo::scale(raw, a), geo::scale(st.ff, 1.0 - a));
         f_t = st.ff;
@@ -85,7 +86,11 @@ pub fn tied(p: &Pair, st: &mut PairState, itied: i64) -> Option<PairForce> {
     let c = p.viss.max(0.05) * (2.0 * p.k0 * p.ms).sqrt();
     let fs = geo::sub(geo::scale(err, -p.k0), geo::scale(vrel, c));
     let ol = geo::norm(offset);
-    let dir = if ol > 0.0 { geo::scale(offset, 1.0 / ol) } else { [0.0; 3] };
+    let dir = if ol > 0.0 {
+        geo::scale(offset, 1.0 / ol)
+    } else {
+        [0.0; 3]
+    };
     let f_n = geo::dot(fs, dir);
     if itied == 1 && f_n < 0.0 {
         st.tie = None;
@@ -109,10 +114,21 @@ mod tests {
     use super::*;
 
     fn plate() -> [V3; 4] {
-        [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 1.0, 0.0], [0.0, 1.0, 0.0]]
+        [
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [1.0, 1.0, 0.0],
+            [0.0, 1.0, 0.0],
+        ]
     }
 
-    fn input<'a>(xs: V3, vs: V3, xm: &'a [V3; 4], vm: &'a [V3; 4], law: &'a FrictionLaw) -> Pair<'a> {
+    fn input<'a>(
+        xs: V3,
+        vs: V3,
+        xm: &'a [V3; 4],
+        vm: &'a [V3; 4],
+        law: &'a FrictionLaw,
+    ) -> Pair<'a> {
         Pair {
             xs,
             vs,
@@ -139,7 +155,11 @@ mod tests {
         assert!(up.fs[2] > 0.0);
         // F = K0·P·Gap/(Gap − P) with P = 0.05: 1000·0.05·2 = 100.
         assert!((up.fs[2] - 100.0).abs() < 1e-9);
-        let down = pair(&input([0.25, 0.5, -0.05], [0.0; 3], &xm, &vm, &law), &mut st).unwrap();
+        let down = pair(
+            &input([0.25, 0.5, -0.05], [0.0; 3], &xm, &vm, &law),
+            &mut st,
+        )
+        .unwrap();
         assert!((down.fs[2] + 100.0).abs() < 1e-9);
         // Segment forces −N_i·F have the same moment about the node as −F at the contact point.
         let mut m = [0.0; 3];
@@ -176,7 +196,10 @@ mod tests {
     fn coulomb_friction_opposes_sliding() {
         let xm = plate();
         let vm = [[0.0; 3]; 4];
-        let law = FrictionLaw { fric: 0.3, ..FrictionLaw::none() };
+        let law = FrictionLaw {
+            fric: 0.3,
+            ..FrictionLaw::none()
+        };
         let mut st = PairState::default();
         let inp = input([0.5, 0.5, 0.05], [5.0, 0.0, 0.0], &xm, &vm, &law);
         let mut f = pair(&inp, &mut st).unwrap();

@@ -46,8 +46,10 @@ impl Grid {
         let ncell = dims[0] * dims[1] * dims[2];
         let range = |b: &Aabb| {
             let g = b.grown(reach);
-            let lo = [0, 1, 2].map(|k| (((g.min[k] - origin[k]) / h).floor().max(0.0) as usize).min(dims[k] - 1));
-            let hi = [0, 1, 2].map(|k| (((g.max[k] - origin[k]) / h).floor().max(0.0) as usize).min(dims[k] - 1));
+            let lo = [0, 1, 2]
+                .map(|k| (((g.min[k] - origin[k]) / h).floor().max(0.0) as usize).min(dims[k] - 1));
+            let hi = [0, 1, 2]
+                .map(|k| (((g.max[k] - origin[k]) / h).floor().max(0.0) as usize).min(dims[k] - 1));
             (lo, hi)
         };
         let mut count = vec![0u32; ncell + 1];

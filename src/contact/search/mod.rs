@@ -189,7 +189,9 @@ mod tests {
     fn cloud(n: usize, seed: u64) -> (Vec<V3>, Vec<Aabb>) {
         let mut s = seed;
         let mut rnd = || {
-            s = s.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            s = s
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
             ((s >> 11) as f64) / ((1u64 << 53) as f64)
         };
         let mut boxes = Vec::new();
@@ -201,7 +203,9 @@ mod tests {
                 max: [c[0] + h, c[1] + h, c[2] + 0.01],
             });
         }
-        let pts = (0..n).map(|_| [rnd() * 10.0, rnd() * 10.0, rnd() * 2.0]).collect();
+        let pts = (0..n)
+            .map(|_| [rnd() * 10.0, rnd() * 10.0, rnd() * 2.0])
+            .collect();
         (pts, boxes)
     }
 

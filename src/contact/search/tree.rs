@@ -99,9 +99,7 @@ fn build_rec(
     let slice = &mut order[first..first + count];
     // Median split; ties broken by segment index so the tree is the same on every run.
     slice.select_nth_unstable_by(mid, |&a, &b| {
-        centre(a)[axis]
-            .total_cmp(&centre(b)[axis])
-            .then(a.cmp(&b))
+        centre(a)[axis].total_cmp(&centre(b)[axis]).then(a.cmp(&b))
     });
     let l = build_rec(nodes, order, first, mid, boxes, centre);
     let r = build_rec(nodes, order, first + mid, count - mid, boxes, centre);
