@@ -137,9 +137,40 @@ fn main() -> ExitCode {
                 }
             };
             if json {
+                // Which ranks each interface's secondary nodes and main segments live on:
+                // an interface "crosses" the cut when they span more than one rank.
+                let (ptr, enodes) = domain::mesh_csr(&m);
+                let mut node_ranks: Vec<Vec<u32>> = vec![Vec::new(); m.nodes.len()];
+                for e in 0..ptr.len() - 1 {
+                    for &nd in &enodes[ptr[e]..ptr[e + 1]] {
+                        let r = &mut node_ranks[nd as usize];
+                        if !r.contains(&p.part[e]) {
+                            r.push(p.part[e]);
+                        }
+                    }
+                }
+                let ranks_of = |nodes: &mut dyn Iterator<Item = u32>| {
+                    let mut s: Vec<u32> = nodes.flat_map(|nd| node_ranks[nd as usize].clone()).collect();
+                    s.sort_unstable();
+                    s.dedup();
+                    s
+                };
+                let inter: Vec<serde_json::Value> = m
+                    .interfaces
+                    .iter()
+                    .map(|i| {
+                        serde_json::json!({
+                            "id": i.card.id,
+                            "type": i.card.type_number(),
+                            "secondary_ranks": ranks_of(&mut i.secondary_nodes.iter().copied()),
+                            "main_ranks": ranks_of(&mut i.main_segments.iter().flatten().copied()),
+                        })
+                    })
+                    .collect();
                 let v = serde_json::json!({
                     "deck": m.name, "np": np, "elements": m.n_elements(), "nodes": m.nodes.len(),
                     "edge_cut": r.edge_cut, "imbalance": r.imbalance, "per_rank": r.per_rank, "part": p.part,
+                    "interfaces": inter,
                 });
                 println!(
                     "{}",

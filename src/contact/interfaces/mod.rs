@@ -37,4 +37,6 @@ pub struct PairState {
     pub ff: V3,
     /// ITIED: the node is tied to this point of the segment (shape, offset).
     pub tie: Option<([f64; 4], V3)>,
+    /// Side of the segment (sign of the normal distance) at the last cycle in contact; 0 = none.
+    pub side: i8,
 }

@@ -35,6 +35,12 @@ pub fn pair(p: &Pair, st: &mut PairState) -> Option<PairForce> {
         st.ff = [0.0; 3];
         return None;
     }
+    let s = geo::dot(geo::sub(p.xs, pr.point), pr.normal);
+    let side = if s >= 0.0 { 1 } else { -1 };
+    if st.side != 0 && st.side != side && std::env::var_os("CRASHSIM_DEBUG_CROSS").is_some() {
+        eprintln!("crossing: dist {} gap {}", pr.dist, p.gap);
+    }
+    st.side = side;
     let pen = p.gap - pr.dist;
     let (f_el, kt) = stiffness::type7_reaction(p.k0, p.gap, pen);
     let vc = geo::interpolate(&pr.shape, p.vm);
