@@ -34,14 +34,6 @@ fn qbat_shells_are_refused_at_their_property() {
 }
 
 #[test]
-fn global_plasticity_shells_are_refused_at_their_property() {
-    run_refused(
-        &qa_deck("INT357"),
-        &["INT357_0000.rad:", "N = 0", "not supported yet"],
-    );
-}
-
-#[test]
 fn contact_interfaces_are_refused_until_contact_lands() {
     let deck =
         std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("decks/demo/demo_0000.rad");
