@@ -34,14 +34,6 @@ fn qbat_shells_are_refused_at_their_property() {
 }
 
 #[test]
-fn global_plasticity_shells_are_refused_at_their_property() {
-    run_refused(
-        &qa_deck("INT357"),
-        &["INT357_0000.rad:", "N = 0", "not supported yet"],
-    );
-}
-
-#[test]
 fn contact_options_the_engine_does_not_compute_are_refused_at_the_interface() {
     // The demo tube's TYPE7 with Idel = 2 (segment deletion), not computed yet.
     let src =

@@ -18,7 +18,9 @@
 //!   γ_xz = Σb_x v_z + ⅓Σθ_y, γ_yz = Σb_y v_z − ⅓Σθ_x (rotations at the centroid).
 //! * **Through the thickness**: the quad's rule ([`ShellSection`]: N points,
 //!   trapezoidal membrane weights, exact bending weights for a piecewise-linear
-//!   stress); `Material::plane_stress_update_at` at each point; transverse shear
+//!   stress; N = 0 as the quad, global integration with Ilyushin's resultant
+//!   yield condition or N = 3 for LAW2, see `shell4::n0_rule`), the quad's
+//!   in-plane update of the points (`shell4::update_slots`); transverse shear
 //!   elastic (k G); Ithick = 1 updates the thickness.
 //! * **Corner forces** (internal, power-conjugate, at x^{n+1}; the solver does
 //!   M a = f_ext − f): f_x = A(b_x N_xx + b_y N_xy), f_y = A(b_y N_yy + b_x N_xy),
@@ -35,7 +37,7 @@
 //!
 //! No heap allocation: everything is fixed-size on the stack.
 
-use super::shell4::{shell4_resultants, ShellSection};
+use super::shell4::{shell4_resultants, update_slots, ShellSection};
 use crate::material::Material;
 use crate::model::ResolvedShell;
 
@@ -305,33 +307,24 @@ pub fn shell3_step(
     let temp = mat.temperature(st.eint / vol);
     let gs = mat.shear_modulus() * sec.ashear;
     let (dgyz, dgzx) = (gyz * dt, gxz * dt);
-    let mut dwp = 0.0;
-    let mut dezz = 0.0;
-    let mut nfailed = 0;
+    let (dwp, dezz, nfailed);
     if dt > 0.0 {
         let (n0, m0, q0) = shell4_resultants(sec, t, sig);
-        for k in 0..n_ip {
-            let z = sec.zeta[k] * t;
-            let d = [
-                (dxx + z * kxx) * dt,
-                (dyy + z * kyy) * dt,
-                (gxy + z * kxy) * dt,
-            ];
-            let old = sig[k];
-            let mut s3 = [old[0], old[1], old[2]];
-            let r =
-                mat.plane_stress_update_at(&mut s3, &mut eps_p[k], d, st.eps_dot, temp, sec.iplas);
-            let s = &mut sig[k];
-            if r.failed {
-                *s = [0.0; 5];
-                nfailed += 1;
-            } else {
-                *s = [s3[0], s3[1], s3[2], old[3] + gs * dgyz, old[4] + gs * dgzx];
-            }
-            let w = sec.w_mem[k];
-            dwp += w * r.d_wplas;
-            dezz += w * r.d_ezz;
+        for s in sig[..n_ip].iter_mut() {
+            s[3] += gs * dgyz;
+            s[4] += gs * dgzx;
         }
+        let law = mat.at(st.eps_dot, temp);
+        (dwp, dezz, nfailed) = update_slots(
+            sec,
+            &law,
+            t,
+            &mut sig[..n_ip],
+            &mut eps_p[..n_ip],
+            [dxx, dyy, gxy],
+            [kxx, kyy, kxy],
+            dt,
+        );
         // Work of the mean resultants on the generalized strain increments:
         // the power of the corner forces, A(N:d + M:κ + Q·γ).
         let (n1, m1, q1) = shell4_resultants(sec, t, sig);
@@ -346,6 +339,7 @@ pub fn shell3_step(
                 + (q0[0] + q1[0]) * gxz
                 + (q0[1] + q1[1]) * gyz);
     } else {
+        (dwp, dezz) = (0.0, 0.0);
         nfailed = (0..n_ip).filter(|&k| mat.has_failed(eps_p[k])).count();
     }
     out.d_eplas = dwp * vol;
@@ -676,6 +670,129 @@ mod tests {
         let o = el.step(&sec, &x, &[[0.0; 3]; 3], &[[0.0; 3]; 3], 0.0);
         let want = 2.4 / sec.material.sound_speed();
         assert!((o.dt - want).abs() < 1e-14 * want);
+    }
+
+    /// Johnson-Cook (BOX1BL's LAW2 without rate term), hardening `b`.
+    fn jc(b: f64) -> Material {
+        use crate::deck::{JohnsonCook, Loc, MaterialCard, MaterialLaw, NO_LIMIT};
+        Material::from_card(&MaterialCard {
+            id: 1,
+            unit_id: 0,
+            title: "t".into(),
+            rho: 7.8e-6,
+            rho_ref: 0.0,
+            e: 210.0,
+            nu: 0.3,
+            law: MaterialLaw::JohnsonCook(JohnsonCook {
+                iflag: 0,
+                a: 0.25,
+                b,
+                n: 0.52,
+                eps_p_max: NO_LIMIT,
+                sig_max0: NO_LIMIT,
+                c: 0.0,
+                eps_dot_0: 1.0,
+                icc: 1,
+                fsmooth: 0,
+                f_cut: NO_LIMIT,
+                chard: 0.0,
+                m: 1.0,
+                t_melt: NO_LIMIT,
+                rho_cp: NO_LIMIT,
+                t_r: 298.0,
+            }),
+            loc: Loc::default(),
+        })
+    }
+
+    /// N = 0 of an elastic part is global integration, and equals N = 5 to
+    /// round-off under arbitrary motion (forces, moments, energy, time step,
+    /// thickness with Ithick = 1); a LAW2 part gets N = 3 points.
+    #[test]
+    fn n0_elastic_equals_n5() {
+        let mut r = resolved(0, 2);
+        r.ithick = 1;
+        let g0 = shell3_section(&r, &mat()).unwrap();
+        assert!(g0.global && g0.n_ip == 2);
+        r.n = 5;
+        let g5 = shell3_section(&r, &mat()).unwrap();
+        let j = shell3_section(&resolved(0, 2), &jc(0.3)).unwrap();
+        assert!(!j.global && j.n_ip == 3);
+        let mut x = tri();
+        let (mut e0, mut e5) = (El::new(&g0, &x, 1.5), El::new(&g5, &x, 1.5));
+        let v = [[0.3, -0.2, 0.5], [-0.4, 0.1, -0.2], [0.2, 0.3, 0.1]];
+        let vr = [[0.05, -0.02, 0.1], [-0.03, 0.04, 0.0], [0.02, 0.01, -0.05]];
+        for _ in 0..10 {
+            for i in 0..3 {
+                for k in 0..3 {
+                    x[i][k] += 1e-2 * v[i][k];
+                }
+            }
+            let o0 = e0.step(&g0, &x, &v, &vr, 1e-2);
+            let o5 = e5.step(&g5, &x, &v, &vr, 1e-2);
+            let fs = maxabs(&o5.f).max(maxabs(&o5.m));
+            assert!(fs > 0.0 && o0.dt == o5.dt);
+            for i in 0..3 {
+                for k in 0..3 {
+                    assert!((o0.f[i][k] - o5.f[i][k]).abs() < 1e-11 * fs);
+                    assert!((o0.m[i][k] - o5.m[i][k]).abs() < 1e-11 * fs);
+                }
+            }
+        }
+        assert!((e0.st.eint - e5.st.eint).abs() < 1e-10 * e5.st.eint.abs());
+        assert!((e0.st.thick - e5.st.thick).abs() < 1e-14 && e0.st.thick != 1.5);
+    }
+
+    /// Global (Ilyushin) plasticity on the triangle: a uniaxial moment
+    /// (κ_xx = κ̇, κ_yy = −νκ̇) of a perfectly plastic section reaches the fully
+    /// plastic moment σ_y t²/4 to round-off, a membrane stretch returns onto
+    /// σ_y(ε̄_p), and the plastic work is accumulated in the element.
+    #[test]
+    fn n0_global_plasticity() {
+        let t = 1.5;
+        let mut q = resolved(0, 2);
+        q.ishell = 1;
+        let m = jc(0.0);
+        let sec = ShellSection::build(&q, &m, crate::element::shell4::N0Rule::Global).unwrap();
+        let nu = m.poisson();
+        let x = [[-1.0, -1.0, 0.0], [2.0, -1.0, 0.0], [-1.0, 2.0, 0.0]];
+        let kd = 0.3;
+        let vr: [[f64; 3]; 3] = std::array::from_fn(|i| [nu * kd * x[i][1], kd * x[i][0], 0.0]);
+        let mut el = El::new(&sec, &x, t);
+        for _ in 0..100 {
+            el.step(&sec, &x, &[[0.0; 3]; 3], &vr, 1e-3);
+        }
+        let (nr, mr, _) = shell4_resultants(&sec, t, &el.sig);
+        let m0 = 0.25 * t * t * 0.25;
+        assert!(
+            el.ep[0] > 0.0 && (mr[0] - m0).abs() < 1e-10 * m0,
+            "{mr:?} vs {m0}"
+        );
+        assert!(mr[1].abs() < 1e-10 * m0 && nr.iter().all(|v| v.abs() < 1e-12));
+        assert!(el.st.eplas > 0.0 && el.st.eint > el.st.eplas);
+        // Membrane stretch with hardening.
+        let m = jc(0.35);
+        let sec = ShellSection::build(&q, &m, crate::element::shell4::N0Rule::Global).unwrap();
+        let mut x = [[0.0, 0.0, 0.0], [3.0, 0.0, 0.0], [1.0, 2.0, 0.0]];
+        let mut el = El::new(&sec, &x, t);
+        let mut eplas = 0.0;
+        for _ in 0..30 {
+            let v: [[f64; 3]; 3] = std::array::from_fn(|i| [2.0 * x[i][0], 0.6 * x[i][1], 0.0]);
+            for i in 0..3 {
+                x[i][0] += 1e-3 * v[i][0];
+                x[i][1] += 1e-3 * v[i][1];
+            }
+            eplas += el.step(&sec, &x, &v, &[[0.0; 3]; 3], 1e-3).d_eplas;
+        }
+        let s = el.sig[0];
+        let svm = (s[0] * s[0] + s[1] * s[1] - s[0] * s[1] + 3.0 * s[2] * s[2]).sqrt();
+        let y = m.yield_stress(el.ep[0], 0.0, 298.0);
+        assert!(
+            el.ep[0] > 0.01 && (svm - y).abs() < 1e-12 * y,
+            "{svm} vs {y}"
+        );
+        assert_eq!(el.sig[0], el.sig[1]);
+        assert!((eplas - el.st.eplas).abs() < 1e-12 * eplas && eplas > 0.0);
     }
 
     #[test]

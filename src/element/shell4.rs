@@ -37,8 +37,20 @@
 //!   piecewise-linear stress (theory manual "Forces and Moments Calculation",
 //!   table of positions/weights: N = 3 → w_N = ¼ ½ ¼, w_M = ∓1/12 0; N = 5 →
 //!   w_N = ⅛ ¼ ¼ ¼ ⅛, w_M = ∓0.0521 ∓0.0625 0). N = 1: membrane only, no
-//!   transverse shear (the starter sets Ashear = 0 for N = 1). N = 0 (global
-//!   plasticity) is refused. Resultants N = tΣw_N σ_k, M = t²Σw_M σ_k, Q = tΣw_N τ_k.
+//!   transverse shear (the starter sets Ashear = 0 for N = 1).
+//!   Resultants N = tΣw_N σ_k, M = t²Σw_M σ_k, Q = tΣw_N τ_k.
+//! * **N = 0** (see [`n0_rule`]): for LAW2 the section is computed with N = 3
+//!   points, as the reference engine does (its starter switches global
+//!   integration to NPT = 3 for LAW2 with WARNING 1912, printed in the
+//!   BOULE1V4 and INT357 reference listings); the run listing notes it.
+//!   Otherwise (LAW1) the section is computed with global integration: the
+//!   element keeps the resultants, stored as the two surface stresses
+//!   s_m ∓ s_b (s_m = N/t, s_b = 6M/t²) at ζ = ∓½ with the N = 2 weights
+//!   (w_N = ½ ½, w_M = ∓1/12, exact for the linear elastic distribution), and
+//!   updates them with the elastic plate law and, for a material with a yield
+//!   stress, Ilyushin's resultant yield condition with a radial return
+//!   (`material::ilyushin`; Iplas is not used). Both slots carry the section's
+//!   equivalent plastic strain.
 //! * **Corner forces** (internal, power-conjugate: Σ f·v + m·ω = A(N:d + M:κ + Q·γ)):
 //!   f_x = A(b_x N_xx + b_y N_xy), f_y = A(b_y N_yy + b_x N_xy),
 //!   f_z = A(b_x Q_x + b_y Q_y), m_x = −A(b_y M_yy + b_x M_xy) − ¼A Q_y,
@@ -78,16 +90,18 @@
 //!   (Radioss Ismstr = 2 is full geometric nonlinearity unless a /DT…/CST
 //!   option switches an element to small strain; Ismstr = 1 freezes the
 //!   reference geometry of the strain-displacement matrix, which is not done here).
-//! * **Thickness**: Ithick = 1 updates t with Σ_k w_N,k Δε_zz,k; Ithick = 0 keeps it.
+//! * **Thickness**: Ithick = 1 updates t with Σ_k w_N,k Δε_zz,k (global
+//!   integration: the mid-surface Δε_zz); Ithick = 0 keeps it.
 //! * **Strain rate** for Johnson-Cook: the element's energy-equivalent rate
 //!   √(4/3(d_xx²+d_yy²+d_xx d_yy+¼γ_xy²) + t²/9(κ_xx²+κ_yy²+κ_xxκ_yy+¼κ_xy²)),
 //!   filtered with F_cut (Radioss's shell strain rate for LAW2).
 //! * **Failure**: a point fails when ε_p ≥ EPS_p_max (its stress is zero from
-//!   then on); the element is deleted when all its points have failed.
+//!   then on); the element is deleted when all its points have failed (with
+//!   global integration: when the section's ε̄_p reaches EPS_p_max).
 //!
 //! No heap allocation: everything is fixed-size on the stack.
 
-use crate::material::Material;
+use crate::material::{Material, PointLaw};
 use crate::model::ResolvedShell;
 use serde::{Deserialize, Serialize};
 
@@ -108,8 +122,12 @@ pub struct ShellSection {
     pub hr: f64,
     /// Membrane damping (only for laws Radioss applies it to; unused for LAW1/LAW2).
     pub dm: f64,
-    /// Integration points through the thickness (1..=10).
+    /// Stress slots per element: the integration points through the
+    /// thickness (1..=10), or 2 for global integration.
     pub n_ip: usize,
+    /// Global integration (N = 0 computed on the resultants, see [`n0_rule`]):
+    /// the two slots are the surface stresses s_m ∓ s_b of the section.
+    pub global: bool,
     /// Transverse shear factor actually used (Ashear; 0 when N = 1).
     pub ashear: f64,
     pub ithick: i64,
@@ -175,8 +193,37 @@ fn thickness_rule(n: usize) -> ([f64; MAX_IP], [f64; MAX_IP], [f64; MAX_IP]) {
     (z, wm, wb)
 }
 
+/// How a section with N = 0 is computed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum N0Rule {
+    /// Global integration on the resultants (elastic plate law, Ilyushin yield).
+    Global,
+    /// Numerical integration with this many points through the thickness.
+    Points(usize),
+}
+
+/// N = 0 as the reference engine computes it: its starter does not support
+/// global integration for LAW2 and switches to NPT = 3 (WARNING 1912 in the BOULE1V4
+/// and INT357 reference listings: "GLOBAL INTEGRATION FORMULATION (NPT = 0) IS
+/// NOT SUPPORTED FOR THE FOLLOWING LAWS, SWITCHING AUTOMATICALLY TO NUMERICAL
+/// INTEGRATION NPT= 3", LAW TYPE 2). An elastic section (LAW1) is computed
+/// with global integration, which equals any N ≥ 2 to round-off.
+pub fn n0_rule(m: &Material) -> N0Rule {
+    if m.is_plastic() {
+        N0Rule::Points(3)
+    } else {
+        N0Rule::Global
+    }
+}
+
 impl ShellSection {
+    /// The section of a property and material; N = 0 follows [`n0_rule`].
     pub fn new(r: &ResolvedShell, m: &Material) -> Result<ShellSection, String> {
+        Self::build(r, m, n0_rule(m))
+    }
+
+    /// The section with N = 0 computed by `n0` (any other N as given).
+    pub fn build(r: &ResolvedShell, m: &Material, n0: N0Rule) -> Result<ShellSection, String> {
         match r.ishell {
             1..=4 => {}
             12 => return Err("Ishell = 12 (QBAT) is not supported yet: the engine computes Ishell = 1, 2, 3, 4 (Belytschko-Tsay)".into()),
@@ -188,12 +235,9 @@ impl ShellSection {
             -1 => 2,
             v => return Err(format!("Ismstr = {v} is not supported: the engine computes Ismstr = 1, 2, 4 (corotational rate form)")),
         };
-        if r.n == 0 {
-            return Err("N = 0 (global plasticity integration) is not supported yet: give N = 1..10 integration points".into());
-        }
-        if !(1..=MAX_IP as i64).contains(&r.n) {
+        if !(0..=MAX_IP as i64).contains(&r.n) {
             return Err(format!(
-                "N = {}: expected 1..10 integration points through the thickness",
+                "N = {}: expected 0 (global integration) or 1..10 integration points through the thickness",
                 r.n
             ));
         }
@@ -204,7 +248,12 @@ impl ShellSection {
             return Err(format!("Iplas = {}: expected 0, 1 or 2", r.iplas));
         }
         m.check_supported()?;
-        let n_ip = r.n as usize;
+        let (n_ip, global) = match (r.n, n0) {
+            (0, N0Rule::Global) => (2, true),
+            (0, N0Rule::Points(n)) => (n.clamp(1, MAX_IP), false),
+            (n, _) => (n as usize, false),
+        };
+        // Global integration stores the surface stresses: the N = 2 rule.
         let (zeta, w_mem, w_bend) = thickness_rule(n_ip);
         Ok(ShellSection {
             ishell: r.ishell,
@@ -214,6 +263,7 @@ impl ShellSection {
             hr: r.hr,
             dm: r.dm,
             n_ip,
+            global,
             ashear: if n_ip == 1 { 0.0 } else { r.ashear },
             ithick: r.ithick,
             iplas: r.iplas,
@@ -480,6 +530,79 @@ pub fn shell4_resultants(
     (nr, mr, q)
 }
 
+/// In-plane update of one element's stress slots over a step, shared by the
+/// 4- and 3-node shells. `sig` holds the slots already in this step's frame
+/// (transverse shear updated); `d_m`, `d_k`: membrane strain and curvature
+/// rates (engineering shears) of the step `dt`, thickness `t`.
+/// * Points: each point k gets Δε = (d_m + ζ_k t d_k)Δt through
+///   [`PointLaw::plane_stress`] with the section's Iplas.
+/// * Global integration: `PointLaw::section_global` on s_m = ½(σ_0 + σ_1),
+///   s_b = ½(σ_1 − σ_0) with Δε = d_m Δt and the surface bending strain
+///   ½t d_k Δt; the slots become s_m ∓ s_b and both keep the section's ε̄_p.
+///
+/// A failed slot gets zero stress (transverse shear included). Returns the
+/// plastic work per unit volume Σ w_N Δw_p, the thickness strain increment
+/// Σ w_N Δε_zz and the number of failed slots.
+#[allow(clippy::too_many_arguments)]
+pub(super) fn update_slots(
+    sec: &ShellSection,
+    law: &PointLaw,
+    t: f64,
+    sig: &mut [[f64; 5]],
+    eps_p: &mut [f64],
+    d_m: [f64; 3],
+    d_k: [f64; 3],
+    dt: f64,
+) -> (f64, f64, usize) {
+    if sec.global {
+        let (lo, hi) = (sig[0], sig[1]);
+        let mut s_m = [0.0; 3];
+        let mut s_b = [0.0; 3];
+        for c in 0..3 {
+            s_m[c] = 0.5 * (lo[c] + hi[c]);
+            s_b[c] = 0.5 * (hi[c] - lo[c]);
+        }
+        let de_m = [d_m[0] * dt, d_m[1] * dt, d_m[2] * dt];
+        let hb = 0.5 * t * dt;
+        let de_b = [d_k[0] * hb, d_k[1] * hb, d_k[2] * hb];
+        let mut ep = eps_p[0];
+        let r = law.section_global(&mut s_m, &mut s_b, &mut ep, de_m, de_b);
+        eps_p[0] = ep;
+        eps_p[1] = ep;
+        if r.failed {
+            sig[0] = [0.0; 5];
+            sig[1] = [0.0; 5];
+            return (r.d_wplas, r.d_ezz, 2);
+        }
+        for c in 0..3 {
+            sig[0][c] = s_m[c] - s_b[c];
+            sig[1][c] = s_m[c] + s_b[c];
+        }
+        return (r.d_wplas, r.d_ezz, 0);
+    }
+    let (mut dwp, mut dezz, mut nfailed) = (0.0, 0.0, 0);
+    for (k, (s, ep)) in sig.iter_mut().zip(eps_p.iter_mut()).enumerate() {
+        let z = sec.zeta[k] * t;
+        let d = [
+            (d_m[0] + z * d_k[0]) * dt,
+            (d_m[1] + z * d_k[1]) * dt,
+            (d_m[2] + z * d_k[2]) * dt,
+        ];
+        let mut s3 = [s[0], s[1], s[2]];
+        let r = law.plane_stress(&mut s3, ep, d, sec.iplas);
+        if r.failed {
+            *s = [0.0; 5];
+            nfailed += 1;
+        } else {
+            s[..3].copy_from_slice(&s3);
+        }
+        let wm = sec.w_mem[k];
+        dwp += wm * r.d_wplas;
+        dezz += wm * r.d_ezz;
+    }
+    (dwp, dezz, nfailed)
+}
+
 /// Rotation (cos, sin) applied to plane tensors and vectors.
 #[derive(Clone, Copy, Debug)]
 struct Rot {
@@ -670,18 +793,10 @@ pub fn shell4_step(
     let mut no = [0.0; 3];
     let mut mo = [0.0; 3];
     let mut qo = [0.0; 2];
-    let mut dwp = 0.0;
-    let mut dezz = 0.0;
-    let mut nfailed = 0;
-    for (k, (s, ep)) in sig.iter_mut().zip(eps_p.iter_mut()).enumerate() {
-        let (wm, wb) = (sec.w_mem[k], sec.w_bend[k]);
-        if dt > 0.0 {
-            let z = sec.zeta[k] * t;
-            let d = [
-                (d_m[0] + z * d_k[0]) * dt,
-                (d_m[1] + z * d_k[1]) * dt,
-                (d_m[2] + z * d_k[2]) * dt,
-            ];
+    let (dwp, dezz, nfailed) = if dt > 0.0 {
+        // Old stresses turned to this step's frame; transverse shear elastic.
+        for (k, s) in sig.iter_mut().enumerate() {
+            let (wm, wb) = (sec.w_mem[k], sec.w_bend[k]);
             let o = rot_old.stress([s[0], s[1], s[2]]);
             let (ozx, oyz) = rot_old.vector(s[4], s[3]);
             for c in 0..3 {
@@ -690,19 +805,15 @@ pub fn shell4_step(
             }
             qo[0] += wm * ozx;
             qo[1] += wm * oyz;
-            let mut s3 = o;
-            let r = law.plane_stress(&mut s3, ep, d, sec.iplas);
-            if r.failed {
-                *s = [0.0; 5];
-                nfailed += 1;
-            } else {
-                *s = [s3[0], s3[1], s3[2], oyz + gs * dgyz, ozx + gs * dgzx];
-            }
-            dwp += wm * r.d_wplas;
-            dezz += wm * r.d_ezz;
-        } else if law.has_failed(*ep) {
-            nfailed += 1;
+            *s = [o[0], o[1], o[2], oyz + gs * dgyz, ozx + gs * dgzx];
         }
+        update_slots(sec, &law, t, sig, eps_p, d_m, d_k, dt)
+    } else {
+        let failed = eps_p.iter().filter(|&&e| law.has_failed(e)).count();
+        (0.0, 0.0, failed)
+    };
+    for (k, s) in sig.iter().enumerate() {
+        let (wm, wb) = (sec.w_mem[k], sec.w_bend[k]);
         for c in 0..3 {
             nr[c] += wm * s[c];
             mr[c] += wb * s[c];

@@ -225,18 +225,32 @@ pub(super) fn radial_return_3d(s: &mut [f64; 6], ep: f64, f: &Flow, g: f64) -> f
     if svm <= y0 {
         return 0.0;
     }
-    // r(x) = svm − 3Gx − σ_y(ep + x), strictly decreasing; r(0) > 0, r(svm/3G) ≤ 0.
-    let (mut lo, mut hi) = (0.0, svm / (3.0 * g));
-    let mut x = (svm - y0) / (3.0 * g + f.slope(ep));
+    let x = scalar_return(svm, 3.0 * g, ep, f);
+    let k = 1.0 - 3.0 * g * x / svm;
+    s[0] = p + k * d[0];
+    s[1] = p + k * d[1];
+    s[2] = p + k * d[2];
+    s[3] *= k;
+    s[4] *= k;
+    s[5] *= k;
+    x
+}
+
+/// Δε_p of a radial return: the root of r(x) = σ_eq − k x − σ_y(ε_p + x)
+/// (strictly decreasing; r(0) > 0 when called, r(σ_eq/k) ≤ 0), by Newton
+/// safeguarded with bisection, to relative 1e-14.
+pub(super) fn scalar_return(seq: f64, k: f64, ep: f64, f: &Flow) -> f64 {
+    let (mut lo, mut hi) = (0.0, seq / k);
+    let mut x = (seq - f.sig_y(ep)) / (k + f.slope(ep));
     x = x.clamp(lo, hi);
     for _ in 0..100 {
-        let r = svm - 3.0 * g * x - f.sig_y(ep + x);
+        let r = seq - k * x - f.sig_y(ep + x);
         if r > 0.0 {
             lo = x;
         } else {
             hi = x;
         }
-        let dr = -3.0 * g - f.slope(ep + x);
+        let dr = -k - f.slope(ep + x);
         let mut xn = x - r / dr;
         if !(xn > lo && xn < hi) {
             xn = 0.5 * (lo + hi);
@@ -247,12 +261,5 @@ pub(super) fn radial_return_3d(s: &mut [f64; 6], ep: f64, f: &Flow, g: f64) -> f
             break;
         }
     }
-    let k = 1.0 - 3.0 * g * x / svm;
-    s[0] = p + k * d[0];
-    s[1] = p + k * d[1];
-    s[2] = p + k * d[2];
-    s[3] *= k;
-    s[4] *= k;
-    s[5] *= k;
     x
 }

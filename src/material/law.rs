@@ -63,14 +63,15 @@ pub struct PlaneStressResult {
 /// A material prepared for one element and step: the strain-rate and thermal
 /// factors of the flow stress are evaluated once (they depend on the element's
 /// strain rate and temperature), then every integration point is updated with
-/// [`PointLaw::plane_stress`] or [`PointLaw::solid`].
+/// [`PointLaw::plane_stress`] or [`PointLaw::solid`] (or, for a section
+/// computed with global integration, `PointLaw::section_global`).
 #[derive(Clone, Copy, Debug)]
 pub struct PointLaw {
-    e: f64,
-    nu: f64,
-    g: f64,
-    eps_p_max: f64,
-    flow: Option<Flow>,
+    pub(super) e: f64,
+    pub(super) nu: f64,
+    pub(super) g: f64,
+    pub(super) eps_p_max: f64,
+    pub(super) flow: Option<Flow>,
 }
 
 impl Material {
@@ -120,6 +121,12 @@ impl Material {
             )),
             _ => Ok(()),
         }
+    }
+
+    /// The law has a yield stress (LAW2); LAW1 is elastic.
+    #[inline]
+    pub fn is_plastic(&self) -> bool {
+        matches!(self, Material::JohnsonCook { .. })
     }
 
     /// The flow stress depends on the strain rate (LAW2 with c ≠ 0).

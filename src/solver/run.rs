@@ -118,6 +118,23 @@ fn prepare(opts: &RunOptions, nranks: usize) -> Result<Prepared, String> {
             }
         }
     }
+    // N = 0 with a law the reference engine does not integrate globally.
+    let mut seen = std::collections::BTreeSet::new();
+    for part in &m.parts {
+        let (Some(ip), Some(im)) = (part.prop, part.mat) else {
+            continue;
+        };
+        let p = &m.properties[ip as usize];
+        if p.shell.as_ref().is_none_or(|s| s.n != 0) {
+            continue;
+        }
+        let mat = crate::material::Material::from_card(&m.materials[im as usize]);
+        if let crate::element::shell4::N0Rule::Points(n) = crate::element::shell4::n0_rule(&mat) {
+            if seen.insert((ip, im)) {
+                notes.push(format!("{}: /PROP/{}: N = 0 (global integration) with /MAT/{} (LAW2) is computed with N = {n} integration points, as the reference engine does (its starter WARNING 1912)", p.card.loc, p.card.id, m.materials[im as usize].id));
+            }
+        }
+    }
     Ok((g, sds, rbs, notes))
 }
 
