@@ -103,7 +103,8 @@ pub fn tangential(v: V3, n: V3) -> V3 {
 /// Tangential force of one contact (force on the secondary node).
 ///
 /// - Iform 1, viscous (EQ. 8.8.3.1/4, card eq. (20)–(21)):
-///   F_t = min(μ·F_n, F_adh), F_adh = C·|V_t|, C = VISF·√(2·K·M), opposed to V_t.
+///   F_t = min(μ·F_n, F_adh), F_adh = C·|V_t|, C = VISF·√(2·K·M), opposed to V_t
+///   (C capped at M/Δt, the largest damper the explicit step keeps stable).
 /// - Iform 2, incremental (EQ. 8.8.3.2/5, card eq. (22); EQ. 8.5.4.1/4 for
 ///   TYPE3/5 with `k` = K/10): F_adh = F_t_old + ΔF_t, ΔF_t = −K·V_t·dt, with
 ///   the old force turned into the current tangent plane; capped at μ·F_n
@@ -129,7 +130,13 @@ pub fn tangential_force(
             *state = [0.0; 3];
             return [0.0; 3];
         }
-        let c = law.visf * (2.0 * k * mass).sqrt();
+        // The adhesion damper may at most stop the sliding in one step
+        // (C ≤ M/Δt): beyond that the explicit update overshoots and the
+        // friction chatters, feeding energy in instead of taking it out.
+        let mut c = law.visf * (2.0 * k * mass).sqrt();
+        if dt > 0.0 {
+            c = c.min(mass / dt);
+        }
         let f = limit.min(c * speed);
         let out = scale(vt, -f / speed);
         *state = out;

@@ -63,15 +63,19 @@ pub struct InterfaceSums {
     pub pairs: u64,
 }
 
-/// What set the contact time step.
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// This rank's contact limits on the time step (unscaled).
+///
+/// - Nodal (EQ. 8.8.5.2, Δt = √(2M/K) with K = K_inter + K_el): the largest
+///   q = K_inter/(2M) over the nodes, combined by the caller with the element
+///   step as Δt = 1/√(1/Δt_el² + q), the stable step of a node held by its
+///   elements and its contact springs together.
+/// - Kinematic (EQ. 8.8.5.1): the smallest 0.5·(Gap − p)/(dp/dt).
+#[derive(Clone, Copy, Debug, PartialEq, Default, serde::Serialize, serde::Deserialize)]
 pub struct ContactStep {
-    /// Unscaled time step.
-    pub dt: f64,
-    /// "NODE" (EQ. 8.8.5.2) or "INTER" (EQ. 8.8.5.1).
-    pub what: &'static str,
-    /// Node id or interface id.
-    pub id: u64,
+    pub nodal_q: f64,
+    pub node_id: u64,
+    pub kin_dt: f64,
+    pub inter_id: u64,
 }
 
 /// Counters for the benchmark.
@@ -288,8 +292,17 @@ impl ContactSystem {
             }
             nodal_k.last_mut().unwrap().1 += c.k;
         }
-        // Nodal time step √(2M/K) (EQ. 8.8.5.2) on owned nodes.
-        let mut best = step;
+        // Nodal step (EQ. 8.8.5.2) on owned nodes: the largest K/(2M).
+        let mut best = ContactStep {
+            nodal_q: 0.0,
+            node_id: 0,
+            kin_dt: f64::INFINITY,
+            inter_id: 0,
+        };
+        if let Some((d, id)) = step {
+            best.kin_dt = d;
+            best.inter_id = id;
+        }
         for (c, k) in nodal_k {
             if !self.owned[c as usize] || k <= 0.0 {
                 continue;
@@ -298,17 +311,14 @@ impl ContactSystem {
             if mass[l] <= 0.0 {
                 continue;
             }
-            let d = (2.0 * mass[l] / k).sqrt();
-            let cand = ContactStep {
-                dt: d,
-                what: "NODE",
-                id: self.node_ids[c as usize],
-            };
-            if best.is_none_or(|b| (cand.dt, cand.id) < (b.dt, b.id)) {
-                best = Some(cand);
+            let q = k / (2.0 * mass[l]);
+            let id = self.node_ids[c as usize];
+            if q > best.nodal_q || (q == best.nodal_q && id < best.node_id) {
+                best.nodal_q = q;
+                best.node_id = id;
             }
         }
-        best
+        Some(best)
     }
 
     /// New ghost plan from the current positions (collective).
@@ -492,9 +502,9 @@ impl ContactSystem {
     }
 
     /// Every owned pair's force, as contributions, and the smallest kinematic step.
-    fn pairs(&mut self, mass: &[f64], t: f64, dt: f64) -> (Vec<Contribution>, Option<ContactStep>) {
+    fn pairs(&mut self, mass: &[f64], t: f64, dt: f64) -> (Vec<Contribution>, Option<(f64, u64)>) {
         let mut out: Vec<Contribution> = Vec::new();
-        let mut best: Option<ContactStep> = None;
+        let mut best: Option<(f64, u64)> = None;
         for s in self.sums.iter_mut() {
             *s = InterfaceSums::default();
         }
@@ -519,7 +529,7 @@ impl ContactSystem {
                     }
                 };
                 // Per node: its pairs' forces, computed in parallel, gathered in order.
-                let results: Vec<(Vec<Contribution>, Option<ContactStep>, InterfaceSums)> = match it
+                let results: Vec<(Vec<Contribution>, Option<(f64, u64)>, InterfaceSums)> = match it
                     .law
                 {
                     Law::Type7 => {
@@ -543,7 +553,7 @@ impl ContactSystem {
                                 let s = p.sec[k];
                                 let ms = mass[local[s as usize] as usize];
                                 let mut contribs = Vec::new();
-                                let mut step: Option<ContactStep> = None;
+                                let mut step: Option<(f64, u64)> = None;
                                 let mut sums = InterfaceSums::default();
                                 if ns.off {
                                     return (contribs, step, sums);
@@ -618,12 +628,8 @@ impl ContactSystem {
                                         &f,
                                         ibc,
                                     );
-                                    if f.dt_kin < step.map_or(f64::INFINITY, |b| b.dt) {
-                                        step = Some(ContactStep {
-                                            dt: f.dt_kin,
-                                            what: "INTER",
-                                            id: it.id,
-                                        });
+                                    if f.dt_kin < step.map_or(f64::INFINITY, |b| b.0) {
+                                        step = Some((f.dt_kin, it.id));
                                     }
                                 }
                                 (contribs, step, sums)
@@ -698,7 +704,7 @@ impl ContactSystem {
                 for (c, st, su) in results {
                     out.extend(c);
                     if let Some(st) = st {
-                        if best.is_none_or(|b| (st.dt, st.id) < (b.dt, b.id)) {
+                        if best.is_none_or(|b| st < b) {
                             best = Some(st);
                         }
                     }

@@ -887,8 +887,16 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
                 for k in 0..3 {
                     w_ext += fext[l][k] * v[l][k] * dt_v;
                     w_ext += fext[l][3 + k] * vr[l][k] * dt_v;
-                    // Energy the contact forces take (elastic, damping, friction).
-                    e_contact -= fcont[l][k] * v[l][k] * dt_v;
+                    // Energy the contact forces take (elastic, damping, friction),
+                    // with the mean of the velocities before and after the step:
+                    // f·v_after alone overstates the work by (f·Δt)²/2M, which
+                    // adds up when friction forces are large and their work small.
+                    let dv = if fixed[l][k] || mass[l] <= 0.0 {
+                        0.0
+                    } else {
+                        (fext[l][k] - fint[l][k] + fcont[l][k]) / mass[l] * dt_v
+                    };
+                    e_contact -= fcont[l][k] * (v[l][k] - 0.5 * dv) * dt_v;
                 }
             }
         }
@@ -1214,14 +1222,6 @@ fn global_step(
             }
         }
     }
-    // Contact steps (EQ. 8.8.5.1, 8.8.5.2) compete in the same minimum; ties
-    // go to elements, then nodal, then interface steps.
-    if let Some(c) = contact {
-        let ki = if c.what == "NODE" { 100 } else { 101 };
-        if c.dt < best.0 || (c.dt == best.0 && (ki, c.id) < (best.1, best.2)) {
-            best = (c.dt, ki, c.id);
-        }
-    }
     let prob = problem.map(|(k, ge, m)| {
         format!(
             "{} {} {m} at cycle {cycle}, time {t:e}",
@@ -1230,14 +1230,18 @@ fn global_step(
         )
     });
     let prob = node_problem.or(prob);
-    let all: Vec<(f64, usize, u64, Option<String>)> =
-        world.allgather(&(best.0, best.1, best.2, prob));
-    if let Some(m) = all.iter().find_map(|(_, _, _, p)| p.clone()) {
+    let cs = contact.unwrap_or(ContactStep {
+        kin_dt: f64::INFINITY,
+        ..Default::default()
+    });
+    let all: Vec<(f64, usize, u64, Option<String>, ContactStep)> =
+        world.allgather(&(best.0, best.1, best.2, prob, cs));
+    if let Some(m) = all.iter().find_map(|(_, _, _, p, _)| p.clone()) {
         return Err(RunError::Physics(m));
     }
     let (d, ki, id) = all.iter().fold(
         (f64::INFINITY, usize::MAX, u64::MAX),
-        |acc, &(d, k, id, _)| {
+        |acc, &(d, k, id, _, _)| {
             if d < acc.0 || (d == acc.0 && (k, id) < (acc.1, acc.2)) {
                 (d, k, id)
             } else {
@@ -1250,15 +1254,48 @@ fn global_step(
             "no element left to set the time step at cycle {cycle}, time {t:e}"
         )));
     }
-    Ok(Step {
-        dt: scale * d,
-        what: match ki {
-            100 => "NODE",
-            101 => "INTER",
-            _ => kind_name(crate::deck::Elements::KINDS[ki]),
-        },
+    // Contact (EQ. 8.8.5.1–2): nodes held by their elements and contact springs
+    // together, Δt = 1/√(1/Δt_el² + max K/(2M)); then the kinematic step.
+    // Ties: the smallest node / interface id.
+    let (mut q, mut qid) = (0.0f64, 0u64);
+    let (mut kin, mut kid) = (f64::INFINITY, 0u64);
+    for (_, _, _, _, c) in &all {
+        if c.nodal_q > q || (c.nodal_q == q && q > 0.0 && c.node_id < qid) {
+            q = c.nodal_q;
+            qid = c.node_id;
+        }
+        if c.kin_dt < kin || (c.kin_dt == kin && c.inter_id < kid) {
+            kin = c.kin_dt;
+            kid = c.inter_id;
+        }
+    }
+    let mut step = Step {
+        dt: d,
+        what: kind_name(crate::deck::Elements::KINDS[ki]),
         id,
-    })
+    };
+    if q > 0.0 {
+        let combined = 1.0 / (1.0 / (d * d) + q).sqrt();
+        // Named after the node once contact costs more than 1% of the step.
+        if combined < 0.99 * d {
+            step = Step {
+                dt: combined,
+                what: "NODE",
+                id: qid,
+            };
+        } else {
+            step.dt = combined;
+        }
+    }
+    if kin < step.dt {
+        step = Step {
+            dt: kin,
+            what: "INTER",
+            id: kid,
+        };
+    }
+    step.dt *= scale;
+    Ok(step)
 }
 
 /// Concentrated loads and gravity at time t, per local node (force, moment).
