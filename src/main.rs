@@ -150,7 +150,9 @@ fn main() -> ExitCode {
                     }
                 }
                 let ranks_of = |nodes: &mut dyn Iterator<Item = u32>| {
-                    let mut s: Vec<u32> = nodes.flat_map(|nd| node_ranks[nd as usize].clone()).collect();
+                    let mut s: Vec<u32> = nodes
+                        .flat_map(|nd| node_ranks[nd as usize].clone())
+                        .collect();
                     s.sort_unstable();
                     s.dedup();
                     s

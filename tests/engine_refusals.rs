@@ -36,8 +36,7 @@ fn qbat_shells_are_refused_at_their_property() {
 #[test]
 fn contact_options_the_engine_does_not_compute_are_refused_at_the_interface() {
     // The demo tube's TYPE7 with Idel = 2 (segment deletion), not computed yet.
-    let src =
-        std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("decks/demo/demo_0000.rad");
+    let src = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("decks/demo/demo_0000.rad");
     let text = std::fs::read_to_string(&src).unwrap();
     let old = "         0         5         4         0         1                   0         0         0         0";
     assert!(text.contains(old));
@@ -46,6 +45,18 @@ fn contact_options_the_engine_does_not_compute_are_refused_at_the_interface() {
     std::fs::create_dir_all(&dir).unwrap();
     let deck = dir.join("demo_0000.rad");
     std::fs::write(&deck, text.replace(old, new)).unwrap();
-    std::fs::copy(src.with_file_name("demo_0001.rad"), dir.join("demo_0001.rad")).unwrap();
-    run_refused(&deck, &["demo_0000.rad:889", "/INTER/TYPE7/1", "Idel", "not supported by the engine yet"]);
+    std::fs::copy(
+        src.with_file_name("demo_0001.rad"),
+        dir.join("demo_0001.rad"),
+    )
+    .unwrap();
+    run_refused(
+        &deck,
+        &[
+            "demo_0000.rad:889",
+            "/INTER/TYPE7/1",
+            "Idel",
+            "not supported by the engine yet",
+        ],
+    );
 }

@@ -88,7 +88,8 @@
 //!   listing's first step 0.9753E-04 divided by the /DT scale 0.1.
 //! * **Strain measure**: Ismstr 1, 2 and 4 all use this corotational rate form
 //!   (Radioss Ismstr = 2 is full geometric nonlinearity unless a /DT…/CST
-//!   option switches an element to small strain; Ismstr = 1 freezes the
+//!   option switches an element to small strain; Ismstr = 1 — see
+//!   `small_strain` — keeps the initial derivatives, area and step; it freezes the
 //!   reference geometry of the strain-displacement matrix, which is not done here).
 //! * **Thickness**: Ithick = 1 updates t with Σ_k w_N,k Δε_zz,k (global
 //!   integration: the mid-surface Δε_zz); Ithick = 0 keeps it.
@@ -323,6 +324,9 @@ pub struct Shell4State {
     pub tri: bool,
     /// All points have failed: the element is deleted (zero forces from then on).
     pub deleted: bool,
+    /// Ismstr = 1 (small strain): the initial geometry, whose derivatives,
+    /// area and time step the element keeps (its frame still turns).
+    pub geo0: Option<Geom>,
 }
 
 /// What one element step returns.
@@ -391,8 +395,8 @@ fn wsum(w: &[f64; 4], u: &[[f64; 3]; 4]) -> [f64; 3] {
 /// the corners are x1 − c = ¼(h − 2d13), x2 − c = ¼(−h − 2d24),
 /// x3 − c = ¼(h + 2d13), x4 − c = ¼(−h + 2d24); the diagonals are in the plane
 /// (e3 ⟂ d13, d24), so the warp is z_I = ¼(e3·h)Γ_I.
-#[derive(Clone, Copy, Debug)]
-struct Geom {
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct Geom {
     /// Rows e1, e2, e3.
     e: [[f64; 3]; 3],
     /// Local in-plane coordinates relative to the centroid.
@@ -498,14 +502,25 @@ fn char_length(sec: &ShellSection, g: &Geom, tri: bool) -> f64 {
 }
 
 /// Element state at t = 0.
-pub fn shell4_init(_sec: &ShellSection, x: &[[f64; 3]; 4], thick: f64) -> Shell4State {
+pub fn shell4_init(sec: &ShellSection, x: &[[f64; 3]; 4], thick: f64) -> Shell4State {
     let n = cross(sub(x[2], x[0]), sub(x[3], x[1]));
     Shell4State {
         thick,
         area0: 0.5 * dot(n, n).sqrt(),
         tri: x[2] == x[3],
+        geo0: if sec.ismstr == 1 { Geom::new(x) } else { None },
         ..Default::default()
     }
+}
+
+/// Ismstr = 1, small strain from t = 0: strain rates and forces use the
+/// initial in-plane derivatives, area and hourglass vectors in the current
+/// corotational frame, and the time step stays the initial one.
+#[inline]
+fn small_strain(g: &mut Geom, g0: &Geom) {
+    let e = g.e;
+    *g = *g0;
+    g.e = e;
 }
 
 /// Membrane N, bending M and transverse shear Q = (Q_x, Q_y) resultants (local
@@ -691,12 +706,12 @@ pub fn shell4_step(
     let kc = &sec.k;
 
     // ---- geometry at x^{n+1} (forces) and x^{n+1/2} (rates) ------------------
-    let Some(ge) = Geom::new(x) else {
+    let Some(mut ge) = Geom::new(x) else {
         out.bad_area = true;
         return out;
     };
-    out.dt = char_length(sec, &ge, st.tri) / kc.c;
-    let gm = if dt > 0.0 {
+    out.dt = char_length(sec, st.geo0.as_ref().unwrap_or(&ge), st.tri) / kc.c;
+    let mut gm = if dt > 0.0 {
         let mut xm = *x;
         for i in 0..4 {
             for k in 0..3 {
@@ -716,6 +731,10 @@ pub fn shell4_step(
     if dot(gm.e[2], ge.e[2]) <= 0.0 {
         out.bad_area = true;
         return out;
+    }
+    if let Some(g0) = &st.geo0 {
+        small_strain(&mut gm, g0);
+        small_strain(&mut ge, g0);
     }
     let orth = sec.ishell != 2;
     let hourglass = !st.tri;

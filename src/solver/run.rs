@@ -114,7 +114,7 @@ fn prepare(opts: &RunOptions, nranks: usize) -> Result<Prepared, String> {
     for p in &m.properties {
         if let Some(s) = &p.shell {
             if s.ismstr == 1 {
-                notes.push(format!("{}: /PROP/{}: Ismstr = 1 (small strain) is computed with the large-strain corotational rate form", p.card.loc, p.card.id));
+                notes.push(format!("{}: /PROP/{}: Ismstr = 1 (small strain) is computed from the initial geometry on 4-node shells, with the large-strain corotational rate form on 3-node shells", p.card.loc, p.card.id));
             }
         }
     }
