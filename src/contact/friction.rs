@@ -268,11 +268,24 @@ mod tests {
             n,
             1.0e6,
             1.0,
-            1e-3,
+            1e-4,
             &mut st,
         );
         let c = (2.0e6f64).sqrt();
         assert!((f[1] + c * 1e-6).abs() < 1e-12);
+        // A step longer than M/C: the damper is capped at M/Δt.
+        let f = tangential_force(
+            &l,
+            0.1,
+            100.0,
+            [0.0, 1e-6, 0.0],
+            n,
+            1.0e6,
+            1.0,
+            1e-2,
+            &mut st,
+        );
+        assert!((f[1] + 100.0 * 1e-6).abs() < 1e-12);
     }
 
     #[test]
