@@ -1077,6 +1077,22 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
         );
         Some([e[0], e[1], e[2], ke, ker, e[3], e[4], e[5]])
     };
+    // Contact timers of rank 0 per secondary node-cycle (all ranks' secondary nodes).
+    let contact_timing = if contact.is_empty() {
+        None
+    } else {
+        let mut nsec = [contact.owned_secondary() as f64];
+        world.sum_f64(&mut nsec);
+        let tm = contact.timers;
+        let per = |s: f64| 1e6 * s / (cycle.max(1) as f64 * nsec[0].max(1.0));
+        Some((
+            tm.sorts,
+            nsec[0] as u64,
+            per(tm.search_s),
+            per(tm.force_s),
+            per(tm.exchange_s),
+        ))
+    };
     if let Some(l) = &mut listing {
         l.line("");
         match &result {
@@ -1089,6 +1105,12 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
             l.line(&format!(
                 "                               external work {:.6E}, rigid-wall work {:.6E}, contact energy {:.6E}",
                 e[5], e[6], e[7]
+            ));
+        }
+        if let Some(c) = &contact_timing {
+            l.line(&format!(
+                "     CONTACT                 : {} sorts, {} secondary nodes, {:.4} µs search + {:.4} µs forces + {:.4} µs exchange per secondary node-cycle (rank 0)",
+                c.0, c.1, c.2, c.3, c.4
             ));
         }
         l.line(&format!("     ELAPSED TIME            : {elapsed:>10.3} s   (set-up {:.3} s, cycles {looped:.3} s)", elapsed - looped));
