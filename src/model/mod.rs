@@ -6,7 +6,7 @@
 //! id, so "the fixed global order" of the determinism rules is index order.
 
 mod build;
-mod geometry;
+pub mod geometry;
 mod index;
 mod mass;
 mod properties;

@@ -10,6 +10,7 @@ use crate::kinematics::function;
 use crate::kinematics::rigid_body::{NodeLoad, RigidBodyState};
 use crate::kinematics::rigid_wall::wall_velocity;
 use crate::model::{self, Model};
+use crate::output;
 use crate::parallel::World;
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
@@ -25,6 +26,8 @@ pub struct RunOptions {
     /// Displacements of the /TH/NODE nodes every /TFILE period.
     pub history: Option<PathBuf>,
     pub strict: bool,
+    /// HDF5 run file, restart, progress (src/output).
+    pub output: crate::output::OutputOptions,
 }
 
 /// Why a run stopped early.
@@ -353,6 +356,8 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
     // follows its node: that node's /IMPVEL if it has one, else its own mass
     // pushed back by the nodes it stops (forces summed in global node order).
     let mut wall_p: Vec<[f64; 3]> = g.rigid_walls.iter().map(|w| w.point).collect();
+    // Force the nodes put on each wall in the last cycle (this rank's owned nodes), for the time histories.
+    let mut wall_force = vec![[0.0f64; 3]; g.rigid_walls.len()];
     let mut wall_v: Vec<[f64; 3]> = g
         .rigid_walls
         .iter()
@@ -452,7 +457,12 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
             ))
         })?;
         let path = opts.out_dir.join(format!("{}.out", g.name));
-        Some(Listing::new(Some(&path)).map_err(|e| {
+        // After a restart the listing goes on in the same file.
+        let listing = match opts.output.restart {
+            Some(_) => Listing::append(&path),
+            None => Listing::new(Some(&path)),
+        };
+        Some(listing.map_err(|e| {
             RunError::Input(format!("{}: cannot write the listing: {e}", path.display()))
         })?)
     } else {
@@ -537,7 +547,9 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
             }));
         }
     };
-    emit(&mut listing, cycle, t, dt, &step, 0.0, ke0, ker0, 0.0);
+    if opts.output.restart.is_none() {
+        emit(&mut listing, cycle, t, dt, &step, 0.0, ke0, ker0, 0.0);
+    }
     let mut dt_prev = 0.0f64;
     let th_period = engine.th_period.unwrap_or(f64::INFINITY);
     let th_local: Vec<(usize, u32)> = g
@@ -575,6 +587,73 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
         let (r, c) = v.split_once(':')?;
         Some((r.parse().ok()?, c.parse().ok()?))
     });
+
+    // ---- output hooks (src/output): restart, HDF5 run file, time histories, progress ----
+    // Contact forces per node and per-interface samples: zeros / empty until contact lands.
+    let contact_force = vec![[0.0f64; 3]; n];
+    let interface_samples: Vec<output::InterfaceSample> = Vec::new();
+    let octx = output::Context {
+        world,
+        g: &g,
+        sd: &sd,
+        out_dir: &opts.out_dir,
+        opts: &opts.output,
+        interfaces: &[],
+    };
+    let ke_of = |v: &[[f64; 3]], vr: &[[f64; 3]], b: &[RigidBodyState]| {
+        kinetic(
+            world,
+            v,
+            vr,
+            &mass,
+            &inertia,
+            &owned,
+            &is_main,
+            b,
+            &local_bodies,
+        )
+    };
+    // The loop's state by reference, for the output hooks.
+    macro_rules! loop_state {
+        () => {
+            output::LoopState {
+                t: &mut t,
+                cycle: &mut cycle,
+                dt: &mut dt,
+                dt_prev: &mut dt_prev,
+                step_what: &mut step.what,
+                step_id: &mut step.id,
+                x: &mut x,
+                v: &mut v,
+                vr: &mut vr,
+                fint: &mut fint,
+                fext: &mut fext,
+                blocks: &mut blocks,
+                bodies: &mut bodies,
+                wall_p: &mut wall_p,
+                wall_v: &mut wall_v,
+                tied: &mut tied,
+                w_ext: &mut w_ext,
+                wall_work: &mut wall_work,
+                next_th: &mut next_th,
+                history: &mut history,
+                fixed: &fixed,
+                e0,
+                wall_force: &wall_force,
+                contact_force: &contact_force,
+                interfaces: &interface_samples,
+                kinetic: &ke_of,
+            }
+        };
+    }
+    let mut out = output::Output::start(&octx, &mut loop_state!())?;
+    if let (Some(l), Some(p)) = (&mut listing, &opts.output.restart) {
+        l.line(&format!(
+            " restarted from {} at cycle {cycle}, time {t:e}",
+            p.display()
+        ));
+    }
+    let mut stopped: Option<String> = None;
     let loop_started = Instant::now();
 
     // ---- the cycle ----------------------------------------------------------
@@ -678,6 +757,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
         }
         // Rigid walls.
         for (w, (nodes, wall)) in walls.iter().enumerate() {
+            wall_force[w] = [0.0; 3];
             if let Some(c) = wall_driver[w] {
                 if let Some(val) = imposed(c, th) {
                     wall_v[w][c.card.dir.index()] = val;
@@ -710,6 +790,9 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
                 tied[w][i] = now_tied;
                 if owned[l] && f != [0.0; 3] {
                     push.push((sd.node_global[l], f));
+                    for k in 0..3 {
+                        wall_force[w][k] += f[k];
+                    }
                 }
             }
             if wall.node.is_some() && wall_driver[w].is_none() && wall.card.mass > 0.0 {
@@ -834,6 +917,20 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
             );
             emit(&mut listing, cycle, t, dt, &step, e_int, ke, ker, w[0]);
         }
+        // Output hook: histories, states, restart files, progress, stop requests.
+        match out.after_cycle(&octx, &mut loop_state!()) {
+            Ok(None) => {}
+            Ok(Some(msg)) => {
+                stopped = Some(msg);
+                break Ok(());
+            }
+            Err(e) => break Err(e),
+        }
+    };
+    // Output hook: last state and samples, XDMF (collective, also after a stop).
+    let result = match (result, out.finish(&octx, &mut loop_state!())) {
+        (Ok(()), Err(e)) => Err(e),
+        (r, _) => r,
     };
     let elapsed = started.elapsed().as_secs_f64();
     let looped = loop_started.elapsed().as_secs_f64();
@@ -865,7 +962,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
     if let Some(l) = &mut listing {
         l.line("");
         match &result {
-            Ok(()) => l.line("     NORMAL TERMINATION"),
+            Ok(()) => l.line(stopped.as_deref().unwrap_or("     NORMAL TERMINATION")),
             Err(e) => l.line(&format!("     ERROR TERMINATION: {}", e.message())),
         }
         l.line(&format!("     TOTAL NUMBER OF CYCLES  : {cycle:>10}"));
@@ -877,6 +974,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
             ));
         }
         l.line(&format!("     ELAPSED TIME            : {elapsed:>10.3} s   (set-up {:.3} s, cycles {looped:.3} s)", elapsed - looped));
+        l.line(&format!("     OUTPUT TIME             : {:>10.3} s   (HDF5 run file, time histories, restart files; rank 0)", out.seconds()));
         let elems = g.element_ids.iter().map(|e| e.len()).sum::<usize>().max(1);
         l.line(&format!(
             "     TIME PER CYCLE          : {:>10.3} µs   ({:.4} µs per element-cycle)",
