@@ -170,8 +170,18 @@ pub fn plot(input: &Path, out: &Path, what: &What) -> Result<(), String> {
                     y: total,
                 },
             );
+            // Curves that stay zero are named in the title instead of drawn.
+            let (zero, curves): (Vec<Curve>, Vec<Curve>) = curves
+                .into_iter()
+                .partition(|c| c.y.iter().all(|&v| v == 0.0));
+            let zero: Vec<String> = zero.into_iter().map(|c| c.label).collect();
+            let note = if zero.is_empty() {
+                String::new()
+            } else {
+                format!(" (zero throughout: {})", zero.join(", "))
+            };
             panels.push(Panel {
-                title: format!("{deck}: energies"),
+                title: format!("{deck}: energies{note}"),
                 ylabel: energy,
                 curves,
             });
@@ -279,6 +289,24 @@ pub fn plot(input: &Path, out: &Path, what: &What) -> Result<(), String> {
     draw(out, &time, &format!("time [{ut}]"), &panels)
 }
 
+/// A tick label: plain decimals for moderate magnitudes, else exponent form.
+fn tick(v: &f64) -> String {
+    let a = v.abs();
+    if a == 0.0 || a < 1e-12 {
+        "0".into()
+    } else if (1e-3..1e5).contains(&a) {
+        let digits = (3 - a.log10().floor() as i32).clamp(0, 6) as usize;
+        let s = format!("{v:.digits$}");
+        if s.contains('.') {
+            s.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            s
+        }
+    } else {
+        format!("{v:.2e}")
+    }
+}
+
 fn draw(out: &Path, time: &[f64], xlabel: &str, panels: &[Panel]) -> Result<(), String> {
     register_font()?;
     let e = |err: &dyn std::fmt::Display| format!("{}: cannot draw the plot: {err}", out.display());
@@ -307,6 +335,7 @@ fn draw(out: &Path, time: &[f64], xlabel: &str, panels: &[Panel]) -> Result<(), 
         let mut chart = ChartBuilder::on(area)
             .caption(&p.title, ("sans-serif", 22))
             .margin(12)
+            .margin_right(30)
             .x_label_area_size(45)
             .y_label_area_size(90)
             .build_cartesian_2d(t0..t1, (lo - pad)..(hi + pad))
@@ -315,8 +344,8 @@ fn draw(out: &Path, time: &[f64], xlabel: &str, panels: &[Panel]) -> Result<(), 
             .configure_mesh()
             .x_desc(xlabel)
             .y_desc(p.ylabel.as_str())
-            .x_label_formatter(&|v| format!("{v:.3e}"))
-            .y_label_formatter(&|v| format!("{v:.3e}"))
+            .x_label_formatter(&tick)
+            .y_label_formatter(&tick)
             .label_style(("sans-serif", 14))
             .axis_desc_style(("sans-serif", 16))
             .draw()
@@ -337,7 +366,7 @@ fn draw(out: &Path, time: &[f64], xlabel: &str, panels: &[Panel]) -> Result<(), 
         if !p.curves.is_empty() {
             chart
                 .configure_series_labels()
-                .position(SeriesLabelPosition::UpperRight)
+                .position(SeriesLabelPosition::MiddleRight)
                 .label_font(("sans-serif", 14))
                 .background_style(WHITE.mix(0.85))
                 .border_style(BLACK)
