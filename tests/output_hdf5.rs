@@ -87,7 +87,7 @@ fn info_and_plot_read_the_run_file() {
         "states: 11",
         "/states/0010   t = 1.000318e-1 s",
         "time histories: 101 samples",
-        "/th/nodes: 14 nodes",
+        "/th/nodes/values [T, 14, 9]: 14 nodes",
     ] {
         assert!(text.contains(want), "info lacks '{want}':\n{text}");
     }
@@ -136,4 +136,57 @@ fn info_and_plot_read_the_run_file() {
         assert!(err.contains(want), "{args:?}: '{err}' lacks '{want}'");
         assert!(!err.contains("panicked"), "{args:?} panicked");
     }
+}
+
+/// The progress line goes to stderr on a terminal only, and --quiet turns it
+/// off; the listing on stdout is the same either way.
+#[test]
+fn progress_line_on_a_terminal_only() {
+    let dir = scratch("progress");
+    let deck = qa_deck("BOX1BL");
+    let bin = env!("CARGO_BIN_EXE_crashsim");
+    // Not a terminal: nothing but errors on stderr.
+    let out = crashsim(&[
+        "run",
+        deck.to_str().unwrap(),
+        "--out",
+        dir.to_str().unwrap(),
+    ]);
+    assert!(out.status.success());
+    assert!(
+        out.stderr.is_empty(),
+        "stderr: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    // A terminal (script gives the process a pty); stdout goes to a file.
+    let term = |quiet: &str| {
+        let cmd = format!(
+            "{bin} run {} --out {} {quiet} > {}/listing.txt",
+            deck.display(),
+            dir.display(),
+            dir.display()
+        );
+        let o = std::process::Command::new("script")
+            .args(["-qec", &cmd, "/dev/null"])
+            .output()
+            .expect("script (util-linux) runs");
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        String::from_utf8_lossy(&o.stdout).into_owned()
+    };
+    let shown = term("");
+    assert!(
+        shown.contains("cycles/s") && shown.contains("left"),
+        "no progress line on the terminal: {shown:?}"
+    );
+    let listing = std::fs::read_to_string(dir.join("listing.txt")).unwrap();
+    assert!(
+        !listing.contains("cycles/s"),
+        "the progress line leaked into stdout"
+    );
+    assert!(listing.contains("NORMAL TERMINATION"));
+    let quiet = term("--quiet");
+    assert!(
+        !quiet.contains("cycles/s"),
+        "--quiet still shows progress: {quiet:?}"
+    );
 }

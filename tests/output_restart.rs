@@ -22,7 +22,12 @@ fn ok(out: &Output, what: &str) {
 /// `crashsim run BOX1BL` on `np` ranks into `dir` with `extra` arguments and environment.
 fn run(np: u32, dir: &Path, extra: &[&str], env: &[(&str, &str)]) -> Output {
     let deck = qa_deck("BOX1BL");
-    let mut args = vec!["run", deck.to_str().unwrap(), "--out", dir.to_str().unwrap()];
+    let mut args = vec![
+        "run",
+        deck.to_str().unwrap(),
+        "--out",
+        dir.to_str().unwrap(),
+    ];
     args.extend_from_slice(extra);
     run_env(np, &args, env)
 }
@@ -31,7 +36,10 @@ fn run(np: u32, dir: &Path, extra: &[&str], env: &[(&str, &str)]) -> Output {
 fn reference(tag: &str) -> (Vec<u8>, PathBuf) {
     let dir = scratch(tag);
     let fs = dir.join("final.csv");
-    ok(&run(0, &dir, &["--final-state", fs.to_str().unwrap()], &[]), "reference run");
+    ok(
+        &run(0, &dir, &["--final-state", fs.to_str().unwrap()], &[]),
+        "reference run",
+    );
     (std::fs::read(fs).unwrap(), dir)
 }
 
@@ -52,7 +60,12 @@ fn restart(np: u32, dir: &Path) -> Vec<u8> {
     let out = run(
         np,
         dir,
-        &["--restart", rst.to_str().unwrap(), "--final-state", fs.to_str().unwrap()],
+        &[
+            "--restart",
+            rst.to_str().unwrap(),
+            "--final-state",
+            fs.to_str().unwrap(),
+        ],
         &[],
     );
     ok(&out, &format!("restart on {np} rank(s)"));
@@ -72,12 +85,21 @@ fn stopped_at_cycle_500_and_restarted_on_1_and_2_ranks_ends_byte_identical() {
     let info = crashsim(&["info", stopped.join("BOX1BL_rst.h5").to_str().unwrap()]);
     ok(&info, "info on the restart file");
     let text = String::from_utf8_lossy(&info.stdout);
-    assert!(text.contains("elements.shell4") && text.contains("nodes.fint"), "{text}");
+    assert!(
+        text.contains("elements.shell4") && text.contains("nodes.fint"),
+        "{text}"
+    );
 
     let a = copy_run(&stopped, "rst-a");
-    assert!(restart(0, &a) == full, "restart on 1 rank differs from the run that never stopped");
+    assert!(
+        restart(0, &a) == full,
+        "restart on 1 rank differs from the run that never stopped"
+    );
     let b = copy_run(&stopped, "rst-b");
-    assert!(restart(2, &b) == full, "restart on 2 ranks differs from the run that never stopped");
+    assert!(
+        restart(2, &b) == full,
+        "restart on 2 ranks differs from the run that never stopped"
+    );
     // The run file continued by the restart is the uninterrupted run's.
     python_check(
         "compare_runs.py",
@@ -94,7 +116,10 @@ fn stopped_at_cycle_500_and_restarted_on_1_and_2_ranks_ends_byte_identical() {
 fn stopped_on_2_ranks_and_restarted_on_1_ends_byte_identical() {
     let (full, _) = reference("rst-full2");
     let stopped = scratch("rst-stop2");
-    ok(&run(2, &stopped, &["--stop-after-cycle", "333"], &[]), "2-rank run stopped at 333");
+    ok(
+        &run(2, &stopped, &["--stop-after-cycle", "333"], &[]),
+        "2-rank run stopped at 333",
+    );
     assert!(restart(0, &stopped) == full, "2 → 1 rank restart differs");
 }
 
@@ -119,7 +144,10 @@ fn a_rank_killed_mid_run_ends_the_job_and_leaves_a_readable_run_file() {
     let started = std::time::Instant::now();
     let out = run(2, &dir, &[], &[("CRASHSIM_KILL_AT", "1:600")]);
     let secs = started.elapsed().as_secs_f64();
-    assert!(!out.status.success(), "the job must fail when a rank is killed");
+    assert!(
+        !out.status.success(),
+        "the job must fail when a rank is killed"
+    );
     assert!(secs < 10.0, "the job took {secs:.1} s to end after SIGKILL");
     // States 0..5 (up to cycle 532) were complete before cycle 600.
     let script = r#"
@@ -132,7 +160,7 @@ for s in states:
     for k in ("coordinates", "displacement", "velocity", "contact_force"):
         assert g[k].shape == (155, 3) and np.isfinite(g[k][()]).all(), (s, k)
     assert g["shell4/von_mises"].shape == (140,)
-assert f["th/time"].shape[0] >= 50 and f["th/global/internal_energy"].shape == f["th/time"].shape
+assert f["th/time"].shape[0] >= 50 and f["th/global"].shape == (f["th/time"].shape[0], 10)
 print("readable:", len(states), "states,", f["th/time"].shape[0], "history rows")
 "#;
     let py = dir.join("read.py");
@@ -161,7 +189,10 @@ fn a_bad_restart_file_is_an_input_error_naming_it() {
         let out = run(0, &dir, &["--restart", file.to_str().unwrap()], &[]);
         let err = String::from_utf8_lossy(&out.stderr);
         assert_eq!(out.status.code(), Some(2), "{err}");
-        assert!(err.contains(file.to_str().unwrap()) && err.contains(want), "{err}");
+        assert!(
+            err.contains(file.to_str().unwrap()) && err.contains(want),
+            "{err}"
+        );
     }
     // A run file is not a restart file.
     ok(&run(0, &dir, &[], &[]), "run");

@@ -1,25 +1,28 @@
 //! Time histories (`/th` in the run file), sampled every /TFILE period.
 //!
 //! One row per sample, the same on every rank (partial sums are added with
-//! one all-reduce):
+//! one all-reduce). Each table is one extendible dataset whose last
+//! dimension is named by its `columns` attribute (comma-separated), so that
+//! appending rows costs a few collective operations, not one per quantity:
 //!
-//! - `/th/time`, `/th/cycle`, `/th/time_step`;
-//! - `/th/global/*`: the listing's columns — internal energy (with
-//!   hourglass), translational and rotational kinetic energy, external work
-//!   and the energy error in % (as the listing computes them) — and the
-//!   hourglass energy, plastic work, rigid-wall work and contact energy;
-//! - `/th/parts/{internal_energy, kinetic_energy, mass}` `[T, P]`: per part,
-//!   its elements' internal energy; kinetic energy Σ_e Σ_corners ½·(m_e/n)·|v|²
+//! - `/th/time [T]`, `/th/cycle [T]`;
+//! - `/th/global [T, 10]`: the time step, the listing's columns — internal
+//!   energy (with hourglass), translational and rotational kinetic energy,
+//!   external work and the energy error in % (as the listing computes
+//!   them) — and the hourglass energy, plastic work, rigid-wall work and
+//!   contact energy (`GLOBAL_COLUMNS`);
+//! - `/th/parts/values [T, P, 3]` (ids in `/th/parts/id`): per part, its
+//!   elements' internal energy; kinetic energy Σ_e Σ_corners ½·(m_e/n)·|v|²
 //!   and mass Σ m_e over its elements not deleted, with the element mass
 //!   m_e = ρ·t·A (shells), ρ·V (solids), the property mass (springs) taken
 //!   on the initial geometry, as the starter's part masses;
-//! - `/th/interfaces/{normal_force, tangential_force}` `[T, I, 3]` and
-//!   `contact_energy` `[T, I]`: what the contact code passes in
-//!   (`InterfaceSample`; zeros until contact lands);
-//! - `/th/rigid_walls/force` `[T, W, 3]`: the force the nodes put on each wall in
-//!   the sampled cycle;
-//! - `/th/nodes/{displacement, velocity, acceleration}` `[T, M, 3]` for the
-//!   /TH/NODE nodes: u = x − x0, v at the half step, a = (f_ext − f_int)/m
+//! - `/th/interfaces/values [T, I, 7]`: normal and tangential force
+//!   resultants (x, y, z) and contact energy, as the contact code passes
+//!   them in (`InterfaceSample`; none until contact lands);
+//! - `/th/rigid_walls/values [T, W, 3]`: the force the nodes put on each
+//!   wall in the sampled cycle;
+//! - `/th/nodes/values [T, M, 9]` for the /TH/NODE nodes: displacement
+//!   u = x − x0, velocity at the half step, acceleration (f_ext − f_int)/m
 //!   at the sample (0 on a fixed degree of freedom).
 //!
 //! Rows are kept in memory and appended to the file at each state (and at
@@ -31,8 +34,9 @@ use crate::model::geometry::{hexa_volume, quad_area, tetra_volume, triangle_area
 use crate::solver::blocks::Block;
 use serde::{Deserialize, Serialize};
 
-/// `/th/global` datasets, in row order.
-pub const GLOBAL_NAMES: [&str; 9] = [
+/// Columns of `/th/global`.
+pub const GLOBAL_COLUMNS: [&str; 10] = [
+    "time_step",
     "internal_energy",
     "kinetic_energy",
     "rotational_kinetic_energy",
@@ -42,6 +46,32 @@ pub const GLOBAL_NAMES: [&str; 9] = [
     "plastic_work",
     "rigid_wall_work",
     "contact_energy",
+];
+/// Columns of `/th/parts/values`.
+pub const PART_COLUMNS: [&str; 3] = ["internal_energy", "kinetic_energy", "mass"];
+/// Columns of `/th/interfaces/values`.
+pub const INTERFACE_COLUMNS: [&str; 7] = [
+    "normal_force_x",
+    "normal_force_y",
+    "normal_force_z",
+    "tangential_force_x",
+    "tangential_force_y",
+    "tangential_force_z",
+    "contact_energy",
+];
+/// Columns of `/th/rigid_walls/values`.
+pub const WALL_COLUMNS: [&str; 3] = ["force_x", "force_y", "force_z"];
+/// Columns of `/th/nodes/values`.
+pub const NODE_COLUMNS: [&str; 9] = [
+    "displacement_x",
+    "displacement_y",
+    "displacement_z",
+    "velocity_x",
+    "velocity_y",
+    "velocity_z",
+    "acceleration_x",
+    "acceleration_y",
+    "acceleration_z",
 ];
 
 /// Sizes of the per-object histories.
@@ -54,10 +84,10 @@ pub struct ThLayout {
 }
 
 impl ThLayout {
-    /// Values of one row besides the cycle: time, time step, the globals,
-    /// then each per-object dataset in the order of the file.
+    /// Values of one row besides the cycle: time, the globals, then each
+    /// per-object table (object-major) in the order of the file.
     pub fn width(&self) -> usize {
-        2 + GLOBAL_NAMES.len()
+        1 + GLOBAL_COLUMNS.len()
             + 3 * self.parts
             + 7 * self.interfaces
             + 3 * self.walls
@@ -171,8 +201,9 @@ impl History {
     pub fn sample(&mut self, ctx: &Context, s: &LoopState) -> ThRow {
         let l = self.layout;
         let (np, ni, nw, nm) = (l.parts, l.interfaces, l.walls, l.nodes);
-        // Partial sums: [ie, hourglass, plastic, w_ext, wall work, parts (3P),
-        // interfaces (7I), walls (3W), nodes (9M)].
+        // Partial sums: [ie, hourglass, plastic, w_ext, wall work, then the
+        // tables as the file lays them out: parts [P][3], interfaces [I][7],
+        // walls [W][3], nodes [M][9]].
         let o_parts = 5;
         let o_if = o_parts + 3 * np;
         let o_wall = o_if + 7 * ni;
@@ -191,12 +222,12 @@ impl History {
             let nn = b.kind().nodes();
             for (e, out) in b.outputs().iter().enumerate() {
                 let p = le.part[e] as usize;
-                buf[o_parts + p] += out.eint;
+                buf[o_parts + 3 * p] += out.eint;
                 if out.deleted {
                     continue;
                 }
                 let me = self.elem_mass[bi][e];
-                buf[o_parts + 2 * np + p] += me;
+                buf[o_parts + 3 * p + 2] += me;
                 let mut v2 = 0.0;
                 for &n in &le.nodes[nn * e..nn * (e + 1)] {
                     if n != crate::model::NO_NODE {
@@ -204,23 +235,25 @@ impl History {
                         v2 += v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
                     }
                 }
-                buf[o_parts + np + p] += 0.5 * me / nn as f64 * v2;
+                buf[o_parts + 3 * p + 1] += 0.5 * me / nn as f64 * v2;
             }
         }
         for (i, smp) in s.interfaces.iter().enumerate().take(ni) {
-            buf[o_if + 3 * i..o_if + 3 * i + 3].copy_from_slice(&smp.normal);
-            buf[o_if + 3 * ni + 3 * i..o_if + 3 * ni + 3 * i + 3].copy_from_slice(&smp.tangential);
-            buf[o_if + 6 * ni + i] = smp.energy;
+            let o = o_if + 7 * i;
+            buf[o..o + 3].copy_from_slice(&smp.normal);
+            buf[o + 3..o + 6].copy_from_slice(&smp.tangential);
+            buf[o + 6] = smp.energy;
         }
         for (w, f) in s.wall_force.iter().enumerate().take(nw) {
             buf[o_wall + 3 * w..o_wall + 3 * w + 3].copy_from_slice(f);
         }
         let mass = &ctx.sd.mass;
         for &(i, l) in &self.th_local {
+            let o = o_node + 9 * i;
             for k in 0..3 {
-                buf[o_node + 3 * i + k] = s.x[l][k] - ctx.sd.x[l][k];
-                buf[o_node + 3 * nm + 3 * i + k] = s.v[l][k];
-                buf[o_node + 6 * nm + 3 * i + k] = if mass[l] > 0.0 && !s.fixed[l][k] {
+                buf[o + k] = s.x[l][k] - ctx.sd.x[l][k];
+                buf[o + 3 + k] = s.v[l][k];
+                buf[o + 6 + k] = if mass[l] > 0.0 && !s.fixed[l][k] {
                     (s.fext[l][k] - s.fint[l][k]) / mass[l]
                 } else {
                     0.0
@@ -236,7 +269,7 @@ impl History {
         } else {
             0.0
         };
-        let contact: f64 = (0..ni).map(|i| buf[o_if + 6 * ni + i]).sum();
+        let contact: f64 = (0..ni).map(|i| buf[o_if + 7 * i + 6]).sum();
         let mut values = Vec::with_capacity(l.width());
         values.extend_from_slice(&[*s.t, *s.dt]);
         values.extend_from_slice(&[ie, ke, ker, w, err, buf[1], buf[2], buf[4], contact]);

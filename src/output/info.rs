@@ -163,34 +163,31 @@ pub fn report(path: &Path) -> Result<String, String> {
             let _ = writeln!(s, "time histories: none");
         }
     }
+    use super::history::{
+        GLOBAL_COLUMNS, INTERFACE_COLUMNS, NODE_COLUMNS, PART_COLUMNS, WALL_COLUMNS,
+    };
     let _ = writeln!(
         s,
-        "  /th/global: {}",
-        super::history::GLOBAL_NAMES.join(", ")
+        "  /th/global [T, {}]: {}",
+        GLOBAL_COLUMNS.len(),
+        GLOBAL_COLUMNS.join(", ")
     );
-    let _ = writeln!(
-        s,
-        "  /th/parts: {} parts{} — internal_energy, kinetic_energy, mass",
-        len(&f, "th/parts/id"),
-        id_list(&ids(&f, "th/parts/id"))
-    );
-    let _ = writeln!(
-        s,
-        "  /th/interfaces: {} interfaces{} — normal_force, tangential_force, contact_energy",
-        len(&f, "th/interfaces/id"),
-        id_list(&ids(&f, "th/interfaces/id"))
-    );
-    let _ = writeln!(
-        s,
-        "  /th/rigid_walls: {} walls{} — force",
-        len(&f, "th/rigid_walls/id"),
-        id_list(&ids(&f, "th/rigid_walls/id"))
-    );
-    let _ = writeln!(
-        s,
-        "  /th/nodes: {} nodes{} — displacement, velocity, acceleration",
-        len(&f, "th/nodes/id"),
-        id_list(&ids(&f, "th/nodes/id"))
-    );
+    for (name, what, cols) in [
+        ("parts", "parts", &PART_COLUMNS[..]),
+        ("interfaces", "interfaces", &INTERFACE_COLUMNS[..]),
+        ("rigid_walls", "walls", &WALL_COLUMNS[..]),
+        ("nodes", "nodes", &NODE_COLUMNS[..]),
+    ] {
+        let id = ids(&f, &format!("th/{name}/id"));
+        let _ = writeln!(
+            s,
+            "  /th/{name}/values [T, {}, {}]: {} {what}{} — {}",
+            id.len(),
+            cols.len(),
+            id.len(),
+            id_list(&id),
+            cols.join(", ")
+        );
+    }
     Ok(s)
 }

@@ -99,21 +99,32 @@ fn ids(f: &File, path: &str) -> Vec<u64> {
         .unwrap_or_default()
 }
 
-/// Column `c` of a [T, n, w] array as a curve over T: component `k`, or
-/// the magnitude of the w components when `k` is None.
-fn column(shape: &[usize], v: &[f64], c: usize, k: Option<usize>) -> Vec<f64> {
+/// Object `c` of a [T, n, w] table as a curve over T: column `cols.start`,
+/// or the magnitude of columns `cols` when there are several.
+fn column(shape: &[usize], v: &[f64], c: usize, cols: std::ops::Range<usize>) -> Vec<f64> {
     let t = shape[0];
     let n = shape.get(1).copied().unwrap_or(1);
     let w = shape.get(2).copied().unwrap_or(1);
     (0..t)
         .map(|i| {
             let row = &v[(i * n + c) * w..(i * n + c + 1) * w];
-            match k {
-                Some(k) => row[k],
-                None => row.iter().map(|a| a * a).sum::<f64>().sqrt(),
+            if cols.len() == 1 {
+                row[cols.start]
+            } else {
+                row[cols.clone()].iter().map(|a| a * a).sum::<f64>().sqrt()
             }
         })
         .collect()
+}
+
+/// Column `name` of `/th/global`.
+fn global(shape: &[usize], v: &[f64], name: &str) -> Vec<f64> {
+    let k = super::history::GLOBAL_COLUMNS
+        .iter()
+        .position(|&c| c == name)
+        .expect("a /th/global column");
+    let w = shape[1];
+    (0..shape[0]).map(|i| v[i * w + k]).collect()
 }
 
 /// Draws `what` from `input` into `out` (PNG).
@@ -143,6 +154,7 @@ pub fn plot(input: &Path, out: &Path, what: &What) -> Result<(), String> {
     let mut panels = Vec::new();
     match what {
         What::Energies => {
+            let (gs, gv) = read(&f, "th/global", input)?;
             let mut curves = Vec::new();
             for (name, label) in [
                 ("internal_energy", "internal"),
@@ -154,10 +166,9 @@ pub fn plot(input: &Path, out: &Path, what: &What) -> Result<(), String> {
                 ("rigid_wall_work", "rigid-wall work"),
                 ("contact_energy", "contact"),
             ] {
-                let (_, y) = read(&f, &format!("th/global/{name}"), input)?;
                 curves.push(Curve {
                     label: label.into(),
-                    y,
+                    y: global(&gs, &gv, name),
                 });
             }
             let total: Vec<f64> = (0..time.len())
@@ -188,15 +199,12 @@ pub fn plot(input: &Path, out: &Path, what: &What) -> Result<(), String> {
         }
         What::Parts => {
             let pid = ids(&f, "th/parts/id");
-            for (name, label) in [
-                ("internal_energy", "internal energy"),
-                ("kinetic_energy", "kinetic energy"),
-            ] {
-                let (shape, v) = read(&f, &format!("th/parts/{name}"), input)?;
+            let (shape, v) = read(&f, "th/parts/values", input)?;
+            for (k, label) in [(0, "internal energy"), (1, "kinetic energy")] {
                 let curves = (0..pid.len())
                     .map(|p| Curve {
                         label: format!("part {}", pid[p]),
-                        y: column(&shape, &v, p, Some(0)),
+                        y: column(&shape, &v, p, k..k + 1),
                     })
                     .collect();
                 panels.push(Panel {
@@ -208,17 +216,16 @@ pub fn plot(input: &Path, out: &Path, what: &What) -> Result<(), String> {
         }
         What::Interfaces => {
             let iid = ids(&f, "th/interfaces/id");
-            let (sn, vn) = read(&f, "th/interfaces/normal_force", input)?;
-            let (st, vt) = read(&f, "th/interfaces/tangential_force", input)?;
+            let (sh, vals) = read(&f, "th/interfaces/values", input)?;
             let mut curves = Vec::new();
             for (i, id) in iid.iter().enumerate() {
                 curves.push(Curve {
                     label: format!("{id} normal"),
-                    y: column(&sn, &vn, i, None),
+                    y: column(&sh, &vals, i, 0..3),
                 });
                 curves.push(Curve {
                     label: format!("{id} tangential"),
-                    y: column(&st, &vt, i, None),
+                    y: column(&sh, &vals, i, 3..6),
                 });
             }
             let none = if iid.is_empty() {
@@ -231,7 +238,6 @@ pub fn plot(input: &Path, out: &Path, what: &What) -> Result<(), String> {
                 ylabel: force,
                 curves,
             });
-            let (se, ve) = read(&f, "th/interfaces/contact_energy", input)?;
             panels.push(Panel {
                 title: format!("{deck}: contact energy{none}"),
                 ylabel: energy,
@@ -240,7 +246,7 @@ pub fn plot(input: &Path, out: &Path, what: &What) -> Result<(), String> {
                     .enumerate()
                     .map(|(i, id)| Curve {
                         label: format!("interface {id}"),
-                        y: column(&se, &ve, i, Some(0)),
+                        y: column(&sh, &vals, i, 6..7),
                     })
                     .collect(),
             });
@@ -264,18 +270,18 @@ pub fn plot(input: &Path, out: &Path, what: &What) -> Result<(), String> {
                     }
                 ));
             };
-            for (name, label, unit) in [
-                ("displacement", "displacement", ul.clone()),
-                ("velocity", "velocity", format!("{ul}/{ut}")),
-                ("acceleration", "acceleration", format!("{ul}/{ut}²")),
+            let (shape, v) = read(&f, "th/nodes/values", input)?;
+            for (o, label, unit) in [
+                (0, "displacement", ul.clone()),
+                (3, "velocity", format!("{ul}/{ut}")),
+                (6, "acceleration", format!("{ul}/{ut}²")),
             ] {
-                let (shape, v) = read(&f, &format!("th/nodes/{name}"), input)?;
                 let curves = ["x", "y", "z"]
                     .iter()
                     .enumerate()
                     .map(|(k, c)| Curve {
                         label: (*c).into(),
-                        y: column(&shape, &v, i, Some(k)),
+                        y: column(&shape, &v, i, o + k..o + k + 1),
                     })
                     .collect();
                 panels.push(Panel {

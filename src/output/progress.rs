@@ -25,7 +25,8 @@ impl Progress {
         Progress {
             on: rank == 0 && !quiet && std::io::stderr().is_terminal(),
             started: now,
-            last: now,
+            // The first update draws at once.
+            last: now.checked_sub(Duration::from_secs(1)).unwrap_or(now),
             t0,
             cycle0,
             tstop,
@@ -72,5 +73,28 @@ impl Progress {
             let _ = write!(e, "\x1b[2K\r");
             let _ = e.flush();
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_line_names_time_cycle_step_rate_and_time_left() {
+        let p = Progress::new(1, false, 0.0, 0, 0.1);
+        assert!(!p.on, "only rank 0 draws");
+        // A quarter of the run in 2 s: 6 s left; 500 cycles in 2 s.
+        let l = p.line(0.025, 500, 1e-4, 2.0);
+        assert_eq!(
+            l,
+            "t = 2.5000e-2 / 1.0000e-1  cycle 500  dt 1.000e-4  250 cycles/s  left 6 s"
+        );
+        // After a restart the rate counts from where the run started.
+        let p = Progress::new(0, true, 0.05, 500, 0.1);
+        assert!(!p.on, "--quiet turns it off");
+        assert!(p
+            .line(0.075, 600, 1e-4, 1.0)
+            .contains("100 cycles/s  left 1 s"));
     }
 }

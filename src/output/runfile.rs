@@ -17,7 +17,9 @@
 //! /states/NNNN/          attributes time, cycle
 //!     coordinates, displacement, velocity, contact_force   [N,3] f64
 //!     <kind>/von_mises, plastic_strain, thickness (shells) [E] f64, deleted [E] u8
-//! /th/                   time histories, see `history`
+//! /th/                   time histories: time, cycle, global [T,10], parts/values [T,P,3],
+//!                        interfaces/values [T,I,7], rigid_walls/values [T,W,3],
+//!                        nodes/values [T,M,9] (see `history`; a `columns` attribute names the last axis)
 //! ```
 //!
 //! Rows are in global order whatever the partition: the file is the same
@@ -428,71 +430,64 @@ impl RunFile {
     }
 
     fn create_th(&self, ctx: &Context) -> Result<(), String> {
-        let l = &self.th;
+        use super::history::{
+            GLOBAL_COLUMNS, INTERFACE_COLUMNS, NODE_COLUMNS, PART_COLUMNS, WALL_COLUMNS,
+        };
         let th = self.file.create_group("th").map_err(|e| e.to_string())?;
         growing::<f64>(&th, "time", &[])?;
         growing::<u64>(&th, "cycle", &[])?;
-        growing::<f64>(&th, "time_step", &[])?;
-        let glob = th.create_group("global").map_err(|e| e.to_string())?;
-        for name in super::history::GLOBAL_NAMES {
-            growing::<f64>(&glob, name, &[])?;
-        }
-        let parts = th.create_group("parts").map_err(|e| e.to_string())?;
-        let pid: Vec<u64> = ctx.g.parts.iter().map(|p| p.id).collect();
-        self.write_table(&parts, "id", &pid)?;
-        for name in ["internal_energy", "kinetic_energy", "mass"] {
-            growing::<f64>(&parts, name, &[l.parts])?;
-        }
-        let ifs = th.create_group("interfaces").map_err(|e| e.to_string())?;
-        let iid: Vec<u64> = ctx.interfaces.iter().map(|i| i.id).collect();
-        self.write_table(&ifs, "id", &iid)?;
-        growing::<f64>(&ifs, "normal_force", &[l.interfaces, 3])?;
-        growing::<f64>(&ifs, "tangential_force", &[l.interfaces, 3])?;
-        growing::<f64>(&ifs, "contact_energy", &[l.interfaces])?;
-        let walls = th.create_group("rigid_walls").map_err(|e| e.to_string())?;
-        let wid: Vec<u64> = ctx.g.rigid_walls.iter().map(|w| w.card.id).collect();
-        self.write_table(&walls, "id", &wid)?;
-        growing::<f64>(&walls, "force", &[l.walls, 3])?;
-        let nodes = th.create_group("nodes").map_err(|e| e.to_string())?;
-        let nid: Vec<u64> = ctx
-            .g
-            .th_nodes
-            .iter()
-            .map(|&n| ctx.g.node_ids[n as usize])
-            .collect();
-        self.write_table(&nodes, "id", &nid)?;
-        for name in ["displacement", "velocity", "acceleration"] {
-            growing::<f64>(&nodes, name, &[l.nodes, 3])?;
+        let ds = growing::<f64>(&th, "global", &[GLOBAL_COLUMNS.len()])?;
+        attr_str(&ds, "columns", &GLOBAL_COLUMNS.join(","))?;
+        let g = ctx.g;
+        let tables: [(&str, Vec<u64>, &[&str]); 4] = [
+            (
+                "parts",
+                g.parts.iter().map(|p| p.id).collect(),
+                &PART_COLUMNS,
+            ),
+            (
+                "interfaces",
+                ctx.interfaces.iter().map(|i| i.id).collect(),
+                &INTERFACE_COLUMNS,
+            ),
+            (
+                "rigid_walls",
+                g.rigid_walls.iter().map(|w| w.card.id).collect(),
+                &WALL_COLUMNS,
+            ),
+            (
+                "nodes",
+                g.th_nodes.iter().map(|&n| g.node_ids[n as usize]).collect(),
+                &NODE_COLUMNS,
+            ),
+        ];
+        for (name, ids, cols) in tables {
+            let grp = th.create_group(name).map_err(|e| e.to_string())?;
+            self.write_table(&grp, "id", &ids)?;
+            let ds = growing::<f64>(&grp, "values", &[ids.len(), cols.len()])?;
+            attr_str(&ds, "columns", &cols.join(","))?;
         }
         Ok(())
     }
 
-    /// The /th datasets with, for each, the values one row holds.
+    /// The /th datasets with, for each, the values one row holds (the
+    /// cycle, second, is written apart).
     fn th_datasets(&self) -> Result<Vec<(Dataset, usize)>, String> {
         let l = &self.th;
-        let mut names: Vec<(String, usize)> = vec![
-            ("th/time".into(), 1),
-            ("th/cycle".into(), 1),
-            ("th/time_step".into(), 1),
+        let names: [(&str, usize); 7] = [
+            ("th/time", 1),
+            ("th/cycle", 1),
+            ("th/global", super::history::GLOBAL_COLUMNS.len()),
+            ("th/parts/values", 3 * l.parts),
+            ("th/interfaces/values", 7 * l.interfaces),
+            ("th/rigid_walls/values", 3 * l.walls),
+            ("th/nodes/values", 9 * l.nodes),
         ];
-        for n in super::history::GLOBAL_NAMES {
-            names.push((format!("th/global/{n}"), 1));
-        }
-        for n in ["internal_energy", "kinetic_energy", "mass"] {
-            names.push((format!("th/parts/{n}"), l.parts));
-        }
-        names.push(("th/interfaces/normal_force".into(), 3 * l.interfaces));
-        names.push(("th/interfaces/tangential_force".into(), 3 * l.interfaces));
-        names.push(("th/interfaces/contact_energy".into(), l.interfaces));
-        names.push(("th/rigid_walls/force".into(), 3 * l.walls));
-        for n in ["displacement", "velocity", "acceleration"] {
-            names.push((format!("th/nodes/{n}"), 3 * l.nodes));
-        }
         names
             .into_iter()
             .map(|(n, w)| {
                 self.file
-                    .dataset(&n)
+                    .dataset(n)
                     .map(|d| (d, w))
                     .map_err(|e| err(&self.path, format!("{n}: {e}")))
             })
