@@ -202,3 +202,43 @@ fn a_bad_restart_file_is_an_input_error_naming_it() {
     assert_eq!(out.status.code(), Some(2), "{err}");
     assert!(err.contains("expected a crashsim restart file"), "{err}");
 }
+
+/// /RFILE/1 with Ncycle 300: restart files at cycles 300, 600 and 900; the
+/// last one continues to the same final state.
+#[test]
+fn rfile_writes_a_restart_file_every_n_cycles() {
+    let (full, _) = reference("rst-full4");
+    let dir = scratch("rst-rfile");
+    let engine = dir.join("BOX1BL_0001.rad");
+    let mut text =
+        std::fs::read_to_string(shared_dir().join("decks/openradioss-qa/BOX1BL/BOX1BL_0001.rad"))
+            .unwrap();
+    text.push_str("/RFILE/1\n300\n");
+    std::fs::write(&engine, text).unwrap();
+    ok(
+        &run(2, &dir, &["--engine", engine.to_str().unwrap()], &[]),
+        "run with /RFILE",
+    );
+    let rst = dir.join("BOX1BL_rst.h5");
+    let fs = dir.join("final.csv");
+    let out = run(
+        0,
+        &dir,
+        &[
+            "--engine",
+            engine.to_str().unwrap(),
+            "--restart",
+            rst.to_str().unwrap(),
+            "--final-state",
+            fs.to_str().unwrap(),
+        ],
+        &[],
+    );
+    ok(&out, "restart from the /RFILE file");
+    let listing = String::from_utf8_lossy(&out.stdout);
+    assert!(listing.contains("at cycle 900,"), "{listing}");
+    assert!(
+        std::fs::read(fs).unwrap() == full,
+        "restart from cycle 900 differs"
+    );
+}
