@@ -12,6 +12,7 @@ pub mod element;
 pub mod kinematics;
 pub mod material;
 pub mod model;
+pub mod output;
 pub mod parallel;
 pub mod solver;
 pub mod summary;

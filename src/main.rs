@@ -74,6 +74,34 @@ enum Command {
         /// Write the energies (internal, kinetic, rotational, external work, contact) at every cycle to this CSV file
         #[arg(long)]
         energies: Option<PathBuf>,
+        /// Continue from a restart file DIR/NAME_rst.h5 (any number of ranks)
+        #[arg(long)]
+        restart: Option<PathBuf>,
+        /// No progress line on stderr
+        #[arg(long)]
+        quiet: bool,
+        /// Write the restart file after cycle K and stop (for tests)
+        #[arg(long, hide = true)]
+        stop_after_cycle: Option<u64>,
+        /// Write no HDF5/XDMF run file (to measure what output costs)
+        #[arg(long, hide = true)]
+        no_run_file: bool,
+    },
+    /// Print what a run file DIR/NAME.h5 (or a restart file) holds
+    Info {
+        /// The HDF5 file written by `crashsim run`
+        file: PathBuf,
+    },
+    /// Draw time histories of a run file into a PNG
+    Plot {
+        /// The run file DIR/NAME.h5
+        file: PathBuf,
+        /// The PNG to write
+        #[arg(long)]
+        out: PathBuf,
+        /// energies, interfaces, parts or node:ID
+        #[arg(long, default_value = "energies")]
+        what: String,
     },
     /// Under mpirun: rank 0 reads and partitions the deck, scatters one
     /// subdomain per rank; every rank reports what it holds and checks its
@@ -199,6 +227,23 @@ fn main() -> ExitCode {
             ExitCode::SUCCESS
         }
         Command::Distribute { deck, json } => distribute(&deck, json),
+        Command::Info { file } => match crashsim::output::info::report(&file) {
+            Ok(s) => {
+                print!("{s}");
+                ExitCode::SUCCESS
+            }
+            Err(e) => input_error(e),
+        },
+        Command::Plot { file, out, what } => {
+            let what = match what.parse::<crashsim::output::plot::What>() {
+                Ok(w) => w,
+                Err(e) => return input_error(format!("--what {e}")),
+            };
+            match crashsim::output::plot::plot(&file, &out, &what) {
+                Ok(()) => ExitCode::SUCCESS,
+                Err(e) => input_error(e),
+            }
+        }
         Command::Run {
             deck,
             out,
@@ -206,6 +251,10 @@ fn main() -> ExitCode {
             final_elements,
             history,
             energies,
+            restart,
+            quiet,
+            stop_after_cycle,
+            no_run_file,
         } => {
             let Some(world) = World::init() else {
                 return input_error("MPI could not be initialised");
@@ -219,6 +268,12 @@ fn main() -> ExitCode {
                 history,
                 energies,
                 strict: deck.strict,
+                output: crashsim::output::OutputOptions {
+                    restart,
+                    quiet,
+                    stop_after_cycle,
+                    no_run_file,
+                },
             };
             match crashsim::solver::run(&world, &opts) {
                 Ok(()) => ExitCode::SUCCESS,

@@ -61,6 +61,10 @@ pub struct InterfaceSums {
     pub f_tangent: V3,
     /// Number of pairs in contact.
     pub pairs: u64,
+    /// Work taken by this interface's pairs since the start, −Σ F·(v_s − v_c)·Δt
+    /// with the velocities at the force evaluation (the run's contact energy
+    /// uses the step's mean velocities; this split per interface is approximate).
+    pub energy: f64,
 }
 
 /// This rank's contact limits on the time step (unscaled).
@@ -506,7 +510,10 @@ impl ContactSystem {
         let mut out: Vec<Contribution> = Vec::new();
         let mut best: Option<(f64, u64)> = None;
         for s in self.sums.iter_mut() {
-            *s = InterfaceSums::default();
+            *s = InterfaceSums {
+                energy: s.energy,
+                ..Default::default()
+            };
         }
         let cx = &self.cx;
         let cv = &self.cv;
@@ -627,6 +634,7 @@ impl ContactSystem {
                                         &p.segs[m as usize],
                                         &f,
                                         ibc,
+                                        geo::sub(vs, geo::interpolate(&f.shape, &vm)),
                                     );
                                     if f.dt_kin < step.map_or(f64::INFINITY, |b| b.0) {
                                         step = Some((f.dt_kin, it.id));
@@ -694,6 +702,7 @@ impl ContactSystem {
                                         &p.segs[m as usize],
                                         &f,
                                         ibc,
+                                        geo::sub(cv[s as usize], geo::interpolate(&f.shape, &vm)),
                                     );
                                 }
                                 (contribs, None, sums)
@@ -714,6 +723,7 @@ impl ContactSystem {
                         acc.f_tangent[k] += su.f_tangent[k];
                     }
                     acc.pairs += su.pairs;
+                    acc.energy += su.energy * dt;
                 }
             }
         }
@@ -735,6 +745,7 @@ fn emit(
     seg: &[u32; 4],
     f: &PairForce,
     ibc: u8,
+    vrel: V3,
 ) {
     let (hi, lo) = Contribution::key(iface, pass, sec_global, m, 4);
     out.push(Contribution {
@@ -765,6 +776,7 @@ fn emit(
         sums.f_tangent[k] += f.f_t[k];
     }
     sums.pairs += 1;
+    sums.energy -= geo::dot(f.fs, vrel);
 }
 
 /// The gap of pair (secondary k, segment m) (card eq. (8)–(10)).

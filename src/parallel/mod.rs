@@ -1,5 +1,7 @@
 //! The only module that touches MPI: start-up, scattering the subdomains,
-//! and the neighbour exchanges. Messages are bincode-encoded.
+//! the neighbour exchanges, the reductions, and the MPI-IO handle that
+//! parallel HDF5 (`crate::output`) opens its files with. Messages are
+//! bincode-encoded.
 
 use crate::domain::Subdomain;
 use mpi::topology::SimpleCommunicator;
@@ -164,6 +166,27 @@ impl World {
         let send = v.to_vec();
         self.comm
             .all_reduce_into(&send[..], v, SystemOperation::sum());
+    }
+
+    /// Largest value over ranks.
+    pub fn max_u64(&self, v: u64) -> u64 {
+        use mpi::collective::SystemOperation;
+        let mut out = 0u64;
+        self.comm
+            .all_reduce_into(&v, &mut out, SystemOperation::max());
+        out
+    }
+
+    /// A file-access property list for parallel HDF5: the file is opened by
+    /// every rank of this world together through MPI-IO (HDF5's `mpio`
+    /// driver on a duplicate of the world communicator). This is the one
+    /// place the output code gets at MPI.
+    pub fn hdf5_mpio_access(&self) -> Result<hdf5::plist::FileAccess, String> {
+        use mpi::raw::AsRaw;
+        hdf5::plist::FileAccess::build()
+            .mpio(self.comm.as_raw(), None)
+            .finish()
+            .map_err(|e| e.to_string())
     }
 
     /// Logical OR over ranks.

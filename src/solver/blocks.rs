@@ -27,6 +27,43 @@ pub struct ElemStep {
 /// Final per-element values for --final-elements: sxx, syy, sxy, eps_p, thick, eint, deleted.
 pub type ElemRow = (u32, [f64; 7]);
 
+/// Per-element values written to the HDF5 states and time histories
+/// (`crate::output`), one per local element in the block's (global) order.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct ElemOut {
+    /// Von Mises stress: shells the largest over the through-thickness
+    /// points (plane stress with the transverse shears), solids from the
+    /// full tensor, springs |force|.
+    pub von_mises: f64,
+    /// Effective plastic strain (shells: largest over the points).
+    pub eps_p: f64,
+    /// Current thickness (shells; 0 for the others).
+    pub thick: f64,
+    /// Internal energy with hourglass.
+    pub eint: f64,
+    pub deleted: bool,
+}
+
+/// Von Mises stress of a shell point [σxx σyy σxy σyz σzx] (σzz = 0).
+fn von_mises_shell(s: &[f64; 5]) -> f64 {
+    (s[0] * s[0] + s[1] * s[1] - s[0] * s[1] + 3.0 * (s[2] * s[2] + s[3] * s[3] + s[4] * s[4]))
+        .max(0.0)
+        .sqrt()
+}
+
+/// Von Mises stress of a 3-D tensor [σxx σyy σzz σxy σyz σzx].
+fn von_mises_3d(s: &[f64; 6]) -> f64 {
+    let d = (s[0] - s[1]).powi(2) + (s[1] - s[2]).powi(2) + (s[2] - s[0]).powi(2);
+    (0.5 * d + 3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]))
+        .max(0.0)
+        .sqrt()
+}
+
+/// Decodes one element's restart record, naming what did not fit.
+fn decode_state<T: serde::de::DeserializeOwned>(bytes: &[u8], what: &str) -> Result<T, String> {
+    bincode::deserialize(bytes).map_err(|e| format!("{what} element state does not decode: {e}"))
+}
+
 pub trait Block: Send + Sync {
     fn kind(&self) -> ElementKind;
     fn local(&self) -> &LocalElements;
@@ -54,6 +91,14 @@ pub trait Block: Send + Sync {
         (0.0, 0.0)
     }
     fn rows(&self) -> Vec<ElemRow>;
+    /// Values for the HDF5 states, one per local element (see `ElemOut`).
+    fn outputs(&self) -> Vec<ElemOut>;
+    /// Everything the element needs to continue after a restart (its state,
+    /// integration-point stresses and strains, deleted flag), as bytes; the
+    /// restart file keys it by the element's global index (`local().global[e]`).
+    fn export_state(&self, e: usize) -> Vec<u8>;
+    /// Puts back what `export_state` saved (possibly on another rank count).
+    fn import_state(&mut self, e: usize, bytes: &[u8]) -> Result<(), String>;
 }
 
 fn gather<const N: usize>(le: &LocalElements, e: usize, a: &[[f64; 3]]) -> [[f64; 3]; N] {
@@ -279,6 +324,52 @@ macro_rules! shell_block {
                     })
                     .collect()
             }
+            fn outputs(&self) -> Vec<ElemOut> {
+                (0..self.le.global.len())
+                    .map(|e| {
+                        let n = self.sections[self.section[e] as usize].n_ip.max(1);
+                        let pts = e * self.nip..e * self.nip + n;
+                        let st = &self.state[e];
+                        ElemOut {
+                            von_mises: self.sig[pts.clone()]
+                                .iter()
+                                .map(von_mises_shell)
+                                .fold(0.0, f64::max),
+                            eps_p: self.eps_p[pts].iter().fold(0.0f64, |a, &b| a.max(b)),
+                            thick: st.thick,
+                            eint: st.eint + hourglass_of(st),
+                            deleted: !self.alive[e],
+                        }
+                    })
+                    .collect()
+            }
+            fn export_state(&self, e: usize) -> Vec<u8> {
+                let n = self.sections[self.section[e] as usize].n_ip.max(1);
+                let pts = e * self.nip..e * self.nip + n;
+                bincode::serialize(&(
+                    &self.state[e],
+                    &self.sig[pts.clone()],
+                    &self.eps_p[pts],
+                    self.alive[e],
+                ))
+                .expect("element state serializes")
+            }
+            fn import_state(&mut self, e: usize, bytes: &[u8]) -> Result<(), String> {
+                let (st, sig, eps, alive): ($state, Vec<[f64; 5]>, Vec<f64>, bool) =
+                    decode_state(bytes, "shell")?;
+                let n = self.sections[self.section[e] as usize].n_ip.max(1);
+                if sig.len() != n || eps.len() != n {
+                    return Err(format!(
+                        "shell element state has {} integration points, the section has {n}",
+                        sig.len()
+                    ));
+                }
+                self.state[e] = st;
+                self.sig[e * self.nip..e * self.nip + n].copy_from_slice(&sig);
+                self.eps_p[e * self.nip..e * self.nip + n].copy_from_slice(&eps);
+                self.alive[e] = alive;
+                Ok(())
+            }
         }
     };
 }
@@ -462,6 +553,29 @@ macro_rules! solid_block {
                         )
                     })
                     .collect()
+            }
+            fn outputs(&self) -> Vec<ElemOut> {
+                self.state
+                    .iter()
+                    .zip(&self.alive)
+                    .map(|(s, &alive)| ElemOut {
+                        von_mises: von_mises_3d(&s.sig),
+                        eps_p: s.eps_p,
+                        thick: 0.0,
+                        eint: s.eint + hourglass_of(s),
+                        deleted: !alive,
+                    })
+                    .collect()
+            }
+            fn export_state(&self, e: usize) -> Vec<u8> {
+                bincode::serialize(&(&self.state[e], self.alive[e]))
+                    .expect("element state serializes")
+            }
+            fn import_state(&mut self, e: usize, bytes: &[u8]) -> Result<(), String> {
+                let (st, alive): ($state, bool) = decode_state(bytes, "solid")?;
+                self.state[e] = st;
+                self.alive[e] = alive;
+                Ok(())
             }
         }
     };
@@ -705,6 +819,28 @@ impl Block for SpringBlock {
                 )
             })
             .collect()
+    }
+    fn outputs(&self) -> Vec<ElemOut> {
+        self.state
+            .iter()
+            .zip(&self.alive)
+            .map(|(s, &alive)| ElemOut {
+                von_mises: s.force.abs(),
+                eps_p: 0.0,
+                thick: 0.0,
+                eint: s.eint,
+                deleted: !alive,
+            })
+            .collect()
+    }
+    fn export_state(&self, e: usize) -> Vec<u8> {
+        bincode::serialize(&(&self.state[e], self.alive[e])).expect("element state serializes")
+    }
+    fn import_state(&mut self, e: usize, bytes: &[u8]) -> Result<(), String> {
+        let (st, alive): (SpringState, bool) = decode_state(bytes, "spring")?;
+        self.state[e] = st;
+        self.alive[e] = alive;
+        Ok(())
     }
 }
 

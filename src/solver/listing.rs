@@ -61,6 +61,16 @@ impl Listing {
         };
         Ok(Listing { file })
     }
+    /// Appends to an existing listing (a restarted run goes on in its file).
+    pub fn append(path: &std::path::Path) -> std::io::Result<Listing> {
+        let f = std::fs::OpenOptions::new()
+            .create(true)
+            .append(true)
+            .open(path)?;
+        Ok(Listing {
+            file: Some(std::io::BufWriter::new(f)),
+        })
+    }
     /// Writes one line to stdout and the file, flushed at once: a run that is
     /// killed keeps every line printed before.
     pub fn line(&mut self, s: &str) {

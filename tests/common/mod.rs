@@ -72,3 +72,75 @@ pub fn mpirun(n: u32, args: &[&str]) -> Output {
         .output()
         .expect("mpirun runs (is openmpi-bin installed? run ci/setup)")
 }
+
+/// A Python 3 that has h5py and matplotlib (Debian's python3-h5py and
+/// python3-matplotlib, which ci/setup installs, live under /usr/bin/python3
+/// when another python3 comes first on PATH).
+pub fn python() -> PathBuf {
+    for p in ["python3", "/usr/bin/python3"] {
+        let ok = Command::new(p)
+            .args(["-c", "import h5py, matplotlib, numpy"])
+            .output()
+            .map(|o| o.status.success())
+            .unwrap_or(false);
+        if ok {
+            return PathBuf::from(p);
+        }
+    }
+    panic!("no python3 with h5py and matplotlib: run ci/setup (python3-h5py python3-matplotlib)");
+}
+
+/// Runs tests/py/SCRIPT with ARGS, asserting success; returns its stdout.
+pub fn python_check(script: &str, args: &[&std::ffi::OsStr]) -> String {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/py")
+        .join(script);
+    let out = Command::new(python())
+        .arg(&path)
+        .args(args)
+        .output()
+        .expect("python runs");
+    assert!(
+        out.status.success(),
+        "{script} failed:\n{}\n{}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8_lossy(&out.stdout).into_owned()
+}
+
+/// A fresh scratch directory under the system temp dir.
+pub fn scratch(tag: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("crashsim-{tag}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+/// `[mpirun -n NP] crashsim ARGS` with extra environment (passed on to every
+/// rank); `np` 0 runs crashsim alone.
+pub fn run_env(np: u32, args: &[&str], env: &[(&str, &str)]) -> Output {
+    let mut c;
+    if np == 0 {
+        c = Command::new(env!("CARGO_BIN_EXE_crashsim"));
+        c.args(args);
+    } else {
+        c = Command::new("mpirun");
+        c.env("OMPI_ALLOW_RUN_AS_ROOT", "1")
+            .env("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
+            .env("OMPI_MCA_btl_vader_single_copy_mechanism", "none")
+            .env("OMPI_MCA_hwloc_base_binding_policy", "none");
+        for (k, _) in env {
+            c.args(["-x", k]);
+        }
+        c.arg("-n").arg(np.to_string());
+        if np > 2 {
+            c.arg("--oversubscribe");
+        }
+        c.arg(env!("CARGO_BIN_EXE_crashsim")).args(args);
+    }
+    for (k, v) in env {
+        c.env(k, v);
+    }
+    c.output().expect("crashsim runs")
+}

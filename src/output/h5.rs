@@ -1,0 +1,263 @@
+//! Low-level parallel HDF5: which rows of a dataset a rank writes, and the
+//! collective (MPI-IO) writes and reads of those rows.
+//!
+//! Every distributed dataset is laid out in global order along its first
+//! dimension (global node index, global element index within its kind), so
+//! the file does not depend on the partition. A rank writes the rows it owns.
+//! Owned rows are not contiguous in global order: a rank's owned nodes come
+//! in runs (METIS parts are compact and the local numbering follows the
+//! global one), so a rank's file selection is the union of one hyperslab per
+//! run and its memory buffer is the rows packed in that order. One
+//! collective `H5Dwrite` per dataset then lets MPI-IO aggregate the pieces
+//! (two-phase I/O) into large contiguous file accesses. That is correct for
+//! any partition, needs no gather on rank 0 and no reordering communication,
+//! and costs one hyperslab per run (a few per thousand rows for compact parts);
+//! point selections would cost one coordinate per row and are not aggregated
+//! by every HDF5 1.10 release.
+//!
+//! Replicated data (tables, time-history rows, which every rank holds) are
+//! written by rank 0 with every other rank taking part with an empty
+//! selection, as collective I/O requires.
+//!
+//! The high-level `hdf5` crate creates the files, groups, datasets and
+//! attributes (collective metadata operations: every rank calls them alike);
+//! the raw transfer calls below only add the collective transfer property and
+//! the run selections it does not offer.
+
+use hdf5::{Dataset, Datatype, H5Type};
+use hdf5_sys::h5::hsize_t;
+use hdf5_sys::h5i::hid_t;
+use hdf5_sys::{h5d, h5p, h5s};
+
+/// Rows of a dataset's first dimension that this rank writes or reads:
+/// ascending, as (first row, number of rows) runs.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Rows {
+    runs: Vec<(u64, u64)>,
+    count: usize,
+}
+
+impl Rows {
+    /// Rows from ascending global indices (repeats are not allowed).
+    pub fn from_sorted(idx: impl IntoIterator<Item = u64>) -> Rows {
+        let mut runs: Vec<(u64, u64)> = Vec::new();
+        let mut count = 0;
+        for i in idx {
+            count += 1;
+            match runs.last_mut() {
+                Some((s, n)) if *s + *n == i => *n += 1,
+                Some((s, n)) => {
+                    debug_assert!(i > *s + *n, "rows must be ascending");
+                    runs.push((i, 1));
+                }
+                None => runs.push((i, 1)),
+            }
+        }
+        Rows { runs, count }
+    }
+    /// Rows `first..first+n` (empty when `n` is 0).
+    pub fn range(first: u64, n: u64) -> Rows {
+        if n == 0 {
+            return Rows::default();
+        }
+        Rows {
+            runs: vec![(first, n)],
+            count: n as usize,
+        }
+    }
+    /// All `n` rows on rank 0, none elsewhere: replicated data.
+    pub fn root(n: usize, rank: u32) -> Rows {
+        if rank == 0 {
+            Rows::range(0, n as u64)
+        } else {
+            Rows::default()
+        }
+    }
+    pub fn len(&self) -> usize {
+        self.count
+    }
+    pub fn is_empty(&self) -> bool {
+        self.count == 0
+    }
+    /// Number of contiguous runs (one hyperslab each).
+    pub fn n_runs(&self) -> usize {
+        self.runs.len()
+    }
+}
+
+/// A collective MPI-IO transfer property list (closed on drop).
+pub struct Xfer(hid_t);
+
+impl Xfer {
+    pub fn collective() -> Result<Xfer, String> {
+        unsafe {
+            let id = h5p::H5Pcreate(*hdf5_sys::h5p::H5P_CLS_DATASET_XFER);
+            if id < 0 {
+                return Err("HDF5: cannot create a transfer property list".into());
+            }
+            if h5p::H5Pset_dxpl_mpio(id, h5p::H5FD_mpio_xfer_t::H5FD_MPIO_COLLECTIVE) < 0 {
+                hdf5_sys::h5p::H5Pclose(id);
+                return Err("HDF5: cannot set collective MPI-IO transfers".into());
+            }
+            Ok(Xfer(id))
+        }
+    }
+}
+
+impl Drop for Xfer {
+    fn drop(&mut self) {
+        unsafe {
+            h5p::H5Pclose(self.0);
+        }
+    }
+}
+
+/// An owned dataspace id (closed on drop).
+struct Space(hid_t);
+impl Drop for Space {
+    fn drop(&mut self) {
+        unsafe {
+            h5s::H5Sclose(self.0);
+        }
+    }
+}
+
+/// The file dataspace of `ds` with `rows` selected (all trailing dimensions),
+/// and the number of values one row holds.
+fn file_selection(ds: &Dataset, rows: &Rows) -> Result<(Space, usize), String> {
+    let space = Space(unsafe { h5d::H5Dget_space(ds.id()) });
+    if space.0 < 0 {
+        return Err("HDF5: cannot get a dataset's dataspace".into());
+    }
+    let shape = ds.shape();
+    if shape.is_empty() {
+        return Err("HDF5: row writes need a dataset with at least one dimension".into());
+    }
+    let per_row: usize = shape[1..].iter().product();
+    let nd = shape.len();
+    unsafe {
+        if rows.runs.is_empty() {
+            h5s::H5Sselect_none(space.0);
+        } else {
+            let mut start = vec![0 as hsize_t; nd];
+            let mut count: Vec<hsize_t> = shape.iter().map(|&d| d as hsize_t).collect();
+            for (i, &(s, n)) in rows.runs.iter().enumerate() {
+                if s + n > shape[0] as u64 {
+                    return Err(format!(
+                        "HDF5: rows {s}..{} beyond the dataset's {} rows",
+                        s + n,
+                        shape[0]
+                    ));
+                }
+                start[0] = s;
+                count[0] = n;
+                let op = if i == 0 {
+                    h5s::H5S_seloper_t::H5S_SELECT_SET
+                } else {
+                    h5s::H5S_seloper_t::H5S_SELECT_OR
+                };
+                if h5s::H5Sselect_hyperslab(
+                    space.0,
+                    op,
+                    start.as_ptr(),
+                    std::ptr::null(),
+                    count.as_ptr(),
+                    std::ptr::null(),
+                ) < 0
+                {
+                    return Err("HDF5: cannot select the rows".into());
+                }
+            }
+        }
+    }
+    Ok((space, per_row))
+}
+
+/// A 1-D memory dataspace of `n` values (all selected, or none when `n` is 0).
+fn memory_space(n: usize) -> Result<Space, String> {
+    let dims = [n as hsize_t];
+    let space = Space(unsafe { h5s::H5Screate_simple(1, dims.as_ptr(), std::ptr::null()) });
+    if space.0 < 0 {
+        return Err("HDF5: cannot create a memory dataspace".into());
+    }
+    if n == 0 {
+        unsafe {
+            h5s::H5Sselect_none(space.0);
+        }
+    }
+    Ok(space)
+}
+
+/// Writes this rank's `rows` of `ds` collectively (every rank calls it, with
+/// its own rows, possibly none). `data` holds the rows packed in `rows`
+/// order, all trailing dimensions of each row.
+pub fn write_rows<T: H5Type>(
+    ds: &Dataset,
+    rows: &Rows,
+    data: &[T],
+    xfer: &Xfer,
+) -> Result<(), String> {
+    let (fspace, per_row) = file_selection(ds, rows)?;
+    if data.len() != rows.len() * per_row {
+        return Err(format!(
+            "HDF5: {} values for {} rows of {per_row}",
+            data.len(),
+            rows.len()
+        ));
+    }
+    let mspace = memory_space(data.len())?;
+    let dtype = Datatype::from_type::<T>().map_err(|e| e.to_string())?;
+    let rc = unsafe {
+        h5d::H5Dwrite(
+            ds.id(),
+            dtype.id(),
+            mspace.0,
+            fspace.0,
+            xfer.0,
+            data.as_ptr().cast(),
+        )
+    };
+    if rc < 0 {
+        return Err(format!("HDF5: writing {} failed", ds.name()));
+    }
+    Ok(())
+}
+
+/// Reads this rank's `rows` of `ds` collectively, packed in `rows` order.
+pub fn read_rows<T: H5Type + Default + Clone>(
+    ds: &Dataset,
+    rows: &Rows,
+    xfer: &Xfer,
+) -> Result<Vec<T>, String> {
+    let (fspace, per_row) = file_selection(ds, rows)?;
+    let mut data = vec![T::default(); rows.len() * per_row];
+    let mspace = memory_space(data.len())?;
+    let dtype = Datatype::from_type::<T>().map_err(|e| e.to_string())?;
+    let rc = unsafe {
+        h5d::H5Dread(
+            ds.id(),
+            dtype.id(),
+            mspace.0,
+            fspace.0,
+            xfer.0,
+            data.as_mut_ptr().cast(),
+        )
+    };
+    if rc < 0 {
+        return Err(format!("HDF5: reading {} failed", ds.name()));
+    }
+    Ok(data)
+}
+
+/// Fixed-size UTF-8 string for tables (parallel HDF5 cannot write
+/// variable-length strings collectively); longer text is cut at a character
+/// boundary.
+pub type Text = hdf5::types::FixedUnicode<128>;
+
+pub fn text(s: &str) -> Text {
+    let mut end = s.len().min(128);
+    while !s.is_char_boundary(end) {
+        end -= 1;
+    }
+    s[..end].parse().unwrap_or_default()
+}

@@ -1,0 +1,286 @@
+//! Time histories (`/th` in the run file), sampled every /TFILE period.
+//!
+//! One row per sample, the same on every rank (partial sums are added with
+//! one all-reduce). Each table is one extendible dataset whose last
+//! dimension is named by its `columns` attribute (comma-separated), so that
+//! appending rows costs a few collective operations, not one per quantity:
+//!
+//! - `/th/time [T]`, `/th/cycle [T]`;
+//! - `/th/global [T, 10]`: the time step, the listing's columns — internal
+//!   energy (with hourglass), translational and rotational kinetic energy,
+//!   external work and the energy error in % (as the listing computes
+//!   them) — and the hourglass energy, plastic work, rigid-wall work and
+//!   contact energy (`GLOBAL_COLUMNS`);
+//! - `/th/parts/values [T, P, 3]` (ids in `/th/parts/id`): per part, its
+//!   elements' internal energy; kinetic energy Σ_e Σ_corners ½·(m_e/n)·|v|²
+//!   and mass Σ m_e over its elements not deleted, with the element mass
+//!   m_e = ρ·t·A (shells), ρ·V (solids), the property mass (springs) taken
+//!   on the initial geometry, as the starter's part masses;
+//! - `/th/interfaces/values [T, I, 7]`: normal and tangential force
+//!   resultants (x, y, z) and contact energy, as the contact code passes
+//!   them in (`InterfaceSample`; none until contact lands);
+//! - `/th/rigid_walls/values [T, W, 3]`: the force the nodes put on each
+//!   wall in the sampled cycle;
+//! - `/th/nodes/values [T, M, 9]` for the /TH/NODE nodes: displacement
+//!   u = x − x0, velocity at the half step, acceleration (f_ext − f_int)/m
+//!   at the sample (0 on a fixed degree of freedom).
+//!
+//! Rows are kept in memory and appended to the file at each state (and at
+//! the end), so the file is written a few times per run, not at every sample.
+
+use super::{Context, LoopState};
+use crate::deck::{ElementKind, PropertyKind};
+use crate::model::geometry::{hexa_volume, quad_area, tetra_volume, triangle_area};
+use crate::solver::blocks::Block;
+use serde::{Deserialize, Serialize};
+
+/// Columns of `/th/global`.
+pub const GLOBAL_COLUMNS: [&str; 10] = [
+    "time_step",
+    "internal_energy",
+    "kinetic_energy",
+    "rotational_kinetic_energy",
+    "external_work",
+    "energy_error_percent",
+    "hourglass_energy",
+    "plastic_work",
+    "rigid_wall_work",
+    "contact_energy",
+];
+/// Columns of `/th/parts/values`.
+pub const PART_COLUMNS: [&str; 3] = ["internal_energy", "kinetic_energy", "mass"];
+/// Columns of `/th/interfaces/values`.
+pub const INTERFACE_COLUMNS: [&str; 7] = [
+    "normal_force_x",
+    "normal_force_y",
+    "normal_force_z",
+    "tangential_force_x",
+    "tangential_force_y",
+    "tangential_force_z",
+    "contact_energy",
+];
+/// Columns of `/th/rigid_walls/values`.
+pub const WALL_COLUMNS: [&str; 3] = ["force_x", "force_y", "force_z"];
+/// Columns of `/th/nodes/values`.
+pub const NODE_COLUMNS: [&str; 9] = [
+    "displacement_x",
+    "displacement_y",
+    "displacement_z",
+    "velocity_x",
+    "velocity_y",
+    "velocity_z",
+    "acceleration_x",
+    "acceleration_y",
+    "acceleration_z",
+];
+
+/// Sizes of the per-object histories.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ThLayout {
+    pub parts: usize,
+    pub interfaces: usize,
+    pub walls: usize,
+    pub nodes: usize,
+}
+
+impl ThLayout {
+    /// Values of one row besides the cycle: time, the globals, then each
+    /// per-object table (object-major) in the order of the file.
+    pub fn width(&self) -> usize {
+        1 + GLOBAL_COLUMNS.len()
+            + 3 * self.parts
+            + 7 * self.interfaces
+            + 3 * self.walls
+            + 9 * self.nodes
+    }
+}
+
+/// One sample: the cycle, and the values in the order `ThLayout::width` says.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ThRow {
+    pub cycle: u64,
+    pub values: Vec<f64>,
+}
+
+/// What the contact code reports per interface at a sample, as this rank's
+/// partial sums (they are added over ranks): normal and tangential force
+/// resultants and the contact energy.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct InterfaceSample {
+    pub normal: [f64; 3],
+    pub tangential: [f64; 3],
+    pub energy: f64,
+}
+
+/// The sampler: what it needs precomputed, and its schedule.
+pub struct History {
+    pub layout: ThLayout,
+    /// /TFILE period.
+    pub period: f64,
+    /// Time of the next sample.
+    pub next: f64,
+    /// Element masses per block, per local element.
+    elem_mass: Vec<Vec<f64>>,
+    /// (position among the /TH/NODE nodes, local node) of the ones this rank owns.
+    th_local: Vec<(usize, usize)>,
+}
+
+/// Mass of each of a block's elements on the initial geometry (see the module doc).
+fn element_masses(ctx: &Context, b: &dyn Block) -> Vec<f64> {
+    let le = b.local();
+    let nn = b.kind().nodes();
+    let x0 = &ctx.sd.x;
+    let g = ctx.g;
+    (0..le.global.len())
+        .map(|e| {
+            let n = &le.nodes[nn * e..nn * (e + 1)];
+            let p = |k: usize| x0[n[k] as usize];
+            let part = &g.parts[le.part[e] as usize];
+            let rho = part.mat.map(|m| g.materials[m as usize].rho).unwrap_or(0.0);
+            match b.kind() {
+                ElementKind::Shell4 => rho * le.thick[e] * quad_area([p(0), p(1), p(2), p(3)]),
+                ElementKind::Shell3 => rho * le.thick[e] * triangle_area([p(0), p(1), p(2)]),
+                ElementKind::Brick8 => rho * hexa_volume(std::array::from_fn(p)),
+                ElementKind::Tetra4 => rho * tetra_volume([p(0), p(1), p(2), p(3)]),
+                _ => match part.prop.map(|q| &g.properties[q as usize].card.kind) {
+                    Some(PropertyKind::Spring(s)) => s.mass,
+                    Some(PropertyKind::SpringBeam(s)) => s.mass,
+                    _ => 0.0,
+                },
+            }
+        })
+        .collect()
+}
+
+impl History {
+    pub fn new(ctx: &Context, blocks: &[Box<dyn Block>], interfaces: usize) -> History {
+        let g = ctx.g;
+        let sd = ctx.sd;
+        let th_local = g
+            .th_nodes
+            .iter()
+            .enumerate()
+            .filter_map(|(i, gn)| {
+                let l = sd.node_global.binary_search(gn).ok()?;
+                sd.owns(l as u32).then_some((i, l))
+            })
+            .collect();
+        let engine = &g.engine;
+        let tstop = engine.run.as_ref().map(|r| r.tstop).unwrap_or(0.0);
+        // No /TFILE: sample as often as the states are written, else 100 times a run.
+        let period = engine
+            .th_period
+            .filter(|p| *p > 0.0)
+            .or(engine.anim_period.filter(|p| *p > 0.0))
+            .unwrap_or(tstop / 100.0)
+            .max(f64::MIN_POSITIVE);
+        History {
+            layout: ThLayout {
+                parts: g.parts.len(),
+                interfaces,
+                walls: g.rigid_walls.len(),
+                nodes: g.th_nodes.len(),
+            },
+            period,
+            next: 0.0,
+            elem_mass: blocks
+                .iter()
+                .map(|b| element_masses(ctx, b.as_ref()))
+                .collect(),
+            th_local,
+        }
+    }
+
+    /// Whether a sample is due at time `t`.
+    pub fn due(&self, t: f64) -> bool {
+        t >= self.next
+    }
+
+    /// Takes a sample (collective: every rank calls it at the same cycle) and
+    /// schedules the next one.
+    pub fn sample(&mut self, ctx: &Context, s: &LoopState) -> ThRow {
+        let l = self.layout;
+        let (np, ni, nw, nm) = (l.parts, l.interfaces, l.walls, l.nodes);
+        // Partial sums: [ie, hourglass, plastic, w_ext, wall work, then the
+        // tables as the file lays them out: parts [P][3], interfaces [I][7],
+        // walls [W][3], nodes [M][9]].
+        let o_parts = 5;
+        let o_if = o_parts + 3 * np;
+        let o_wall = o_if + 7 * ni;
+        let o_node = o_wall + 3 * nw;
+        let mut buf = vec![0.0f64; o_node + 9 * nm];
+        buf[0] = s.blocks.iter().map(|b| b.energy()).sum::<f64>();
+        for b in s.blocks.iter() {
+            let (hg, pl) = b.energy_parts();
+            buf[1] += hg;
+            buf[2] += pl;
+        }
+        buf[3] = *s.w_ext;
+        buf[4] = *s.wall_work;
+        for (bi, b) in s.blocks.iter().enumerate() {
+            let le = b.local();
+            let nn = b.kind().nodes();
+            for (e, out) in b.outputs().iter().enumerate() {
+                let p = le.part[e] as usize;
+                buf[o_parts + 3 * p] += out.eint;
+                if out.deleted {
+                    continue;
+                }
+                let me = self.elem_mass[bi][e];
+                buf[o_parts + 3 * p + 2] += me;
+                let mut v2 = 0.0;
+                for &n in &le.nodes[nn * e..nn * (e + 1)] {
+                    if n != crate::model::NO_NODE {
+                        let v = s.v[n as usize];
+                        v2 += v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+                    }
+                }
+                buf[o_parts + 3 * p + 1] += 0.5 * me / nn as f64 * v2;
+            }
+        }
+        for (i, smp) in s.interfaces.iter().enumerate().take(ni) {
+            let o = o_if + 7 * i;
+            buf[o..o + 3].copy_from_slice(&smp.normal);
+            buf[o + 3..o + 6].copy_from_slice(&smp.tangential);
+            buf[o + 6] = smp.energy;
+        }
+        for (w, f) in s.wall_force.iter().enumerate().take(nw) {
+            buf[o_wall + 3 * w..o_wall + 3 * w + 3].copy_from_slice(f);
+        }
+        let mass = &ctx.sd.mass;
+        for &(i, l) in &self.th_local {
+            let o = o_node + 9 * i;
+            for k in 0..3 {
+                buf[o + k] = s.x[l][k] - ctx.sd.x[l][k];
+                buf[o + 3 + k] = s.v[l][k];
+                buf[o + 6 + k] = if mass[l] > 0.0 && !s.fixed[l][k] {
+                    (s.fext[l][k] - s.fint[l][k]) / mass[l]
+                } else {
+                    0.0
+                };
+            }
+        }
+        ctx.world.sum_f64(&mut buf);
+        let (ke, ker) = (s.kinetic)(s.v, s.vr, s.bodies);
+        let (ie, w) = (buf[0], buf[3]);
+        // The listing's energy error.
+        let err = if s.e0 + w != 0.0 {
+            100.0 * (ie + ke + ker - s.e0 - w) / (s.e0 + w).abs()
+        } else {
+            0.0
+        };
+        let contact: f64 = (0..ni).map(|i| buf[o_if + 7 * i + 6]).sum();
+        let mut values = Vec::with_capacity(l.width());
+        values.extend_from_slice(&[*s.t, *s.dt]);
+        values.extend_from_slice(&[ie, ke, ker, w, err, buf[1], buf[2], buf[4], contact]);
+        values.extend_from_slice(&buf[o_parts..o_node + 9 * nm]);
+        debug_assert_eq!(values.len(), l.width());
+        while self.next <= *s.t {
+            self.next += self.period;
+        }
+        ThRow {
+            cycle: *s.cycle,
+            values,
+        }
+    }
+}

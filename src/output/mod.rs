@@ -1,0 +1,363 @@
+//! Run outputs besides the listing: the parallel HDF5 run file with its
+//! XDMF description, time histories, restart files, the progress line, and
+//! the `info` and `plot` commands that read the run file back.
+//!
+//! The solver loop (`solver::run`) calls three hooks and keeps its own
+//! variables; the hooks see them through `LoopState`, a struct of
+//! references built in place:
+//!
+//! - `Output::start` before the first cycle: restores a restart file
+//!   (`--restart`) into the loop state, creates (or, after a restart,
+//!   reopens) `DIR/NAME.h5`, writes `/mesh`, the first state and sample;
+//! - `Output::after_cycle` at the end of every cycle: time-history samples
+//!   every /TFILE period, a state every /ANIM/DT, a restart file every
+//!   /RFILE cycles, the progress line, and stop requests (SIGTERM/SIGINT,
+//!   `--stop-after-cycle`) agreed over ranks: it returns the listing's
+//!   message when the run stops there, the restart file written;
+//! - `Output::finish` after the loop: the last state, the last rows, the
+//!   XDMF file.
+//!
+//! Files: `runfile` (the HDF5 layout), `h5` (collective row I/O),
+//! `history` (time histories), `xdmf`, `restart` (named sections), `stop`
+//! (signals), `progress`, `info` and `plot` (the commands).
+//!
+//! Contact (later) passes its per-node contact forces and per-interface
+//! samples through `LoopState::contact_force` and `LoopState::interfaces`,
+//! its interface table through `Context::interfaces`, and adds its restart
+//! state as new named sections (see `restart`).
+
+pub mod h5;
+pub mod history;
+pub mod info;
+pub mod plot;
+pub mod progress;
+pub mod restart;
+pub mod runfile;
+pub mod stop;
+pub mod xdmf;
+
+pub use history::InterfaceSample;
+
+use crate::domain::Subdomain;
+use crate::kinematics::rigid_body::RigidBodyState;
+use crate::parallel::World;
+use crate::solver::blocks::Block;
+use crate::solver::global::GlobalData;
+use crate::solver::RunError;
+use history::{History, ThRow};
+use restart::OutputCounters;
+use runfile::RunFile;
+use std::path::{Path, PathBuf};
+
+/// The `run` options that concern outputs.
+#[derive(Clone, Debug, Default)]
+pub struct OutputOptions {
+    /// Continue from this restart file.
+    pub restart: Option<PathBuf>,
+    /// No progress line.
+    pub quiet: bool,
+    /// Write the restart file after this cycle and stop (tests, hidden flag).
+    pub stop_after_cycle: Option<u64>,
+    /// No HDF5/XDMF run file (hidden: to measure what output costs).
+    pub no_run_file: bool,
+}
+
+/// An interface as the tables of the run file list it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct InterfaceInfo {
+    pub id: u64,
+    pub type_number: u32,
+    pub title: String,
+}
+
+/// What the outputs need besides the loop state.
+pub struct Context<'a> {
+    pub world: &'a World,
+    pub g: &'a GlobalData,
+    pub sd: &'a Subdomain,
+    pub out_dir: &'a Path,
+    pub opts: &'a OutputOptions,
+    pub interfaces: &'a [InterfaceInfo],
+}
+
+/// Kinetic energies (translational, rotational) the listing's way, from
+/// the velocities and rigid bodies (collective).
+pub type KineticFn<'a> = dyn Fn(&[[f64; 3]], &[[f64; 3]], &[RigidBodyState]) -> (f64, f64) + 'a;
+
+/// The explicit loop's state, by reference: what the restart file saves and
+/// restores, and what states and histories are made of. Node arrays are
+/// local (the subdomain's numbering), `fint`/`fext` force and moment.
+pub struct LoopState<'a> {
+    pub t: &'a mut f64,
+    pub cycle: &'a mut u64,
+    pub dt: &'a mut f64,
+    pub dt_prev: &'a mut f64,
+    /// What set the time step and its id (the listing's ELEMENT column).
+    pub step_what: &'a mut &'static str,
+    pub step_id: &'a mut u64,
+    pub x: &'a mut [[f64; 3]],
+    pub v: &'a mut [[f64; 3]],
+    pub vr: &'a mut [[f64; 3]],
+    pub fint: &'a mut [[f64; 6]],
+    pub fext: &'a mut [[f64; 6]],
+    pub blocks: &'a mut [Box<dyn Block>],
+    pub bodies: &'a mut [RigidBodyState],
+    pub wall_p: &'a mut [[f64; 3]],
+    pub wall_v: &'a mut [[f64; 3]],
+    /// Per wall, per secondary node held here (the wall's list order).
+    pub tied: &'a mut [Vec<bool>],
+    /// This rank's partial sums of the external and rigid-wall work.
+    pub w_ext: &'a mut f64,
+    pub wall_work: &'a mut f64,
+    /// The `--history` CSV schedule and samples.
+    pub next_th: &'a mut f64,
+    pub history: &'a mut Vec<(f64, Vec<[f64; 3]>)>,
+    /// Inputs (not saved): fixed degrees of freedom, the kinetic energy at
+    /// t = 0 (energy error), this rank's partial wall forces of the last
+    /// cycle, contact forces per local node and this rank's interface
+    /// samples (zeros / empty until contact lands).
+    pub fixed: &'a [[bool; 6]],
+    pub e0: f64,
+    pub wall_force: &'a [[f64; 3]],
+    pub contact_force: &'a [[f64; 3]],
+    pub interfaces: &'a [InterfaceSample],
+    pub kinetic: &'a KineticFn<'a>,
+}
+
+/// The outputs of one run, on every rank.
+pub struct Output {
+    rank: u32,
+    file: Option<RunFile>,
+    h5_path: PathBuf,
+    xdmf_path: PathBuf,
+    rst_path: PathBuf,
+    history: History,
+    pending: Vec<ThRow>,
+    last_th_cycle: Option<u64>,
+    states: Vec<(f64, u64)>,
+    next_anim: f64,
+    anim_period: Option<f64>,
+    rfile_cycles: Option<u64>,
+    stop_after: Option<u64>,
+    hooks: stop::TestHooks,
+    progress: progress::Progress,
+    xdmf: xdmf::XdmfModel,
+    /// Wall time spent in the hooks (set-up, samples, states, restart files).
+    spent: std::time::Duration,
+}
+
+fn input(e: String) -> RunError {
+    RunError::Input(e)
+}
+
+impl Output {
+    /// Before the first cycle (collective); see the module doc.
+    pub fn start(ctx: &Context, s: &mut LoopState) -> Result<Output, RunError> {
+        let began = std::time::Instant::now();
+        stop::install();
+        let g = ctx.g;
+        let world = ctx.world;
+        let counters = match &ctx.opts.restart {
+            Some(p) => Some(restart::restore(ctx, p, s).map_err(input)?),
+            None => None,
+        };
+        let engine = &g.engine;
+        let tstop = engine.run.as_ref().map(|r| r.tstop).unwrap_or(0.0);
+        let mut history = History::new(ctx, s.blocks, ctx.interfaces.len());
+        let h5_path = ctx.out_dir.join(format!("{}.h5", g.name));
+        let xdmf_path = ctx.out_dir.join(format!("{}.xdmf", g.name));
+        let rst_path = ctx.out_dir.join(format!("{}_rst.h5", g.name));
+        let kinds = runfile::kind_rows(ctx, s.blocks)
+            .iter()
+            .map(|k| (k.kind, k.total))
+            .collect();
+        let mut out = Output {
+            rank: world.rank(),
+            file: None,
+            h5_path: h5_path.clone(),
+            xdmf_path,
+            rst_path,
+            history: History::new(ctx, &[], 0),
+            pending: Vec::new(),
+            last_th_cycle: None,
+            states: Vec::new(),
+            next_anim: engine.anim_start,
+            anim_period: engine.anim_period.filter(|p| *p > 0.0),
+            rfile_cycles: engine.rfile_cycles.filter(|&n| n > 0).map(|n| n as u64),
+            stop_after: ctx.opts.stop_after_cycle,
+            hooks: stop::TestHooks::from_env(),
+            progress: progress::Progress::new(world.rank(), ctx.opts.quiet, *s.t, *s.cycle, tstop),
+            xdmf: xdmf::XdmfModel {
+                name: g.name.clone(),
+                h5_name: format!("{}.h5", g.name),
+                n_nodes: g.node_ids.len(),
+                kinds,
+            },
+            spent: std::time::Duration::ZERO,
+        };
+        if !ctx.opts.no_run_file {
+            // Continue the run file of the run being restarted when it is there.
+            let here = h5_path.is_file();
+            let exists: bool = world
+                .broadcast(if world.rank() == 0 { Some(&here) } else { None })
+                .map_err(input)?;
+            out.file = Some(match &counters {
+                Some(c) if exists => {
+                    out.states = c.states.clone();
+                    out.next_anim = c.next_anim;
+                    history.next = c.next_th;
+                    RunFile::reopen(
+                        ctx,
+                        &h5_path,
+                        s.blocks,
+                        history.layout,
+                        c.states.len(),
+                        c.th_rows,
+                    )
+                    .map_err(input)?
+                }
+                _ => {
+                    if let Some(c) = &counters {
+                        out.next_anim = c.next_anim;
+                        history.next = c.next_th;
+                    }
+                    RunFile::create(ctx, &h5_path, s.blocks, history.layout).map_err(input)?
+                }
+            });
+        } else if let Some(c) = &counters {
+            out.next_anim = c.next_anim;
+            history.next = c.next_th;
+        }
+        out.history = history;
+        if counters.is_none() {
+            out.outputs(ctx, s, false)?;
+        }
+        out.spent += began.elapsed();
+        Ok(out)
+    }
+
+    /// Samples and states that are due (or a state anyway with `force`).
+    fn outputs(&mut self, ctx: &Context, s: &LoopState, force: bool) -> Result<(), RunError> {
+        if self.file.is_none() {
+            return Ok(());
+        }
+        let t = *s.t;
+        if self.history.due(t) || (force && self.last_th_cycle != Some(*s.cycle)) {
+            let row = self.history.sample(ctx, s);
+            self.last_th_cycle = Some(row.cycle);
+            self.pending.push(row);
+        }
+        let anim_due = self.anim_period.is_some() && t >= self.next_anim;
+        let written = self.states.last().map(|st| st.1) == Some(*s.cycle);
+        if (anim_due || force) && !written {
+            self.write_state(ctx, s)?;
+        }
+        if let Some(p) = self.anim_period {
+            while self.next_anim <= t {
+                self.next_anim += p;
+            }
+        }
+        Ok(())
+    }
+
+    fn write_state(&mut self, ctx: &Context, s: &LoopState) -> Result<(), RunError> {
+        let Some(f) = &mut self.file else {
+            return Ok(());
+        };
+        f.append_th(&self.pending).map_err(input)?;
+        self.pending.clear();
+        f.write_state(ctx, self.states.len(), s, s.contact_force)
+            .map_err(input)?;
+        self.states.push((*s.t, *s.cycle));
+        if self.rank == 0 {
+            let list: Vec<(usize, f64)> = self.states.iter().map(|st| st.0).enumerate().collect();
+            xdmf::write(&self.xdmf_path, &self.xdmf, &list).map_err(input)?;
+        }
+        Ok(())
+    }
+
+    /// Puts the pending rows in the file and writes the restart file.
+    fn save_restart(&mut self, ctx: &Context, s: &LoopState) -> Result<(), RunError> {
+        if let Some(f) = &mut self.file {
+            f.append_th(&self.pending).map_err(input)?;
+            self.pending.clear();
+            f.flush().map_err(input)?;
+        }
+        let counters = OutputCounters {
+            states: self.states.clone(),
+            th_rows: self.file.as_ref().map(|f| f.th_rows).unwrap_or(0),
+            next_th: self.history.next,
+            next_anim: self.next_anim,
+        };
+        restart::save(ctx, &self.rst_path, s, &counters).map_err(input)
+    }
+
+    /// At the end of every cycle (collective). `Some(message)` when the run
+    /// stops here: the restart file is written, the message is the listing's.
+    pub fn after_cycle(
+        &mut self,
+        ctx: &Context,
+        s: &mut LoopState,
+    ) -> Result<Option<String>, RunError> {
+        let began = std::time::Instant::now();
+        let r = self.after_cycle_inner(ctx, s);
+        self.spent += began.elapsed();
+        r
+    }
+
+    fn after_cycle_inner(
+        &mut self,
+        ctx: &Context,
+        s: &mut LoopState,
+    ) -> Result<Option<String>, RunError> {
+        let cycle = *s.cycle;
+        self.hooks.fire(self.rank, cycle);
+        self.outputs(ctx, s, false)?;
+        let signal = stop::requested();
+        let stop_here = self.stop_after == Some(cycle);
+        let any_signal = ctx.world.any(signal.is_some());
+        if stop_here || any_signal {
+            self.save_restart(ctx, s)?;
+            let why = if any_signal {
+                "on a stop signal (SIGTERM/SIGINT)"
+            } else {
+                "as --stop-after-cycle asks"
+            };
+            return Ok(Some(format!(
+                "     STOPPED AT CYCLE {cycle} {why}: restart with --restart {}",
+                self.rst_path.display()
+            )));
+        }
+        if self.rfile_cycles.is_some_and(|n| cycle % n == 0) {
+            self.save_restart(ctx, s)?;
+        }
+        self.progress.update(*s.t, cycle, *s.dt);
+        Ok(None)
+    }
+
+    /// After the loop (collective, also after a stop or an error): the last
+    /// state and samples, the XDMF file; closes the run file.
+    pub fn finish(&mut self, ctx: &Context, s: &mut LoopState) -> Result<(), RunError> {
+        let began = std::time::Instant::now();
+        self.progress.finish();
+        self.outputs(ctx, s, true)?;
+        if let Some(f) = &mut self.file {
+            f.append_th(&self.pending).map_err(input)?;
+            self.pending.clear();
+            f.flush().map_err(input)?;
+        }
+        self.file = None;
+        self.spent += began.elapsed();
+        Ok(())
+    }
+
+    /// Wall time spent in the output hooks so far, in seconds (this rank).
+    pub fn seconds(&self) -> f64 {
+        self.spent.as_secs_f64()
+    }
+
+    /// Path of the run file.
+    pub fn h5_path(&self) -> &Path {
+        &self.h5_path
+    }
+}

@@ -1,0 +1,559 @@
+//! The run's HDF5 file `DIR/NAME.h5`, written by every rank together through
+//! MPI-IO (see `h5` for how rows are selected).
+//!
+//! ```text
+//! /                      attributes: deck, title, units_mass, units_length, units_time,
+//!                        crashsim_version, ranks, format ("crashsim-run 1")
+//! /mesh/node_ids         [N]      u64   node ids, global (id) order
+//! /mesh/coordinates      [N,3]    f64   initial coordinates
+//! /mesh/<kind>/          one group per element kind present (shell4, shell3, brick8, tetra4, spring)
+//!     connectivity       [E,n]    i64   global node indices (rows of the node arrays; -1 = absent)
+//!     ids                [E]      u64   element ids
+//!     part_ids           [E]      u64
+//! /mesh/parts/           id, title, material_id, property_id          [P]
+//! /mesh/materials/       id, title, law, density                      [M]
+//! /mesh/interfaces/      id, type, title                              [I]
+//! /mesh/rigid_walls/     id, title                                    [W]
+//! /states/NNNN/          attributes time, cycle
+//!     coordinates, displacement, velocity, contact_force   [N,3] f64
+//!     <kind>/von_mises, plastic_strain, thickness (shells) [E] f64, deleted [E] u8
+//! /th/                   time histories: time, cycle, global [T,10], parts/values [T,P,3],
+//!                        interfaces/values [T,I,7], rigid_walls/values [T,W,3],
+//!                        nodes/values [T,M,9] (see `history`; a `columns` attribute names the last axis)
+//! ```
+//!
+//! Rows are in global order whatever the partition: the file is the same
+//! for any number of ranks except the `ranks` attribute. After each state
+//! (and the time-history rows gathered since the last one) the file is
+//! flushed, so a run that dies keeps a readable file up to its last
+//! complete state.
+
+use super::h5::{self, Rows, Text, Xfer};
+use super::history::{ThLayout, ThRow};
+use super::{Context, InterfaceInfo, LoopState};
+use crate::deck::{ElementKind, Elements, MaterialLaw};
+use crate::model::NO_NODE;
+use crate::solver::blocks::ElemOut;
+use hdf5::types::VarLenUnicode;
+use hdf5::{Dataset, File, Group, H5Type, SimpleExtents};
+
+/// The name of an element kind's group.
+pub fn kind_name(k: ElementKind) -> &'static str {
+    match k {
+        ElementKind::Shell4 => "shell4",
+        ElementKind::Shell3 => "shell3",
+        ElementKind::Brick8 => "brick8",
+        ElementKind::Tetra4 => "tetra4",
+        ElementKind::Spring => "spring",
+        ElementKind::Truss => "truss",
+        ElementKind::Beam => "beam",
+    }
+}
+
+/// One element kind present in the model: its global count, the rows this
+/// rank writes (its elements' global indices) and the local block holding them.
+pub struct KindRows {
+    pub kind: ElementKind,
+    pub total: usize,
+    pub rows: Rows,
+    pub block: Option<usize>,
+}
+
+/// Element kinds present in the model (replicated), with this rank's rows.
+pub fn kind_rows(ctx: &Context, blocks: &[Box<dyn crate::solver::blocks::Block>]) -> Vec<KindRows> {
+    Elements::KINDS
+        .iter()
+        .enumerate()
+        .filter(|(ki, _)| !ctx.g.element_ids[*ki].is_empty())
+        .map(|(ki, &kind)| {
+            let block = blocks.iter().position(|b| b.kind() == kind);
+            let rows = block
+                .map(|b| Rows::from_sorted(blocks[b].local().global.iter().map(|&e| e as u64)))
+                .unwrap_or_default();
+            KindRows {
+                kind,
+                total: ctx.g.element_ids[ki].len(),
+                rows,
+                block,
+            }
+        })
+        .collect()
+}
+
+fn err(path: &std::path::Path, e: impl std::fmt::Display) -> String {
+    format!("{}: {e}", path.display())
+}
+
+/// Creates a fixed-size dataset `name` in `loc`.
+fn dataset<T: H5Type>(loc: &Group, name: &str, shape: &[usize]) -> Result<Dataset, String> {
+    loc.new_dataset::<T>()
+        .shape(shape)
+        .create(name)
+        .map_err(|e| format!("HDF5: cannot create {name}: {e}"))
+}
+
+/// An extendible dataset `[0, rest...]` (time histories), chunked along time.
+fn growing<T: H5Type>(loc: &Group, name: &str, rest: &[usize]) -> Result<Dataset, String> {
+    let mut dims = vec![0usize];
+    dims.extend_from_slice(rest);
+    let mut chunk = vec![256usize];
+    chunk.extend(rest.iter().map(|&d| d.max(1)));
+    loc.new_dataset::<T>()
+        .shape(SimpleExtents::resizable(dims))
+        .chunk(chunk)
+        .create(name)
+        .map_err(|e| format!("HDF5: cannot create {name}: {e}"))
+}
+
+fn attr_str(loc: &hdf5::Location, name: &str, value: &str) -> Result<(), String> {
+    let v: VarLenUnicode = value.parse().unwrap_or_default();
+    loc.new_attr::<VarLenUnicode>()
+        .create(name)
+        .and_then(|a| a.write_scalar(&v))
+        .map_err(|e| format!("HDF5: attribute {name}: {e}"))
+}
+
+fn attr_num<T: H5Type>(loc: &hdf5::Location, name: &str, value: T) -> Result<(), String> {
+    loc.new_attr::<T>()
+        .create(name)
+        .and_then(|a| a.write_scalar(&value))
+        .map_err(|e| format!("HDF5: attribute {name}: {e}"))
+}
+
+/// The open run file and what each rank writes into it.
+pub struct RunFile {
+    file: File,
+    path: std::path::PathBuf,
+    xfer: Xfer,
+    rank: u32,
+    /// Owned nodes (global indices, ascending) and their local indices.
+    node_rows: Rows,
+    node_local: Vec<usize>,
+    n_nodes: usize,
+    kinds: Vec<KindRows>,
+    th: ThLayout,
+    /// Rows already in the /th datasets.
+    pub th_rows: usize,
+}
+
+impl RunFile {
+    /// Creates `path` (collective) and writes the attributes, `/mesh` and
+    /// the empty `/th` datasets.
+    pub fn create(
+        ctx: &Context,
+        path: &std::path::Path,
+        blocks: &[Box<dyn crate::solver::blocks::Block>],
+        th: ThLayout,
+    ) -> Result<RunFile, String> {
+        let fapl = ctx.world.hdf5_mpio_access()?;
+        let file = File::with_options()
+            .set_access_plist(&fapl)
+            .map_err(|e| err(path, e))?
+            .create(path)
+            .map_err(|e| err(path, format!("cannot create the HDF5 file: {e}")))?;
+        let mut rf = RunFile::new(ctx, file, path, blocks, th)?;
+        rf.write_header(ctx, blocks)?;
+        rf.file.flush().map_err(|e| err(path, e))?;
+        Ok(rf)
+    }
+
+    /// Reopens the file of the run being restarted: keeps its first
+    /// `n_states` states and `th_rows` history rows (what existed when the
+    /// restart file was written) and drops what came after.
+    pub fn reopen(
+        ctx: &Context,
+        path: &std::path::Path,
+        blocks: &[Box<dyn crate::solver::blocks::Block>],
+        th: ThLayout,
+        n_states: usize,
+        th_rows: usize,
+    ) -> Result<RunFile, String> {
+        let fapl = ctx.world.hdf5_mpio_access()?;
+        let file = File::with_options()
+            .set_access_plist(&fapl)
+            .map_err(|e| err(path, e))?
+            .open_rw(path)
+            .map_err(|e| err(path, format!("cannot reopen the run file: {e}")))?;
+        let n = file
+            .dataset("mesh/node_ids")
+            .map(|d| d.shape())
+            .map_err(|e| err(path, format!("not a crashsim run file: {e}")))?;
+        if n != [ctx.g.node_ids.len()] {
+            return Err(err(
+                path,
+                format!(
+                    "holds {} nodes, the deck {}: expected the run file of this deck",
+                    n.first().copied().unwrap_or(0),
+                    ctx.g.node_ids.len()
+                ),
+            ));
+        }
+        let mut rf = RunFile::new(ctx, file, path, blocks, th)?;
+        let states = rf.file.group("states").map_err(|e| err(path, e))?;
+        let mut names = states.member_names().map_err(|e| err(path, e))?;
+        names.sort();
+        for name in names {
+            if name.parse::<usize>().map_or(true, |i| i >= n_states) {
+                states.unlink(&name).map_err(|e| err(path, e))?;
+            }
+        }
+        rf.truncate_th(th_rows)?;
+        rf.th_rows = th_rows;
+        rf.file.flush().map_err(|e| err(path, e))?;
+        Ok(rf)
+    }
+
+    fn new(
+        ctx: &Context,
+        file: File,
+        path: &std::path::Path,
+        blocks: &[Box<dyn crate::solver::blocks::Block>],
+        th: ThLayout,
+    ) -> Result<RunFile, String> {
+        let sd = ctx.sd;
+        let node_local: Vec<usize> = (0..sd.node_global.len())
+            .filter(|&l| sd.owns(l as u32))
+            .collect();
+        let node_rows = Rows::from_sorted(node_local.iter().map(|&l| sd.node_global[l] as u64));
+        Ok(RunFile {
+            file,
+            path: path.to_path_buf(),
+            xfer: Xfer::collective()?,
+            rank: ctx.world.rank(),
+            node_rows,
+            node_local,
+            n_nodes: ctx.g.node_ids.len(),
+            kinds: kind_rows(ctx, blocks),
+            th,
+            th_rows: 0,
+        })
+    }
+
+    /// Owned-node values, one row of `W` per owned node in global order.
+    fn node_values<const W: usize>(&self, f: impl Fn(usize) -> [f64; W]) -> Vec<f64> {
+        let mut out = Vec::with_capacity(self.node_local.len() * W);
+        for &l in &self.node_local {
+            out.extend_from_slice(&f(l));
+        }
+        out
+    }
+
+    fn write_node_array<const W: usize>(
+        &self,
+        g: &Group,
+        name: &str,
+        f: impl Fn(usize) -> [f64; W],
+    ) -> Result<(), String> {
+        let shape: Vec<usize> = if W == 1 {
+            vec![self.n_nodes]
+        } else {
+            vec![self.n_nodes, W]
+        };
+        let ds = dataset::<f64>(g, name, &shape)?;
+        h5::write_rows(&ds, &self.node_rows, &self.node_values(f), &self.xfer)
+    }
+
+    /// Replicated values written by rank 0.
+    fn write_table<T: H5Type>(&self, g: &Group, name: &str, values: &[T]) -> Result<(), String> {
+        let ds = dataset::<T>(g, name, &[values.len()])?;
+        let rows = Rows::root(values.len(), self.rank);
+        let data = if rows.is_empty() { &[][..] } else { values };
+        h5::write_rows(&ds, &rows, data, &self.xfer)
+    }
+
+    fn write_header(
+        &mut self,
+        ctx: &Context,
+        blocks: &[Box<dyn crate::solver::blocks::Block>],
+    ) -> Result<(), String> {
+        let g = ctx.g;
+        let root: &hdf5::Location = &self.file;
+        attr_str(root, "format", "crashsim-run 1")?;
+        attr_str(root, "deck", &g.name)?;
+        attr_str(root, "title", &g.title)?;
+        attr_str(root, "units_mass", &g.units.mass)?;
+        attr_str(root, "units_length", &g.units.length)?;
+        attr_str(root, "units_time", &g.units.time)?;
+        attr_str(root, "crashsim_version", env!("CARGO_PKG_VERSION"))?;
+        attr_num(root, "ranks", ctx.world.size())?;
+        let mesh = self.file.create_group("mesh").map_err(|e| e.to_string())?;
+        let sd = ctx.sd;
+        let ids: Vec<u64> = self
+            .node_local
+            .iter()
+            .map(|&l| g.node_ids[sd.node_global[l] as usize])
+            .collect();
+        let ds = dataset::<u64>(&mesh, "node_ids", &[self.n_nodes])?;
+        h5::write_rows(&ds, &self.node_rows, &ids, &self.xfer)?;
+        self.write_node_array(&mesh, "coordinates", |l| sd.x[l])?;
+        for kr in &self.kinds {
+            let ki = Elements::KINDS.iter().position(|&k| k == kr.kind).unwrap();
+            let nn = kr.kind.nodes();
+            let grp = mesh
+                .create_group(kind_name(kr.kind))
+                .map_err(|e| e.to_string())?;
+            let (mut conn, mut eids, mut pids) = (Vec::new(), Vec::new(), Vec::new());
+            if let Some(b) = kr.block {
+                let le = blocks[b].local();
+                for (e, &ge) in le.global.iter().enumerate() {
+                    for &l in &le.nodes[nn * e..nn * (e + 1)] {
+                        conn.push(if l == NO_NODE {
+                            -1i64
+                        } else {
+                            sd.node_global[l as usize] as i64
+                        });
+                    }
+                    eids.push(g.element_ids[ki][ge as usize]);
+                    pids.push(g.parts[le.part[e] as usize].id);
+                }
+            }
+            let ds = dataset::<i64>(&grp, "connectivity", &[kr.total, nn])?;
+            h5::write_rows(&ds, &kr.rows, &conn, &self.xfer)?;
+            let ds = dataset::<u64>(&grp, "ids", &[kr.total])?;
+            h5::write_rows(&ds, &kr.rows, &eids, &self.xfer)?;
+            let ds = dataset::<u64>(&grp, "part_ids", &[kr.total])?;
+            h5::write_rows(&ds, &kr.rows, &pids, &self.xfer)?;
+        }
+        // Tables (replicated: rank 0 writes).
+        let parts = mesh.create_group("parts").map_err(|e| e.to_string())?;
+        let pid: Vec<u64> = g.parts.iter().map(|p| p.id).collect();
+        let ptitle: Vec<Text> = g.parts.iter().map(|p| h5::text(&p.title)).collect();
+        let pmat: Vec<u64> = g
+            .parts
+            .iter()
+            .map(|p| p.mat.map(|m| g.materials[m as usize].id).unwrap_or(0))
+            .collect();
+        let pprop: Vec<u64> = g
+            .parts
+            .iter()
+            .map(|p| {
+                p.prop
+                    .map(|q| g.properties[q as usize].card.id)
+                    .unwrap_or(0)
+            })
+            .collect();
+        self.write_table(&parts, "id", &pid)?;
+        self.write_table(&parts, "title", &ptitle)?;
+        self.write_table(&parts, "material_id", &pmat)?;
+        self.write_table(&parts, "property_id", &pprop)?;
+        let mats = mesh.create_group("materials").map_err(|e| e.to_string())?;
+        let mid: Vec<u64> = g.materials.iter().map(|m| m.id).collect();
+        let mtitle: Vec<Text> = g.materials.iter().map(|m| h5::text(&m.title)).collect();
+        let mlaw: Vec<Text> = g
+            .materials
+            .iter()
+            .map(|m| {
+                h5::text(match m.law {
+                    MaterialLaw::Elastic => "LAW1 elastic",
+                    MaterialLaw::JohnsonCook(_) => "LAW2 Johnson-Cook",
+                })
+            })
+            .collect();
+        let mrho: Vec<f64> = g.materials.iter().map(|m| m.rho).collect();
+        self.write_table(&mats, "id", &mid)?;
+        self.write_table(&mats, "title", &mtitle)?;
+        self.write_table(&mats, "law", &mlaw)?;
+        self.write_table(&mats, "density", &mrho)?;
+        let ifs = mesh.create_group("interfaces").map_err(|e| e.to_string())?;
+        let iid: Vec<u64> = ctx.interfaces.iter().map(|i| i.id).collect();
+        let ityp: Vec<u32> = ctx.interfaces.iter().map(|i| i.type_number).collect();
+        let ititle: Vec<Text> = ctx.interfaces.iter().map(|i| h5::text(&i.title)).collect();
+        self.write_table(&ifs, "id", &iid)?;
+        self.write_table(&ifs, "type", &ityp)?;
+        self.write_table(&ifs, "title", &ititle)?;
+        let walls = mesh
+            .create_group("rigid_walls")
+            .map_err(|e| e.to_string())?;
+        let wid: Vec<u64> = g.rigid_walls.iter().map(|w| w.card.id).collect();
+        let wtitle: Vec<Text> = g
+            .rigid_walls
+            .iter()
+            .map(|w| h5::text(&w.card.title))
+            .collect();
+        self.write_table(&walls, "id", &wid)?;
+        self.write_table(&walls, "title", &wtitle)?;
+        self.file
+            .create_group("states")
+            .map_err(|e| e.to_string())?;
+        self.create_th(ctx)?;
+        Ok(())
+    }
+
+    /// Writes `/states/NNNN` (collective) and flushes the file.
+    pub fn write_state(
+        &mut self,
+        ctx: &Context,
+        index: usize,
+        s: &LoopState,
+        contact_force: &[[f64; 3]],
+    ) -> Result<(), String> {
+        let sd = ctx.sd;
+        let states = self.file.group("states").map_err(|e| e.to_string())?;
+        let grp = states
+            .create_group(&format!("{index:04}"))
+            .map_err(|e| format!("HDF5: state {index}: {e}"))?;
+        attr_num(&grp, "time", *s.t)?;
+        attr_num(&grp, "cycle", *s.cycle)?;
+        let x = &*s.x;
+        let v = &*s.v;
+        self.write_node_array(&grp, "coordinates", |l| x[l])?;
+        self.write_node_array(&grp, "displacement", |l| {
+            [0, 1, 2].map(|k| x[l][k] - sd.x[l][k])
+        })?;
+        self.write_node_array(&grp, "velocity", |l| v[l])?;
+        self.write_node_array(&grp, "contact_force", |l| contact_force[l])?;
+        for kr in &self.kinds {
+            let sub = grp
+                .create_group(kind_name(kr.kind))
+                .map_err(|e| e.to_string())?;
+            let outs: Vec<ElemOut> = kr.block.map(|b| s.blocks[b].outputs()).unwrap_or_default();
+            let col = |f: fn(&ElemOut) -> f64| -> Vec<f64> { outs.iter().map(f).collect() };
+            let write = |name: &str, vals: Vec<f64>| -> Result<(), String> {
+                let ds = dataset::<f64>(&sub, name, &[kr.total])?;
+                h5::write_rows(&ds, &kr.rows, &vals, &self.xfer)
+            };
+            write("von_mises", col(|o| o.von_mises))?;
+            write("plastic_strain", col(|o| o.eps_p))?;
+            if matches!(kr.kind, ElementKind::Shell4 | ElementKind::Shell3) {
+                write("thickness", col(|o| o.thick))?;
+            }
+            write("internal_energy", col(|o| o.eint))?;
+            let del: Vec<u8> = outs.iter().map(|o| o.deleted as u8).collect();
+            let ds = dataset::<u8>(&sub, "deleted", &[kr.total])?;
+            h5::write_rows(&ds, &kr.rows, &del, &self.xfer)?;
+        }
+        self.flush()
+    }
+
+    pub fn flush(&self) -> Result<(), String> {
+        self.file.flush().map_err(|e| err(&self.path, e))
+    }
+
+    fn create_th(&self, ctx: &Context) -> Result<(), String> {
+        use super::history::{
+            GLOBAL_COLUMNS, INTERFACE_COLUMNS, NODE_COLUMNS, PART_COLUMNS, WALL_COLUMNS,
+        };
+        let th = self.file.create_group("th").map_err(|e| e.to_string())?;
+        growing::<f64>(&th, "time", &[])?;
+        growing::<u64>(&th, "cycle", &[])?;
+        let ds = growing::<f64>(&th, "global", &[GLOBAL_COLUMNS.len()])?;
+        attr_str(&ds, "columns", &GLOBAL_COLUMNS.join(","))?;
+        let g = ctx.g;
+        let tables: [(&str, Vec<u64>, &[&str]); 4] = [
+            (
+                "parts",
+                g.parts.iter().map(|p| p.id).collect(),
+                &PART_COLUMNS,
+            ),
+            (
+                "interfaces",
+                ctx.interfaces.iter().map(|i| i.id).collect(),
+                &INTERFACE_COLUMNS,
+            ),
+            (
+                "rigid_walls",
+                g.rigid_walls.iter().map(|w| w.card.id).collect(),
+                &WALL_COLUMNS,
+            ),
+            (
+                "nodes",
+                g.th_nodes.iter().map(|&n| g.node_ids[n as usize]).collect(),
+                &NODE_COLUMNS,
+            ),
+        ];
+        for (name, ids, cols) in tables {
+            let grp = th.create_group(name).map_err(|e| e.to_string())?;
+            self.write_table(&grp, "id", &ids)?;
+            let ds = growing::<f64>(&grp, "values", &[ids.len(), cols.len()])?;
+            attr_str(&ds, "columns", &cols.join(","))?;
+        }
+        Ok(())
+    }
+
+    /// The /th datasets with, for each, the values one row holds (the
+    /// cycle, second, is written apart).
+    fn th_datasets(&self) -> Result<Vec<(Dataset, usize)>, String> {
+        let l = &self.th;
+        let names: [(&str, usize); 7] = [
+            ("th/time", 1),
+            ("th/cycle", 1),
+            ("th/global", super::history::GLOBAL_COLUMNS.len()),
+            ("th/parts/values", 3 * l.parts),
+            ("th/interfaces/values", 7 * l.interfaces),
+            ("th/rigid_walls/values", 3 * l.walls),
+            ("th/nodes/values", 9 * l.nodes),
+        ];
+        names
+            .into_iter()
+            .map(|(n, w)| {
+                self.file
+                    .dataset(n)
+                    .map(|d| (d, w))
+                    .map_err(|e| err(&self.path, format!("{n}: {e}")))
+            })
+            .collect()
+    }
+
+    fn truncate_th(&self, rows: usize) -> Result<(), String> {
+        for (ds, _) in self.th_datasets()? {
+            let mut shape = ds.shape();
+            shape[0] = rows;
+            ds.resize(shape).map_err(|e| err(&self.path, e))?;
+        }
+        Ok(())
+    }
+
+    /// Appends time-history rows (replicated on every rank; rank 0 writes).
+    pub fn append_th(&mut self, rows: &[ThRow]) -> Result<(), String> {
+        let n_new = rows.len();
+        // Every rank learns the count the same way: rows are replicated.
+        if n_new == 0 {
+            return Ok(());
+        }
+        let first = self.th_rows;
+        let sel = if self.rank == 0 {
+            Rows::range(first as u64, n_new as u64)
+        } else {
+            Rows::default()
+        };
+        // Values of one row are laid out dataset after dataset (see
+        // `ThRow`), the cycle apart.
+        let mut off = 0usize;
+        for (i, (ds, w)) in self.th_datasets()?.into_iter().enumerate() {
+            let mut shape = ds.shape();
+            shape[0] = first + n_new;
+            ds.resize(shape).map_err(|e| err(&self.path, e))?;
+            if i == 1 {
+                let data: Vec<u64> = if sel.is_empty() {
+                    Vec::new()
+                } else {
+                    rows.iter().map(|r| r.cycle).collect()
+                };
+                h5::write_rows(&ds, &sel, &data, &self.xfer)?;
+                continue;
+            }
+            let data: Vec<f64> = if sel.is_empty() {
+                Vec::new()
+            } else {
+                rows.iter()
+                    .flat_map(|r| r.values[off..off + w].iter().copied())
+                    .collect()
+            };
+            off += w;
+            h5::write_rows(&ds, &sel, &data, &self.xfer)?;
+        }
+        self.th_rows = first + n_new;
+        Ok(())
+    }
+}
+
+/// What the caller knows of an interface, for the /mesh and /th tables.
+impl InterfaceInfo {
+    pub fn new(id: u64, type_number: u32, title: &str) -> InterfaceInfo {
+        InterfaceInfo {
+            id,
+            type_number,
+            title: title.to_string(),
+        }
+    }
+}

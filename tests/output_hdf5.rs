@@ -1,0 +1,192 @@
+//! The HDF5 run file and its XDMF description on BOX1BL: the same file for
+//! 1 and 2 ranks, energies equal to the listing, an XDMF that points at
+//! what is there and renders, `info` and `plot`.
+
+mod common;
+use common::*;
+use std::path::{Path, PathBuf};
+
+/// Runs BOX1BL on `np` ranks (0: without mpirun) into a fresh directory.
+fn box1bl(tag: &str, np: u32) -> PathBuf {
+    let dir = scratch(tag);
+    let deck = qa_deck("BOX1BL");
+    let out = run_env(
+        np,
+        &[
+            "run",
+            deck.to_str().unwrap(),
+            "--out",
+            dir.to_str().unwrap(),
+        ],
+        &[],
+    );
+    assert!(
+        out.status.success(),
+        "run -n {np} failed:\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    dir
+}
+
+#[test]
+fn run_file_is_the_same_on_1_and_2_ranks_and_its_energies_are_the_listings() {
+    let one = box1bl("h5-np1", 0);
+    let two = box1bl("h5-np2", 2);
+    let report = python_check(
+        "compare_runs.py",
+        &[
+            one.join("BOX1BL.h5").as_os_str(),
+            two.join("BOX1BL.h5").as_os_str(),
+            one.join("BOX1BL.out").as_os_str(),
+        ],
+    );
+    assert!(
+        report.contains("history samples equal the listing"),
+        "{report}"
+    );
+}
+
+#[test]
+fn xdmf_points_at_datasets_of_the_declared_shape_and_renders_the_last_state() {
+    let dir = box1bl("xdmf", 2);
+    let xdmf = dir.join("BOX1BL.xdmf");
+    let report = python_check("check_xdmf.py", &[xdmf.as_os_str()]);
+    assert!(report.contains("11 states"), "{report}");
+    let png = dir.join("last_state.png");
+    python_check("render_state.py", &[xdmf.as_os_str(), png.as_os_str()]);
+    let bytes = std::fs::read(&png).unwrap();
+    assert!(bytes.starts_with(b"\x89PNG"), "a PNG was written");
+    assert!(
+        bytes.len() > 20_000,
+        "the picture has content ({} bytes)",
+        bytes.len()
+    );
+}
+
+fn crashsim_in(dir: &Path, args: &[&str]) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_crashsim"))
+        .current_dir(dir)
+        .args(args)
+        .output()
+        .unwrap()
+}
+
+#[test]
+fn info_and_plot_read_the_run_file() {
+    let dir = box1bl("plot", 0);
+    let h5 = dir.join("BOX1BL.h5");
+    let out = crashsim(&["info", h5.to_str().unwrap()]);
+    assert!(out.status.success());
+    let text = String::from_utf8_lossy(&out.stdout);
+    for want in [
+        "deck:   BOX1BL",
+        "units:  mass kg, length m, time s",
+        "on 1 rank(s)",
+        "155 nodes",
+        "140 shell4",
+        "states: 11",
+        "/states/0010   t = 1.000318e-1 s",
+        "time histories: 101 samples",
+        "/th/nodes/values [T, 14, 9]: 14 nodes",
+    ] {
+        assert!(text.contains(want), "info lacks '{want}':\n{text}");
+    }
+    for what in ["energies", "interfaces", "parts", "node:6"] {
+        let png = dir.join(format!("{}.png", what.replace(':', "_")));
+        let out = crashsim(&[
+            "plot",
+            h5.to_str().unwrap(),
+            "--out",
+            png.to_str().unwrap(),
+            "--what",
+            what,
+        ]);
+        assert!(
+            out.status.success(),
+            "plot --what {what}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let bytes = std::fs::read(&png).unwrap();
+        assert!(
+            bytes.starts_with(b"\x89PNG") && bytes.len() > 10_000,
+            "{what}: a PNG with content"
+        );
+    }
+    // Bad input: exit 2 and one line naming the file and what was expected.
+    let cases: [(&[&str], &str); 5] = [
+        (&["info", "nowhere.h5"], "nowhere.h5: no such file"),
+        (&["info", "BOX1BL.out"], "BOX1BL.out: not an HDF5 file"),
+        (
+            &["plot", "BOX1BL.h5", "--out", "x.png", "--what", "speed"],
+            "expected energies, interfaces, parts or node:ID",
+        ),
+        (
+            &["plot", "BOX1BL.h5", "--out", "x.png", "--what", "node:7"],
+            "node 7 has no time history",
+        ),
+        (
+            &["plot", "BOX1BL.out", "--out", "x.png"],
+            "BOX1BL.out: not an HDF5 file",
+        ),
+    ];
+    for (args, want) in cases {
+        let out = crashsim_in(&dir, args);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+        assert!(err.contains(want), "{args:?}: '{err}' lacks '{want}'");
+        assert!(!err.contains("panicked"), "{args:?} panicked");
+    }
+}
+
+/// The progress line goes to stderr on a terminal only, and --quiet turns it
+/// off; the listing on stdout is the same either way.
+#[test]
+fn progress_line_on_a_terminal_only() {
+    let dir = scratch("progress");
+    let deck = qa_deck("BOX1BL");
+    let bin = env!("CARGO_BIN_EXE_crashsim");
+    // Not a terminal: nothing but errors on stderr.
+    let out = crashsim(&[
+        "run",
+        deck.to_str().unwrap(),
+        "--out",
+        dir.to_str().unwrap(),
+    ]);
+    assert!(out.status.success());
+    assert!(
+        out.stderr.is_empty(),
+        "stderr: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    // A terminal (script gives the process a pty); stdout goes to a file.
+    let term = |quiet: &str| {
+        let cmd = format!(
+            "{bin} run {} --out {} {quiet} > {}/listing.txt",
+            deck.display(),
+            dir.display(),
+            dir.display()
+        );
+        let o = std::process::Command::new("script")
+            .args(["-qec", &cmd, "/dev/null"])
+            .output()
+            .expect("script (util-linux) runs");
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        String::from_utf8_lossy(&o.stdout).into_owned()
+    };
+    let shown = term("");
+    assert!(
+        shown.contains("cycles/s") && shown.contains("left"),
+        "no progress line on the terminal: {shown:?}"
+    );
+    let listing = std::fs::read_to_string(dir.join("listing.txt")).unwrap();
+    assert!(
+        !listing.contains("cycles/s"),
+        "the progress line leaked into stdout"
+    );
+    assert!(listing.contains("NORMAL TERMINATION"));
+    let quiet = term("--quiet");
+    assert!(
+        !quiet.contains("cycles/s"),
+        "--quiet still shows progress: {quiet:?}"
+    );
+}
