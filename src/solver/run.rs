@@ -545,6 +545,8 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
         s
     };
     let mut e_contact = 0.0f64;
+    // Velocities before the update of the cycle (for the contact work).
+    let mut v_prev = vec![[0.0f64; 3]; n];
 
     // ---- listing ----------------------------------------------------------
     let mut listing = if rank == 0 {
@@ -704,6 +706,9 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
         } else {
             0.5 * (dt_prev + dt)
         };
+        if !contact.is_empty() {
+            v_prev.copy_from_slice(&v);
+        }
         // Accelerations and velocities at n+½.
         for l in 0..n {
             if is_main[l] {
@@ -870,8 +875,10 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
                 for k in 0..3 {
                     w_ext += fext[l][k] * v[l][k] * dt_v;
                     w_ext += fext[l][3 + k] * vr[l][k] * dt_v;
-                    // Energy the contact forces take (elastic, damping, friction).
-                    e_contact -= fcont[l][k] * v[l][k] * dt_v;
+                    // Energy the contact forces take (elastic, damping, friction),
+                    // with the step's mean velocity ½(v(n−½) + v(n+½)): exactly the
+                    // change of the kinetic energy counted at half steps.
+                    e_contact -= fcont[l][k] * 0.5 * (v_prev[l][k] + v[l][k]) * dt_v;
                 }
             }
         }
