@@ -67,12 +67,14 @@ impl FrictionLaw {
     }
 
     /// Filter coefficient α of F_f = α·F(t) + (1 − α)·F_f(t − dt) (EQ. 8.6.4.3,
-    /// card eq. (19)): Ifiltr 1: α = Xfreq; 2: α = 2π·Xfreq (Xfreq = dt/T);
-    /// 3: α = 2π·Xfreq·dt (Xfreq = cut-off frequency); no filter: α = 1.
+    /// card eq. (19)): Ifiltr 1: α = Xfreq; 2: α = 2π/Xfreq (Xfreq = T/dt, the
+    /// filtering period in time steps, >= 2π as the reader checks; the card's
+    /// "α = 2π·Xfreq with Xfreq = dt/T" is the same α); 3: α = 2π·Xfreq·dt
+    /// (Xfreq = cut-off frequency); no filter: α = 1.
     pub fn filter_alpha(&self, dt: f64) -> f64 {
         let a = match self.ifiltr {
             1 => self.xfreq,
-            2 => 2.0 * std::f64::consts::PI * self.xfreq,
+            2 if self.xfreq > 0.0 => 2.0 * std::f64::consts::PI / self.xfreq,
             3 => 2.0 * std::f64::consts::PI * self.xfreq * dt,
             _ => 1.0,
         };
@@ -295,6 +297,10 @@ mod tests {
         l.ifiltr = 1;
         l.xfreq = 0.3;
         assert_eq!(l.filter_alpha(1e-3), 0.3);
+        // Ifiltr 2: Xfreq steps per period (the reader asks for >= 2π).
+        l.ifiltr = 2;
+        l.xfreq = 20.0;
+        assert!((l.filter_alpha(1e-3) - 2.0 * std::f64::consts::PI / 20.0).abs() < 1e-15);
         l.ifiltr = 3;
         l.xfreq = 10.0;
         assert!((l.filter_alpha(1e-3) - 2.0 * std::f64::consts::PI * 1e-2).abs() < 1e-15);
