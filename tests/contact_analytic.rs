@@ -551,6 +551,119 @@ fn bars_head_on_exchange_velocities() {
     );
 }
 
+/// A copy of decks/NAME with `edit` applied to the starter's text, in `dir`.
+fn deck_variant(
+    name: &str,
+    dir: &std::path::Path,
+    edit: &dyn Fn(&str) -> String,
+) -> std::path::PathBuf {
+    let d = deck(name);
+    let nd = dir.join("deck").join(format!("{name}_0000.rad"));
+    std::fs::create_dir_all(nd.parent().unwrap()).unwrap();
+    std::fs::write(&nd, edit(&std::fs::read_to_string(&d).unwrap())).unwrap();
+    std::fs::copy(
+        d.with_file_name(format!("{name}_0001.rad")),
+        nd.with_file_name(format!("{name}_0001.rad")),
+    )
+    .unwrap();
+    nd
+}
+
+/// The sliding block's internal energy after it has stopped (t > 1.05 t_stop),
+/// at its largest, with the friction form Iform.
+fn internal_energy_after_the_stop(iform: i64) -> (f64, f64) {
+    let dir = scratch(&format!("sliding_block_iform{iform}"));
+    let d = deck_variant("sliding_block", &dir, &|t| {
+        // Card 6 of the TYPE7: Iform in columns 41-50.
+        let mut lines: Vec<String> = t.lines().map(String::from).collect();
+        let i = lines
+            .iter()
+            .position(|l| l.starts_with("#    Ifric"))
+            .unwrap()
+            + 1;
+        lines[i] = format!("{}{:>10}{}", &lines[i][..40], iform, &lines[i][50..]);
+        lines.join("\n") + "\n"
+    });
+    let r = run(
+        &d,
+        &dir,
+        &RunArgs {
+            energies: true,
+            ..Default::default()
+        },
+    );
+    let (_, rows) = r.energies();
+    let t_stop = 4.0 / 3.0;
+    let before = rows
+        .iter()
+        .filter(|r| r[0] < 0.9 * t_stop)
+        .map(|r| r[3])
+        .fold(0.0, f64::max);
+    let after = rows
+        .iter()
+        .filter(|r| r[0] > 1.05 * t_stop)
+        .map(|r| r[3])
+        .fold(0.0, f64::max);
+    eprintln!("sliding_block, Iform {iform}: internal energy while sliding <= {before:.3e}, after the stop <= {after:.3e} (initial kinetic 6.28e-2)");
+    (before, after)
+}
+
+/// Once stopped, the block rests: with the incremental friction (Iform 2) its
+/// internal energy stays at the elastic energy of its weight (~1e-5).
+#[test]
+fn sliding_block_rests_quietly_with_iform_2() {
+    let (before, after) = internal_energy_after_the_stop(2);
+    assert!(
+        after < 2.0 * before.max(1e-5),
+        "internal energy {after} after the stop"
+    );
+}
+
+/// KNOWN BUG: with the default viscous friction (Iform 1, VISF 1) the stopped
+/// block's bottom nodes keep a period-2 oscillation along x (±0.05 mm/ms) and
+/// its internal energy grows linearly, from 9e-6 to 2.5e-3 (4% of the initial
+/// kinetic energy) in the 0.27 ms after the stop, with no work to pay for it:
+/// the explicit friction damper C = VISF·√(2·K·M) (C·dt/m ≈ 0.9 on the corner
+/// nodes) is unstable on top of the bricks' own stiffness, and only the μN cap
+/// bounds it.
+#[test]
+#[ignore = "known bug: viscous friction (Iform 1) unstable at stick"]
+fn sliding_block_rests_quietly_with_iform_1() {
+    let (before, after) = internal_energy_after_the_stop(1);
+    assert!(
+        after < 2.0 * before.max(1e-5),
+        "internal energy {after} after the stop"
+    );
+}
+
+/// KNOWN BUG: the bars_head_on deck with the default stiffness (Stfac 1, Km =
+/// B·S²/V, as stiff as the bricks) at /DT 0.9: the contact chatters (on one
+/// cycle in three) and blows up: the bars leave at ±2.43 mm/ms instead of
+/// ±2, with 23 times the initial energy. The nodal contact step √(2M/K) uses
+/// the contact stiffness alone; EQ. 8.8.5.2 sums the elements' stiffness K_el
+/// with it. The committed deck uses Stfac 0.1.
+#[test]
+#[ignore = "known bug: the nodal contact time step ignores the element stiffness"]
+fn bars_head_on_with_the_default_stiffness_stay_stable() {
+    let dir = scratch("bars_head_on_stfac1");
+    let d = deck_variant("bars_head_on", &dir, &|t| {
+        // Card 4 of the TYPE7: Stfac in columns 1-20 (0 = 1).
+        let mut lines: Vec<String> = t.lines().map(String::from).collect();
+        let i = lines
+            .iter()
+            .position(|l| l.starts_with("#              Stfac"))
+            .unwrap()
+            + 1;
+        lines[i] = format!("{:>20}{}", 0, &lines[i][20..]);
+        lines.join("\n") + "\n"
+    });
+    let r = run(&d, &dir, &RunArgs::default());
+    let mesh = read_mesh(&d);
+    let va = mean_velocity(&r.final_state(), &brick_masses(&mesh, RHO, &[1]));
+    eprintln!("bars_head_on, Stfac 1: bar A at {:.4}", va[0]);
+    assert!(rel(va[0], -2.0) < 0.05, "bar A at {}", va[0]);
+}
+
 // ---------------------------------------------------------------------------
 // Tube crush
 

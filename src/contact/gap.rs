@@ -102,10 +102,12 @@ pub fn initial_gap(inacti: i64, g: f64, p0: f64) -> f64 {
 }
 
 /// The corrected gap follows the node back out (§8.8.8: "if the node
-/// penetration decreases, the correction is reduced"): it grows to the
-/// current distance, never beyond the nominal gap.
-pub fn relax_gap(current: f64, nominal: f64, dist: f64) -> f64 {
-    nominal.min(current.max(dist))
+/// penetration decreases, the correction is reduced"): it grows with the
+/// current distance less the clearance the node was given (0 with Inacti = 5,
+/// 5% of its initial distance with Inacti = 6, so that the clearance is not
+/// lost at the first cycle), never beyond the nominal gap.
+pub fn relax_gap(current: f64, nominal: f64, dist: f64, clearance: f64) -> f64 {
+    nominal.min(current.max(dist - clearance))
 }
 
 #[cfg(test)]
@@ -158,8 +160,11 @@ mod tests {
         assert_eq!(initial_penetration(5, 0.0, 0.0, 0.1), Keep);
         assert!((initial_gap(5, 0.1, 0.04) - 0.06).abs() < 1e-15);
         assert!((initial_gap(6, 0.1, 0.04) - 0.057).abs() < 1e-15);
-        assert_eq!(relax_gap(0.06, 0.1, 0.08), 0.08);
-        assert_eq!(relax_gap(0.06, 0.1, 0.2), 0.1);
-        assert_eq!(relax_gap(0.06, 0.1, 0.05), 0.06);
+        assert_eq!(relax_gap(0.06, 0.1, 0.08, 0.0), 0.08);
+        assert_eq!(relax_gap(0.06, 0.1, 0.2, 0.0), 0.1);
+        assert_eq!(relax_gap(0.06, 0.1, 0.05, 0.0), 0.06);
+        // Inacti = 6 at rest: distance 0.06, gap 0.057, clearance 0.003: unchanged.
+        assert!((relax_gap(0.057, 0.1, 0.06, 0.003) - 0.057).abs() < 1e-15);
+        assert!((relax_gap(0.057, 0.1, 0.07, 0.003) - 0.067).abs() < 1e-15);
     }
 }

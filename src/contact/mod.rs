@@ -37,8 +37,9 @@ struct NodeState {
     last_seg: u32,
     /// Inacti = 2: segments deactivated for this node.
     off_segs: Vec<u32>,
-    /// Inacti = 5, 6: (segment, corrected gap).
-    gap0: Vec<(u32, f64)>,
+    /// Inacti = 5, 6: (segment, corrected gap, clearance the node keeps below
+    /// it: 0 with Inacti = 5, 5% of the initial distance with 6).
+    gap0: Vec<(u32, f64, f64)>,
 }
 
 /// One pass on this rank: the owned secondary nodes, their candidates and pair memory.
@@ -492,9 +493,10 @@ impl ContactSystem {
                             gap::InitialPenetration::DeactivateSegment => {
                                 run.nodes[j].off_segs.push(m)
                             }
-                            gap::InitialPenetration::ReduceGap => run.nodes[j]
-                                .gap0
-                                .push((m, gap::initial_gap(it.inacti, g, p0))),
+                            gap::InitialPenetration::ReduceGap => {
+                                let g0 = gap::initial_gap(it.inacti, g, p0);
+                                run.nodes[j].gap0.push((m, g0, (g - p0) - g0))
+                            }
                             _ => {}
                         }
                     }
@@ -605,7 +607,8 @@ impl ContactSystem {
                                     // Inacti 5/6: the corrected gap follows the node back out.
                                     if let Ok(i) = gi {
                                         let d = geo::project(xs, &xm, tri).dist;
-                                        ns.gap0[i].1 = gap::relax_gap(ns.gap0[i].1, nominal, d);
+                                        let (_, g0, clear) = ns.gap0[i];
+                                        ns.gap0[i].1 = gap::relax_gap(g0, nominal, d, clear);
                                     }
                                     let Some(f) = f else { continue };
                                     // dtmin / ITIED.

@@ -1233,6 +1233,13 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
             Err(e) => l.line(&format!("     ERROR TERMINATION: {}", e.message())),
         }
         l.line(&format!("     TOTAL NUMBER OF CYCLES  : {cycle:>10}"));
+        if !contact.is_empty() {
+            // The sort decision is collective: every rank sorts as often.
+            l.line(&format!(
+                "     CONTACT SORTS           : {:>10}",
+                contact.timers.sorts
+            ));
+        }
         if let Some(e) = &final_energies {
             l.line(&format!("     ENERGIES AT THE END     : internal {:.6E} (hourglass {:.6E}, plastic work {:.6E}), kinetic {:.6E} + rotational {:.6E}", e[0], e[1], e[2], e[3], e[4]));
             l.line(&format!(
