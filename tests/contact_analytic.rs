@@ -643,7 +643,6 @@ fn sliding_block_rests_quietly_with_iform_1() {
 /// the contact stiffness alone; EQ. 8.8.5.2 sums the elements' stiffness K_el
 /// with it. The committed deck uses Stfac 0.1.
 #[test]
-#[ignore = "known bug: the nodal contact time step ignores the element stiffness"]
 fn bars_head_on_with_the_default_stiffness_stay_stable() {
     let dir = scratch("bars_head_on_stfac1");
     let d = deck_variant("bars_head_on", &dir, &|t| {
