@@ -142,6 +142,8 @@ pub struct Output {
     hooks: stop::TestHooks,
     progress: progress::Progress,
     xdmf: xdmf::XdmfModel,
+    /// The ranks' agreement on stop signals (one cycle behind, non-blocking).
+    vote: crate::parallel::StopVote,
     /// Wall time spent in the hooks (set-up, samples, states, restart files).
     spent: std::time::Duration,
 }
@@ -193,6 +195,7 @@ impl Output {
                 n_nodes: g.node_ids.len(),
                 kinds,
             },
+            vote: world.stop_vote(),
             spent: std::time::Duration::ZERO,
         };
         if !ctx.opts.no_run_file {
@@ -315,7 +318,9 @@ impl Output {
         self.outputs(ctx, s, false)?;
         let signal = stop::requested();
         let stop_here = self.stop_after == Some(cycle);
-        let any_signal = ctx.world.any(signal.is_some());
+        // The vote completed here was cast at the end of the previous cycle:
+        // a signal stops every rank at the same cycle, the one after it came.
+        let any_signal = self.vote.cast(ctx.world, signal.is_some());
         if stop_here || any_signal {
             self.save_restart(ctx, s)?;
             let why = if any_signal {
@@ -339,6 +344,7 @@ impl Output {
     /// state and samples, the XDMF file; closes the run file.
     pub fn finish(&mut self, ctx: &Context, s: &mut LoopState) -> Result<(), RunError> {
         let began = std::time::Instant::now();
+        self.vote.complete();
         self.progress.finish();
         self.outputs(ctx, s, true)?;
         if let Some(f) = &mut self.file {
