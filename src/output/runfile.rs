@@ -101,6 +101,9 @@ fn growing<T: H5Type>(loc: &Group, name: &str, rest: &[usize]) -> Result<Dataset
     loc.new_dataset::<T>()
         .shape(SimpleExtents::resizable(dims))
         .chunk(chunk)
+        // Every row is written: no fill values (in parallel they cost a
+        // collective write of each new chunk).
+        .fill_time(hdf5::dataset::FillTime::Never)
         .create(name)
         .map_err(|e| format!("HDF5: cannot create {name}: {e}"))
 }
