@@ -8,7 +8,7 @@
 //!
 //! - `Output::start` before the first cycle: restores a restart file
 //!   (`--restart`) into the loop state, creates (or, after a restart,
-//!   reopens) `DIR/NAME.h5`, writes `/mesh`, the first state and sample;
+//!   reopens) `DIR/NAME.h5`, writes `/mesh`, the initial state and sample;
 //! - `Output::after_cycle` at the end of every cycle: time-history samples
 //!   every /TFILE period, a state every /ANIM/DT, a restart file every
 //!   /RFILE cycles, the progress line, and stop requests (SIGTERM/SIGINT,
@@ -233,7 +233,8 @@ impl Output {
         }
         out.history = history;
         if counters.is_none() {
-            out.outputs(ctx, s, false)?;
+            // The initial state, whether /ANIM/DT asks for it or not.
+            out.outputs(ctx, s, true)?;
         }
         out.spent += began.elapsed();
         Ok(out)

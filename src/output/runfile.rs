@@ -14,7 +14,7 @@
 //! /mesh/materials/       id, title, law, density                      [M]
 //! /mesh/interfaces/      id, type, title                              [I]
 //! /mesh/rigid_walls/     id, title                                    [W]
-//! /states/NNNN/          attributes time, cycle
+//! /states/NNNN/          at t = 0, every /ANIM/DT time and the last cycle; attributes time, cycle
 //!     coordinates, displacement, velocity, contact_force   [N,3] f64
 //!     <kind>/von_mises, plastic_strain, thickness (shells) [E] f64, deleted [E] u8
 //! /th/                   time histories: time, cycle, global [T,10], parts/values [T,P,3],
