@@ -285,7 +285,7 @@ impl Output {
         if let Some(f) = &mut self.file {
             f.append_th(&self.pending).map_err(input)?;
             self.pending.clear();
-            f.flush().map_err(input)?;
+            f.checkpoint().map_err(input)?;
         }
         let counters = OutputCounters {
             states: self.states.clone(),
@@ -351,8 +351,8 @@ impl Output {
         if let Some(f) = &mut self.file {
             f.append_th(&self.pending).map_err(input)?;
             self.pending.clear();
-            f.flush().map_err(input)?;
         }
+        // Closing writes everything out.
         self.file = None;
         self.spent += began.elapsed();
         Ok(())

@@ -25,8 +25,9 @@
 //! Rows are in global order whatever the partition: the file is the same
 //! for any number of ranks except the `ranks` attribute. After each state
 //! (and the time-history rows gathered since the last one) the file is
-//! flushed, so a run that dies keeps a readable file up to its last
-//! complete state.
+//! closed and reopened (`RunFile::checkpoint`: like a flush, without the
+//! fsync), so a run that dies keeps a readable file up to its last complete
+//! state.
 
 use super::h5::{self, Rows, Text, Xfer};
 use super::history::{ThLayout, ThRow};
@@ -125,7 +126,9 @@ fn attr_num<T: H5Type>(loc: &hdf5::Location, name: &str, value: T) -> Result<(),
 
 /// The open run file and what each rank writes into it.
 pub struct RunFile {
-    file: File,
+    file: Option<File>,
+    /// How the file is (re)opened: MPI-IO on the world communicator.
+    fapl: hdf5::plist::FileAccess,
     path: std::path::PathBuf,
     xfer: Xfer,
     rank: u32,
@@ -156,7 +159,7 @@ impl RunFile {
             .map_err(|e| err(path, format!("cannot create the HDF5 file: {e}")))?;
         let mut rf = RunFile::new(ctx, file, path, blocks, th)?;
         rf.write_header(ctx, blocks)?;
-        rf.file.flush().map_err(|e| err(path, e))?;
+        rf.checkpoint()?;
         Ok(rf)
     }
 
@@ -192,17 +195,19 @@ impl RunFile {
             ));
         }
         let mut rf = RunFile::new(ctx, file, path, blocks, th)?;
-        let states = rf.file.group("states").map_err(|e| err(path, e))?;
-        let mut names = states.member_names().map_err(|e| err(path, e))?;
-        names.sort();
-        for name in names {
-            if name.parse::<usize>().map_or(true, |i| i >= n_states) {
-                states.unlink(&name).map_err(|e| err(path, e))?;
+        {
+            let states = rf.f().group("states").map_err(|e| err(path, e))?;
+            let mut names = states.member_names().map_err(|e| err(path, e))?;
+            names.sort();
+            for name in names {
+                if name.parse::<usize>().map_or(true, |i| i >= n_states) {
+                    states.unlink(&name).map_err(|e| err(path, e))?;
+                }
             }
         }
         rf.truncate_th(th_rows)?;
         rf.th_rows = th_rows;
-        rf.file.flush().map_err(|e| err(path, e))?;
+        rf.checkpoint()?;
         Ok(rf)
     }
 
@@ -219,7 +224,8 @@ impl RunFile {
             .collect();
         let node_rows = Rows::from_sorted(node_local.iter().map(|&l| sd.node_global[l] as u64));
         Ok(RunFile {
-            file,
+            file: Some(file),
+            fapl: ctx.world.hdf5_mpio_access()?,
             path: path.to_path_buf(),
             xfer: Xfer::collective()?,
             rank: ctx.world.rank(),
@@ -230,6 +236,31 @@ impl RunFile {
             th,
             th_rows: 0,
         })
+    }
+
+    fn f(&self) -> &File {
+        self.file.as_ref().expect("the run file is open")
+    }
+
+    /// Puts everything written so far in the file on disk's hands, complete
+    /// and readable (collective): closes the file and opens it again.
+    /// `H5Fflush` would do it too but, through MPI-IO, ends with
+    /// `MPI_File_sync`, an fsync on every rank: milliseconds each, and
+    /// stalls of tenths of a second while other processes write to the same
+    /// disk, with every rank waiting. A file being closed is not synced, and
+    /// a process killed afterwards leaves a file that reads up to this point
+    /// (the operating system has the data; only a machine crash could lose it).
+    pub fn checkpoint(&mut self) -> Result<(), String> {
+        if let Some(f) = self.file.take() {
+            f.close().map_err(|e| err(&self.path, e))?;
+        }
+        let f = File::with_options()
+            .set_access_plist(&self.fapl)
+            .map_err(|e| err(&self.path, e))?
+            .open_rw(&self.path)
+            .map_err(|e| err(&self.path, format!("cannot reopen the run file: {e}")))?;
+        self.file = Some(f);
+        Ok(())
     }
 
     /// Owned-node values, one row of `W` per owned node in global order.
@@ -270,7 +301,7 @@ impl RunFile {
         blocks: &[Box<dyn crate::solver::blocks::Block>],
     ) -> Result<(), String> {
         let g = ctx.g;
-        let root: &hdf5::Location = &self.file;
+        let root: &hdf5::Location = self.f();
         attr_str(root, "format", "crashsim-run 1")?;
         attr_str(root, "deck", &g.name)?;
         attr_str(root, "title", &g.title)?;
@@ -279,7 +310,7 @@ impl RunFile {
         attr_str(root, "units_time", &g.units.time)?;
         attr_str(root, "crashsim_version", env!("CARGO_PKG_VERSION"))?;
         attr_num(root, "ranks", ctx.world.size())?;
-        let mesh = self.file.create_group("mesh").map_err(|e| e.to_string())?;
+        let mesh = self.f().create_group("mesh").map_err(|e| e.to_string())?;
         let sd = ctx.sd;
         let ids: Vec<u64> = self
             .node_local
@@ -375,14 +406,12 @@ impl RunFile {
             .collect();
         self.write_table(&walls, "id", &wid)?;
         self.write_table(&walls, "title", &wtitle)?;
-        self.file
-            .create_group("states")
-            .map_err(|e| e.to_string())?;
+        self.f().create_group("states").map_err(|e| e.to_string())?;
         self.create_th(ctx)?;
         Ok(())
     }
 
-    /// Writes `/states/NNNN` (collective) and flushes the file.
+    /// Writes `/states/NNNN` (collective) and makes the file complete on disk.
     pub fn write_state(
         &mut self,
         ctx: &Context,
@@ -390,8 +419,20 @@ impl RunFile {
         s: &LoopState,
         contact_force: &[[f64; 3]],
     ) -> Result<(), String> {
+        // Every handle into the file is closed when this returns.
+        self.write_state_data(ctx, index, s, contact_force)?;
+        self.checkpoint()
+    }
+
+    fn write_state_data(
+        &mut self,
+        ctx: &Context,
+        index: usize,
+        s: &LoopState,
+        contact_force: &[[f64; 3]],
+    ) -> Result<(), String> {
         let sd = ctx.sd;
-        let states = self.file.group("states").map_err(|e| e.to_string())?;
+        let states = self.f().group("states").map_err(|e| e.to_string())?;
         let grp = states
             .create_group(&format!("{index:04}"))
             .map_err(|e| format!("HDF5: state {index}: {e}"))?;
@@ -425,18 +466,14 @@ impl RunFile {
             let ds = dataset::<u8>(&sub, "deleted", &[kr.total])?;
             h5::write_rows(&ds, &kr.rows, &del, &self.xfer)?;
         }
-        self.flush()
-    }
-
-    pub fn flush(&self) -> Result<(), String> {
-        self.file.flush().map_err(|e| err(&self.path, e))
+        Ok(())
     }
 
     fn create_th(&self, ctx: &Context) -> Result<(), String> {
         use super::history::{
             GLOBAL_COLUMNS, INTERFACE_COLUMNS, NODE_COLUMNS, PART_COLUMNS, WALL_COLUMNS,
         };
-        let th = self.file.create_group("th").map_err(|e| e.to_string())?;
+        let th = self.f().create_group("th").map_err(|e| e.to_string())?;
         growing::<f64>(&th, "time", &[])?;
         growing::<u64>(&th, "cycle", &[])?;
         let ds = growing::<f64>(&th, "global", &[GLOBAL_COLUMNS.len()])?;
@@ -489,7 +526,7 @@ impl RunFile {
         names
             .into_iter()
             .map(|(n, w)| {
-                self.file
+                self.f()
                     .dataset(n)
                     .map(|d| (d, w))
                     .map_err(|e| err(&self.path, format!("{n}: {e}")))
@@ -533,6 +570,10 @@ impl RunFile {
                     rows.iter().map(|r| r.cycle).collect()
                 };
                 h5::write_rows(&ds, &sel, &data, &self.xfer)?;
+                continue;
+            }
+            if w == 0 {
+                // A table without objects (no interfaces yet): nothing to write.
                 continue;
             }
             let data: Vec<f64> = if sel.is_empty() {
