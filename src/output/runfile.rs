@@ -151,6 +151,12 @@ impl RunFile {
         blocks: &[Box<dyn crate::solver::blocks::Block>],
         th: ThLayout,
     ) -> Result<RunFile, String> {
+        // A file of an earlier run is removed, not truncated: ext4 flushes a
+        // file truncated to zero when it is next closed (`auto_da_alloc`).
+        if ctx.world.rank() == 0 && path.is_file() {
+            std::fs::remove_file(path).map_err(|e| err(path, format!("cannot replace: {e}")))?;
+        }
+        ctx.world.barrier();
         let fapl = ctx.world.hdf5_mpio_access()?;
         let file = File::with_options()
             .set_access_plist(&fapl)
