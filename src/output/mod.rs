@@ -334,7 +334,7 @@ impl Output {
                 self.rst_path.display()
             )));
         }
-        if self.rfile_cycles.is_some_and(|n| cycle % n == 0) {
+        if self.rfile_cycles.is_some_and(|n| cycle.is_multiple_of(n)) {
             self.save_restart(ctx, s)?;
         }
         self.progress.update(*s.t, cycle, *s.dt);

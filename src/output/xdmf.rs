@@ -44,6 +44,7 @@ fn item(out: &mut String, indent: &str, dims: &str, ty: &str, prec: u32, h5: &st
     );
 }
 
+#[allow(clippy::too_many_arguments)]
 fn attribute(
     out: &mut String,
     indent: &str,
