@@ -29,21 +29,23 @@ fn box1bl(tag: &str, np: u32) -> PathBuf {
 }
 
 #[test]
-fn run_file_is_the_same_on_1_and_2_ranks_and_its_energies_are_the_listings() {
+fn run_file_is_the_same_on_1_2_and_4_ranks_and_its_energies_are_the_listings() {
     let one = box1bl("h5-np1", 0);
-    let two = box1bl("h5-np2", 2);
-    let report = python_check(
-        "compare_runs.py",
-        &[
-            one.join("BOX1BL.h5").as_os_str(),
-            two.join("BOX1BL.h5").as_os_str(),
-            one.join("BOX1BL.out").as_os_str(),
-        ],
-    );
-    assert!(
-        report.contains("history samples equal the listing"),
-        "{report}"
-    );
+    for np in [2, 4] {
+        let other = box1bl(&format!("h5-np{np}"), np);
+        let report = python_check(
+            "compare_runs.py",
+            &[
+                one.join("BOX1BL.h5").as_os_str(),
+                other.join("BOX1BL.h5").as_os_str(),
+                one.join("BOX1BL.out").as_os_str(),
+            ],
+        );
+        assert!(
+            report.contains("history samples equal the listing"),
+            "{np} ranks: {report}"
+        );
+    }
 }
 
 #[test]
