@@ -192,3 +192,53 @@ fn progress_line_on_a_terminal_only() {
         "--quiet still shows progress: {quiet:?}"
     );
 }
+
+/// Bricks (Hexahedron topology) on 2 ranks: the XDMF points at what is
+/// there, and the last state's von Mises stress is the impact stress ρ·c·v
+/// of decks/brick_bar (uniaxial: von Mises = |σxx|) where the wave has passed.
+#[test]
+fn brick_bar_states_carry_the_impact_stress() {
+    let dir = scratch("h5-bricks");
+    let deck = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("decks/brick_bar/brick_bar_0000.rad");
+    let out = run_env(
+        2,
+        &[
+            "run",
+            deck.to_str().unwrap(),
+            "--out",
+            dir.to_str().unwrap(),
+        ],
+        &[],
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let xdmf = dir.join("brick_bar.xdmf");
+    python_check("check_xdmf.py", &[xdmf.as_os_str()]);
+    assert!(std::fs::read_to_string(&xdmf)
+        .unwrap()
+        .contains("TopologyType=\"Hexahedron\""));
+    let script = r#"
+import sys, h5py, numpy as np
+f = h5py.File(sys.argv[1], "r")
+last = f["states"][sorted(f["states"])[-1]]
+vm = last["brick8/von_mises"][()]
+sigma = 7.85e-6 * (210 / 7.85e-6) ** 0.5 * 5.0
+behind = vm[vm > 0.5 * sigma]
+assert 0.1 * len(vm) < len(behind) < len(vm), len(behind)
+assert abs(np.median(behind) / sigma - 1) < 0.1, (np.median(behind), sigma)
+assert last["brick8/deleted"][()].sum() == 0 and "thickness" not in last["brick8"]
+print("von Mises behind the front", np.median(behind), "vs", sigma)
+"#;
+    let py = dir.join("check.py");
+    std::fs::write(&py, script).unwrap();
+    let o = std::process::Command::new(python())
+        .arg(&py)
+        .arg(dir.join("brick_bar.h5"))
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+}
