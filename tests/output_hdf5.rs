@@ -93,6 +93,23 @@ fn info_and_plot_read_the_run_file() {
     ] {
         assert!(text.contains(want), "info lacks '{want}':\n{text}");
     }
+    // Part histories at t = 0: the starter listing's PART MASS table
+    // (element mass 4.0950001470000E-02, kinetic energy 1.310400047040).
+    let f = hdf5::File::open(&h5).unwrap();
+    let parts = f.dataset("th/parts/values").unwrap();
+    assert_eq!(parts.shape()[1..], [1, 3]);
+    let v = parts.read_raw::<f64>().unwrap();
+    assert!(
+        (v[2] - 4.0950001470000e-2).abs() <= 1e-12 * 4.1e-2,
+        "part mass {}",
+        v[2]
+    );
+    assert!(
+        (v[1] - 1.310400047040).abs() <= 1e-11,
+        "part kinetic energy {}",
+        v[1]
+    );
+    drop(f);
     for what in ["energies", "interfaces", "parts", "node:6"] {
         let png = dir.join(format!("{}.png", what.replace(':', "_")));
         let out = crashsim(&[
