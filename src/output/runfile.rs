@@ -131,6 +131,8 @@ pub struct RunFile {
     fapl: hdf5::plist::FileAccess,
     path: std::path::PathBuf,
     xfer: Xfer,
+    /// Rank 0's transfers of replicated rows.
+    solo: Xfer,
     rank: u32,
     /// Owned nodes (global indices, ascending) and their local indices.
     node_rows: Rows,
@@ -234,6 +236,7 @@ impl RunFile {
             fapl: ctx.world.hdf5_mpio_access()?,
             path: path.to_path_buf(),
             xfer: Xfer::collective()?,
+            solo: Xfer::independent()?,
             rank: ctx.world.rank(),
             node_rows,
             node_local,
@@ -293,12 +296,18 @@ impl RunFile {
         h5::write_rows(&ds, &self.node_rows, &self.node_values(f), &self.xfer)
     }
 
-    /// Replicated values written by rank 0.
+    /// Replicated values: every rank creates the dataset, rank 0 writes it.
     fn write_table<T: H5Type>(&self, g: &Group, name: &str, values: &[T]) -> Result<(), String> {
         let ds = dataset::<T>(g, name, &[values.len()])?;
-        let rows = Rows::root(values.len(), self.rank);
-        let data = if rows.is_empty() { &[][..] } else { values };
-        h5::write_rows(&ds, &rows, data, &self.xfer)
+        if self.rank == 0 && !values.is_empty() {
+            h5::write_rows(
+                &ds,
+                &Rows::range(0, values.len() as u64),
+                values,
+                &self.solo,
+            )?;
+        }
+        Ok(())
     }
 
     fn write_header(
@@ -557,40 +566,31 @@ impl RunFile {
             return Ok(());
         }
         let first = self.th_rows;
-        let sel = if self.rank == 0 {
-            Rows::range(first as u64, n_new as u64)
-        } else {
-            Rows::default()
-        };
+        let sel = Rows::range(first as u64, n_new as u64);
+        let root = self.rank == 0;
         // Values of one row are laid out dataset after dataset (see
-        // `ThRow`), the cycle apart.
+        // `ThRow`), the cycle apart. Every rank extends each dataset
+        // (collective); rank 0 alone writes the rows.
         let mut off = 0usize;
         for (i, (ds, w)) in self.th_datasets()?.into_iter().enumerate() {
             let mut shape = ds.shape();
             shape[0] = first + n_new;
             ds.resize(shape).map_err(|e| err(&self.path, e))?;
             if i == 1 {
-                let data: Vec<u64> = if sel.is_empty() {
-                    Vec::new()
-                } else {
-                    rows.iter().map(|r| r.cycle).collect()
-                };
-                h5::write_rows(&ds, &sel, &data, &self.xfer)?;
+                if root {
+                    let data: Vec<u64> = rows.iter().map(|r| r.cycle).collect();
+                    h5::write_rows(&ds, &sel, &data, &self.solo)?;
+                }
                 continue;
             }
-            if w == 0 {
-                // A table without objects (no interfaces yet): nothing to write.
-                continue;
-            }
-            let data: Vec<f64> = if sel.is_empty() {
-                Vec::new()
-            } else {
-                rows.iter()
+            if root && w > 0 {
+                let data: Vec<f64> = rows
+                    .iter()
                     .flat_map(|r| r.values[off..off + w].iter().copied())
-                    .collect()
-            };
+                    .collect();
+                h5::write_rows(&ds, &sel, &data, &self.solo)?;
+            }
             off += w;
-            h5::write_rows(&ds, &sel, &data, &self.xfer)?;
         }
         self.th_rows = first + n_new;
         Ok(())
