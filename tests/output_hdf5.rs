@@ -29,21 +29,23 @@ fn box1bl(tag: &str, np: u32) -> PathBuf {
 }
 
 #[test]
-fn run_file_is_the_same_on_1_and_2_ranks_and_its_energies_are_the_listings() {
+fn run_file_is_the_same_on_1_2_and_4_ranks_and_its_energies_are_the_listings() {
     let one = box1bl("h5-np1", 0);
-    let two = box1bl("h5-np2", 2);
-    let report = python_check(
-        "compare_runs.py",
-        &[
-            one.join("BOX1BL.h5").as_os_str(),
-            two.join("BOX1BL.h5").as_os_str(),
-            one.join("BOX1BL.out").as_os_str(),
-        ],
-    );
-    assert!(
-        report.contains("history samples equal the listing"),
-        "{report}"
-    );
+    for np in [2, 4] {
+        let other = box1bl(&format!("h5-np{np}"), np);
+        let report = python_check(
+            "compare_runs.py",
+            &[
+                one.join("BOX1BL.h5").as_os_str(),
+                other.join("BOX1BL.h5").as_os_str(),
+                one.join("BOX1BL.out").as_os_str(),
+            ],
+        );
+        assert!(
+            report.contains("history samples equal the listing"),
+            "{np} ranks: {report}"
+        );
+    }
 }
 
 #[test]
@@ -91,6 +93,23 @@ fn info_and_plot_read_the_run_file() {
     ] {
         assert!(text.contains(want), "info lacks '{want}':\n{text}");
     }
+    // Part histories at t = 0: the starter listing's PART MASS table
+    // (element mass 4.0950001470000E-02, kinetic energy 1.310400047040).
+    let f = hdf5::File::open(&h5).unwrap();
+    let parts = f.dataset("th/parts/values").unwrap();
+    assert_eq!(parts.shape()[1..], [1, 3]);
+    let v = parts.read_raw::<f64>().unwrap();
+    assert!(
+        (v[2] - 4.0950001470000e-2).abs() <= 1e-12 * 4.1e-2,
+        "part mass {}",
+        v[2]
+    );
+    assert!(
+        (v[1] - 1.310400047040).abs() <= 1e-11,
+        "part kinetic energy {}",
+        v[1]
+    );
+    drop(f);
     for what in ["energies", "interfaces", "parts", "node:6"] {
         let png = dir.join(format!("{}.png", what.replace(':', "_")));
         let out = crashsim(&[
@@ -189,4 +208,54 @@ fn progress_line_on_a_terminal_only() {
         !quiet.contains("cycles/s"),
         "--quiet still shows progress: {quiet:?}"
     );
+}
+
+/// Bricks (Hexahedron topology) on 2 ranks: the XDMF points at what is
+/// there, and the last state's von Mises stress is the impact stress ρ·c·v
+/// of decks/brick_bar (uniaxial: von Mises = |σxx|) where the wave has passed.
+#[test]
+fn brick_bar_states_carry_the_impact_stress() {
+    let dir = scratch("h5-bricks");
+    let deck = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("decks/brick_bar/brick_bar_0000.rad");
+    let out = run_env(
+        2,
+        &[
+            "run",
+            deck.to_str().unwrap(),
+            "--out",
+            dir.to_str().unwrap(),
+        ],
+        &[],
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let xdmf = dir.join("brick_bar.xdmf");
+    python_check("check_xdmf.py", &[xdmf.as_os_str()]);
+    assert!(std::fs::read_to_string(&xdmf)
+        .unwrap()
+        .contains("TopologyType=\"Hexahedron\""));
+    let script = r#"
+import sys, h5py, numpy as np
+f = h5py.File(sys.argv[1], "r")
+last = f["states"][sorted(f["states"])[-1]]
+vm = last["brick8/von_mises"][()]
+sigma = 7.85e-6 * (210 / 7.85e-6) ** 0.5 * 5.0
+behind = vm[vm > 0.5 * sigma]
+assert 0.1 * len(vm) < len(behind) < len(vm), len(behind)
+assert abs(np.median(behind) / sigma - 1) < 0.1, (np.median(behind), sigma)
+assert last["brick8/deleted"][()].sum() == 0 and "thickness" not in last["brick8"]
+print("von Mises behind the front", np.median(behind), "vs", sigma)
+"#;
+    let py = dir.join("check.py");
+    std::fs::write(&py, script).unwrap();
+    let o = std::process::Command::new(python())
+        .arg(&py)
+        .arg(dir.join("brick_bar.h5"))
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
 }

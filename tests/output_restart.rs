@@ -127,12 +127,13 @@ fn stopped_on_2_ranks_and_restarted_on_1_ends_byte_identical() {
 fn a_signal_on_one_rank_stops_every_rank_at_the_same_cycle_with_a_restart_file() {
     let (full, _) = reference("rst-full3");
     let dir = scratch("rst-signal");
-    // Rank 1 sends itself SIGTERM at cycle 400 (the real handler path).
+    // Rank 1 sends itself SIGTERM at cycle 400 (the real handler path); the
+    // ranks' vote completes one cycle later.
     let out = run(2, &dir, &[], &[("CRASHSIM_SIGNAL_AT", "1:400")]);
     ok(&out, "run stopped by SIGTERM");
     let listing = String::from_utf8_lossy(&out.stdout);
     assert!(
-        listing.contains("STOPPED AT CYCLE 400 on a stop signal"),
+        listing.contains("STOPPED AT CYCLE 401 on a stop signal"),
         "{listing}"
     );
     assert!(restart(2, &dir) == full, "restart after the signal differs");

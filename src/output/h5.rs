@@ -16,8 +16,9 @@
 //! by every HDF5 1.10 release.
 //!
 //! Replicated data (tables, time-history rows, which every rank holds) are
-//! written by rank 0 with every other rank taking part with an empty
-//! selection, as collective I/O requires.
+//! written by rank 0 alone with an independent transfer (the datasets are
+//! created and extended collectively, as parallel HDF5 requires; their
+//! space is allocated then, so one rank may write into it).
 //!
 //! The high-level `hdf5` crate creates the files, groups, datasets and
 //! attributes (collective metadata operations: every rank calls them alike);
@@ -89,15 +90,25 @@ impl Rows {
 pub struct Xfer(hid_t);
 
 impl Xfer {
+    /// Every rank takes part in each transfer (MPI-IO two-phase I/O):
+    /// distributed rows.
     pub fn collective() -> Result<Xfer, String> {
+        Xfer::new(h5p::H5FD_mpio_xfer_t::H5FD_MPIO_COLLECTIVE)
+    }
+    /// Only the ranks that call transfer: replicated rows written by rank 0
+    /// alone (time-history rows, tables), without the collective machinery.
+    pub fn independent() -> Result<Xfer, String> {
+        Xfer::new(h5p::H5FD_mpio_xfer_t::H5FD_MPIO_INDEPENDENT)
+    }
+    fn new(mode: h5p::H5FD_mpio_xfer_t) -> Result<Xfer, String> {
         unsafe {
             let id = h5p::H5Pcreate(*hdf5_sys::h5p::H5P_CLS_DATASET_XFER);
             if id < 0 {
                 return Err("HDF5: cannot create a transfer property list".into());
             }
-            if h5p::H5Pset_dxpl_mpio(id, h5p::H5FD_mpio_xfer_t::H5FD_MPIO_COLLECTIVE) < 0 {
+            if h5p::H5Pset_dxpl_mpio(id, mode) < 0 {
                 hdf5_sys::h5p::H5Pclose(id);
-                return Err("HDF5: cannot set collective MPI-IO transfers".into());
+                return Err("HDF5: cannot set the MPI-IO transfer mode".into());
             }
             Ok(Xfer(id))
         }

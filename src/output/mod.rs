@@ -8,7 +8,7 @@
 //!
 //! - `Output::start` before the first cycle: restores a restart file
 //!   (`--restart`) into the loop state, creates (or, after a restart,
-//!   reopens) `DIR/NAME.h5`, writes `/mesh`, the first state and sample;
+//!   reopens) `DIR/NAME.h5`, writes `/mesh`, the initial state and sample;
 //! - `Output::after_cycle` at the end of every cycle: time-history samples
 //!   every /TFILE period, a state every /ANIM/DT, a restart file every
 //!   /RFILE cycles, the progress line, and stop requests (SIGTERM/SIGINT,
@@ -142,6 +142,8 @@ pub struct Output {
     hooks: stop::TestHooks,
     progress: progress::Progress,
     xdmf: xdmf::XdmfModel,
+    /// The ranks' agreement on stop signals (one cycle behind, non-blocking).
+    vote: crate::parallel::StopVote,
     /// Wall time spent in the hooks (set-up, samples, states, restart files).
     spent: std::time::Duration,
 }
@@ -193,6 +195,7 @@ impl Output {
                 n_nodes: g.node_ids.len(),
                 kinds,
             },
+            vote: world.stop_vote(),
             spent: std::time::Duration::ZERO,
         };
         if !ctx.opts.no_run_file {
@@ -230,7 +233,8 @@ impl Output {
         }
         out.history = history;
         if counters.is_none() {
-            out.outputs(ctx, s, false)?;
+            // The initial state, whether /ANIM/DT asks for it or not.
+            out.outputs(ctx, s, true)?;
         }
         out.spent += began.elapsed();
         Ok(out)
@@ -281,7 +285,7 @@ impl Output {
         if let Some(f) = &mut self.file {
             f.append_th(&self.pending).map_err(input)?;
             self.pending.clear();
-            f.flush().map_err(input)?;
+            f.checkpoint().map_err(input)?;
         }
         let counters = OutputCounters {
             states: self.states.clone(),
@@ -315,7 +319,9 @@ impl Output {
         self.outputs(ctx, s, false)?;
         let signal = stop::requested();
         let stop_here = self.stop_after == Some(cycle);
-        let any_signal = ctx.world.any(signal.is_some());
+        // The vote completed here was cast at the end of the previous cycle:
+        // a signal stops every rank at the same cycle, the one after it came.
+        let any_signal = self.vote.cast(ctx.world, signal.is_some());
         if stop_here || any_signal {
             self.save_restart(ctx, s)?;
             let why = if any_signal {
@@ -328,7 +334,7 @@ impl Output {
                 self.rst_path.display()
             )));
         }
-        if self.rfile_cycles.is_some_and(|n| cycle % n == 0) {
+        if self.rfile_cycles.is_some_and(|n| cycle.is_multiple_of(n)) {
             self.save_restart(ctx, s)?;
         }
         self.progress.update(*s.t, cycle, *s.dt);
@@ -339,13 +345,14 @@ impl Output {
     /// state and samples, the XDMF file; closes the run file.
     pub fn finish(&mut self, ctx: &Context, s: &mut LoopState) -> Result<(), RunError> {
         let began = std::time::Instant::now();
+        self.vote.complete();
         self.progress.finish();
         self.outputs(ctx, s, true)?;
         if let Some(f) = &mut self.file {
             f.append_th(&self.pending).map_err(input)?;
             self.pending.clear();
-            f.flush().map_err(input)?;
         }
+        // Closing writes everything out.
         self.file = None;
         self.spent += began.elapsed();
         Ok(())

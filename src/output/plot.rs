@@ -107,11 +107,14 @@ fn column(shape: &[usize], v: &[f64], c: usize, cols: std::ops::Range<usize>) ->
     let w = shape.get(2).copied().unwrap_or(1);
     (0..t)
         .map(|i| {
-            let row = &v[(i * n + c) * w..(i * n + c + 1) * w];
-            if cols.len() == 1 {
-                row[cols.start]
-            } else {
-                row[cols.clone()].iter().map(|a| a * a).sum::<f64>().sqrt()
+            // A file whose shapes do not fit gives NaN (not drawn), not a panic.
+            let Some(row) = v.get((i * n + c) * w..(i * n + c + 1) * w) else {
+                return f64::NAN;
+            };
+            match row.get(cols.clone()) {
+                Some([a]) => *a,
+                Some(xs) => xs.iter().map(|a| a * a).sum::<f64>().sqrt(),
+                None => f64::NAN,
             }
         })
         .collect()
@@ -123,8 +126,16 @@ fn global(shape: &[usize], v: &[f64], name: &str) -> Vec<f64> {
         .iter()
         .position(|&c| c == name)
         .expect("a /th/global column");
-    let w = shape[1];
-    (0..shape[0]).map(|i| v[i * w + k]).collect()
+    let w = shape.get(1).copied().unwrap_or(0);
+    (0..shape[0])
+        .map(|i| {
+            if k < w {
+                v.get(i * w + k).copied().unwrap_or(f64::NAN)
+            } else {
+                f64::NAN
+            }
+        })
+        .collect()
 }
 
 /// Draws `what` from `input` into `out` (PNG).
@@ -360,7 +371,10 @@ fn draw(out: &Path, time: &[f64], xlabel: &str, panels: &[Panel]) -> Result<(), 
             let color = Palette99::pick(i).to_rgba();
             chart
                 .draw_series(LineSeries::new(
-                    time.iter().copied().zip(c.y.iter().copied()),
+                    time.iter()
+                        .copied()
+                        .zip(c.y.iter().copied())
+                        .filter(|(_, y)| y.is_finite()),
                     color.stroke_width(2),
                 ))
                 .map_err(|x| e(&x))?

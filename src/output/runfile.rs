@@ -14,7 +14,7 @@
 //! /mesh/materials/       id, title, law, density                      [M]
 //! /mesh/interfaces/      id, type, title                              [I]
 //! /mesh/rigid_walls/     id, title                                    [W]
-//! /states/NNNN/          attributes time, cycle
+//! /states/NNNN/          at t = 0, every /ANIM/DT time and the last cycle; attributes time, cycle
 //!     coordinates, displacement, velocity, contact_force   [N,3] f64
 //!     <kind>/von_mises, plastic_strain, thickness (shells) [E] f64, deleted [E] u8
 //! /th/                   time histories: time, cycle, global [T,10], parts/values [T,P,3],
@@ -25,8 +25,9 @@
 //! Rows are in global order whatever the partition: the file is the same
 //! for any number of ranks except the `ranks` attribute. After each state
 //! (and the time-history rows gathered since the last one) the file is
-//! flushed, so a run that dies keeps a readable file up to its last
-//! complete state.
+//! closed and reopened (`RunFile::checkpoint`: like a flush, without the
+//! fsync), so a run that dies keeps a readable file up to its last complete
+//! state.
 
 use super::h5::{self, Rows, Text, Xfer};
 use super::history::{ThLayout, ThRow};
@@ -101,6 +102,9 @@ fn growing<T: H5Type>(loc: &Group, name: &str, rest: &[usize]) -> Result<Dataset
     loc.new_dataset::<T>()
         .shape(SimpleExtents::resizable(dims))
         .chunk(chunk)
+        // Every row is written: no fill values (in parallel they cost a
+        // collective write of each new chunk).
+        .fill_time(hdf5::dataset::FillTime::Never)
         .create(name)
         .map_err(|e| format!("HDF5: cannot create {name}: {e}"))
 }
@@ -122,9 +126,13 @@ fn attr_num<T: H5Type>(loc: &hdf5::Location, name: &str, value: T) -> Result<(),
 
 /// The open run file and what each rank writes into it.
 pub struct RunFile {
-    file: File,
+    file: Option<File>,
+    /// How the file is (re)opened: MPI-IO on the world communicator.
+    fapl: hdf5::plist::FileAccess,
     path: std::path::PathBuf,
     xfer: Xfer,
+    /// Rank 0's transfers of replicated rows.
+    solo: Xfer,
     rank: u32,
     /// Owned nodes (global indices, ascending) and their local indices.
     node_rows: Rows,
@@ -145,6 +153,12 @@ impl RunFile {
         blocks: &[Box<dyn crate::solver::blocks::Block>],
         th: ThLayout,
     ) -> Result<RunFile, String> {
+        // A file of an earlier run is removed, not truncated: ext4 flushes a
+        // file truncated to zero when it is next closed (`auto_da_alloc`).
+        if ctx.world.rank() == 0 && path.is_file() {
+            std::fs::remove_file(path).map_err(|e| err(path, format!("cannot replace: {e}")))?;
+        }
+        ctx.world.barrier();
         let fapl = ctx.world.hdf5_mpio_access()?;
         let file = File::with_options()
             .set_access_plist(&fapl)
@@ -153,7 +167,7 @@ impl RunFile {
             .map_err(|e| err(path, format!("cannot create the HDF5 file: {e}")))?;
         let mut rf = RunFile::new(ctx, file, path, blocks, th)?;
         rf.write_header(ctx, blocks)?;
-        rf.file.flush().map_err(|e| err(path, e))?;
+        rf.checkpoint()?;
         Ok(rf)
     }
 
@@ -189,17 +203,19 @@ impl RunFile {
             ));
         }
         let mut rf = RunFile::new(ctx, file, path, blocks, th)?;
-        let states = rf.file.group("states").map_err(|e| err(path, e))?;
-        let mut names = states.member_names().map_err(|e| err(path, e))?;
-        names.sort();
-        for name in names {
-            if name.parse::<usize>().map_or(true, |i| i >= n_states) {
-                states.unlink(&name).map_err(|e| err(path, e))?;
+        {
+            let states = rf.f().group("states").map_err(|e| err(path, e))?;
+            let mut names = states.member_names().map_err(|e| err(path, e))?;
+            names.sort();
+            for name in names {
+                if name.parse::<usize>().map_or(true, |i| i >= n_states) {
+                    states.unlink(&name).map_err(|e| err(path, e))?;
+                }
             }
         }
         rf.truncate_th(th_rows)?;
         rf.th_rows = th_rows;
-        rf.file.flush().map_err(|e| err(path, e))?;
+        rf.checkpoint()?;
         Ok(rf)
     }
 
@@ -216,9 +232,11 @@ impl RunFile {
             .collect();
         let node_rows = Rows::from_sorted(node_local.iter().map(|&l| sd.node_global[l] as u64));
         Ok(RunFile {
-            file,
+            file: Some(file),
+            fapl: ctx.world.hdf5_mpio_access()?,
             path: path.to_path_buf(),
             xfer: Xfer::collective()?,
+            solo: Xfer::independent()?,
             rank: ctx.world.rank(),
             node_rows,
             node_local,
@@ -227,6 +245,31 @@ impl RunFile {
             th,
             th_rows: 0,
         })
+    }
+
+    fn f(&self) -> &File {
+        self.file.as_ref().expect("the run file is open")
+    }
+
+    /// Puts everything written so far in the file on disk's hands, complete
+    /// and readable (collective): closes the file and opens it again.
+    /// `H5Fflush` would do it too but, through MPI-IO, ends with
+    /// `MPI_File_sync`, an fsync on every rank: milliseconds each, and
+    /// stalls of tenths of a second while other processes write to the same
+    /// disk, with every rank waiting. A file being closed is not synced, and
+    /// a process killed afterwards leaves a file that reads up to this point
+    /// (the operating system has the data; only a machine crash could lose it).
+    pub fn checkpoint(&mut self) -> Result<(), String> {
+        if let Some(f) = self.file.take() {
+            f.close().map_err(|e| err(&self.path, e))?;
+        }
+        let f = File::with_options()
+            .set_access_plist(&self.fapl)
+            .map_err(|e| err(&self.path, e))?
+            .open_rw(&self.path)
+            .map_err(|e| err(&self.path, format!("cannot reopen the run file: {e}")))?;
+        self.file = Some(f);
+        Ok(())
     }
 
     /// Owned-node values, one row of `W` per owned node in global order.
@@ -253,12 +296,18 @@ impl RunFile {
         h5::write_rows(&ds, &self.node_rows, &self.node_values(f), &self.xfer)
     }
 
-    /// Replicated values written by rank 0.
+    /// Replicated values: every rank creates the dataset, rank 0 writes it.
     fn write_table<T: H5Type>(&self, g: &Group, name: &str, values: &[T]) -> Result<(), String> {
         let ds = dataset::<T>(g, name, &[values.len()])?;
-        let rows = Rows::root(values.len(), self.rank);
-        let data = if rows.is_empty() { &[][..] } else { values };
-        h5::write_rows(&ds, &rows, data, &self.xfer)
+        if self.rank == 0 && !values.is_empty() {
+            h5::write_rows(
+                &ds,
+                &Rows::range(0, values.len() as u64),
+                values,
+                &self.solo,
+            )?;
+        }
+        Ok(())
     }
 
     fn write_header(
@@ -267,7 +316,7 @@ impl RunFile {
         blocks: &[Box<dyn crate::solver::blocks::Block>],
     ) -> Result<(), String> {
         let g = ctx.g;
-        let root: &hdf5::Location = &self.file;
+        let root: &hdf5::Location = self.f();
         attr_str(root, "format", "crashsim-run 1")?;
         attr_str(root, "deck", &g.name)?;
         attr_str(root, "title", &g.title)?;
@@ -276,7 +325,7 @@ impl RunFile {
         attr_str(root, "units_time", &g.units.time)?;
         attr_str(root, "crashsim_version", env!("CARGO_PKG_VERSION"))?;
         attr_num(root, "ranks", ctx.world.size())?;
-        let mesh = self.file.create_group("mesh").map_err(|e| e.to_string())?;
+        let mesh = self.f().create_group("mesh").map_err(|e| e.to_string())?;
         let sd = ctx.sd;
         let ids: Vec<u64> = self
             .node_local
@@ -372,14 +421,12 @@ impl RunFile {
             .collect();
         self.write_table(&walls, "id", &wid)?;
         self.write_table(&walls, "title", &wtitle)?;
-        self.file
-            .create_group("states")
-            .map_err(|e| e.to_string())?;
+        self.f().create_group("states").map_err(|e| e.to_string())?;
         self.create_th(ctx)?;
         Ok(())
     }
 
-    /// Writes `/states/NNNN` (collective) and flushes the file.
+    /// Writes `/states/NNNN` (collective) and makes the file complete on disk.
     pub fn write_state(
         &mut self,
         ctx: &Context,
@@ -387,8 +434,20 @@ impl RunFile {
         s: &LoopState,
         contact_force: &[[f64; 3]],
     ) -> Result<(), String> {
+        // Every handle into the file is closed when this returns.
+        self.write_state_data(ctx, index, s, contact_force)?;
+        self.checkpoint()
+    }
+
+    fn write_state_data(
+        &mut self,
+        ctx: &Context,
+        index: usize,
+        s: &LoopState,
+        contact_force: &[[f64; 3]],
+    ) -> Result<(), String> {
         let sd = ctx.sd;
-        let states = self.file.group("states").map_err(|e| e.to_string())?;
+        let states = self.f().group("states").map_err(|e| e.to_string())?;
         let grp = states
             .create_group(&format!("{index:04}"))
             .map_err(|e| format!("HDF5: state {index}: {e}"))?;
@@ -422,18 +481,14 @@ impl RunFile {
             let ds = dataset::<u8>(&sub, "deleted", &[kr.total])?;
             h5::write_rows(&ds, &kr.rows, &del, &self.xfer)?;
         }
-        self.flush()
-    }
-
-    pub fn flush(&self) -> Result<(), String> {
-        self.file.flush().map_err(|e| err(&self.path, e))
+        Ok(())
     }
 
     fn create_th(&self, ctx: &Context) -> Result<(), String> {
         use super::history::{
             GLOBAL_COLUMNS, INTERFACE_COLUMNS, NODE_COLUMNS, PART_COLUMNS, WALL_COLUMNS,
         };
-        let th = self.file.create_group("th").map_err(|e| e.to_string())?;
+        let th = self.f().create_group("th").map_err(|e| e.to_string())?;
         growing::<f64>(&th, "time", &[])?;
         growing::<u64>(&th, "cycle", &[])?;
         let ds = growing::<f64>(&th, "global", &[GLOBAL_COLUMNS.len()])?;
@@ -486,7 +541,7 @@ impl RunFile {
         names
             .into_iter()
             .map(|(n, w)| {
-                self.file
+                self.f()
                     .dataset(n)
                     .map(|d| (d, w))
                     .map_err(|e| err(&self.path, format!("{n}: {e}")))
@@ -511,36 +566,31 @@ impl RunFile {
             return Ok(());
         }
         let first = self.th_rows;
-        let sel = if self.rank == 0 {
-            Rows::range(first as u64, n_new as u64)
-        } else {
-            Rows::default()
-        };
+        let sel = Rows::range(first as u64, n_new as u64);
+        let root = self.rank == 0;
         // Values of one row are laid out dataset after dataset (see
-        // `ThRow`), the cycle apart.
+        // `ThRow`), the cycle apart. Every rank extends each dataset
+        // (collective); rank 0 alone writes the rows.
         let mut off = 0usize;
         for (i, (ds, w)) in self.th_datasets()?.into_iter().enumerate() {
             let mut shape = ds.shape();
             shape[0] = first + n_new;
             ds.resize(shape).map_err(|e| err(&self.path, e))?;
             if i == 1 {
-                let data: Vec<u64> = if sel.is_empty() {
-                    Vec::new()
-                } else {
-                    rows.iter().map(|r| r.cycle).collect()
-                };
-                h5::write_rows(&ds, &sel, &data, &self.xfer)?;
+                if root {
+                    let data: Vec<u64> = rows.iter().map(|r| r.cycle).collect();
+                    h5::write_rows(&ds, &sel, &data, &self.solo)?;
+                }
                 continue;
             }
-            let data: Vec<f64> = if sel.is_empty() {
-                Vec::new()
-            } else {
-                rows.iter()
+            if root && w > 0 {
+                let data: Vec<f64> = rows
+                    .iter()
                     .flat_map(|r| r.values[off..off + w].iter().copied())
-                    .collect()
-            };
+                    .collect();
+                h5::write_rows(&ds, &sel, &data, &self.solo)?;
+            }
             off += w;
-            h5::write_rows(&ds, &sel, &data, &self.xfer)?;
         }
         self.th_rows = first + n_new;
         Ok(())

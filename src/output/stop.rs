@@ -1,7 +1,8 @@
 //! Stop requests: SIGTERM and SIGINT set a flag (nothing else happens in
 //! the handler, as signal-hook does it); the loop reads it once per cycle
-//! and the ranks agree with an all-reduce, so that every rank stops at the
-//! same cycle and writes the restart file together. A second signal ends
+//! and the ranks agree with an all-reduce (non-blocking, completed the next
+//! cycle: `parallel::StopVote`), so that every rank stops at the same cycle
+//! — the one after the signal — and writes the restart file together. A second signal ends
 //! the process at once (exit 128 + signal), for a run stuck elsewhere.
 //!
 //! Test hooks (environment, read once): `CRASHSIM_SIGNAL_AT=RANK:CYCLE`
