@@ -367,11 +367,7 @@ impl ContactSystem {
     }
 
     fn seg_x(&self, seg: &[u32; 4]) -> Option<[V3; 4]> {
-        if seg.iter().all(|&c| self.avail[c as usize]) {
-            Some(seg.map(|c| self.cx[c as usize]))
-        } else {
-            None
-        }
+        seg_values(seg, &self.avail, &self.cx)
     }
 
     /// Broad phase for every TYPE7 pass: candidates within gap + margin, segments
@@ -441,9 +437,6 @@ impl ContactSystem {
                         state.push(st);
                     }
                 }
-                if std::env::var_os("CRASHSIM_DEBUG_CONTACT").is_some() {
-                    eprintln!("search iface {} pass {pi}: {} sec, {} segs, raw {} cand {} reach {} method {:?}", it.id, run.mine.len(), p.segs.len(), raw.segs.len(), cand.segs.len(), it.max_gap + it.margin, method);
-                }
                 let run = &mut self.runs[ii][pi];
                 run.cand = cand;
                 run.state = state;
@@ -473,11 +466,7 @@ impl ContactSystem {
                     };
                     for m in segs {
                         let seg = &p.segs[m as usize];
-                        let Some(xm) = (if seg.iter().all(|&c| self.avail[c as usize]) {
-                            Some(seg.map(|c| self.cx[c as usize]))
-                        } else {
-                            None
-                        }) else {
+                        let Some(xm) = seg_values(seg, &self.avail, &self.cx) else {
                             continue;
                         };
                         let tri = p.is_tri(m as usize);
@@ -531,11 +520,7 @@ impl ContactSystem {
                 let run = &mut self.runs[ii][pi];
                 let seg_xv = |m: u32| -> Option<([V3; 4], [V3; 4])> {
                     let seg = &p.segs[m as usize];
-                    if seg.iter().all(|&c| avail[c as usize]) {
-                        Some((seg.map(|c| cx[c as usize]), seg.map(|c| cv[c as usize])))
-                    } else {
-                        None
-                    }
+                    Some((seg_values(seg, avail, cx)?, seg_values(seg, avail, cv)?))
                 };
                 // Per node: its pairs' forces, computed in parallel, gathered in order.
                 let results: Vec<(Vec<Contribution>, Option<(f64, u64)>, InterfaceSums)> = match it
@@ -780,6 +765,16 @@ fn emit(
     }
     sums.pairs += 1;
     sums.energy -= geo::dot(f.fs, vrel);
+}
+
+/// A segment's nodal values (positions or velocities), or `None` when one of
+/// its nodes is neither held nor received as a ghost on this rank.
+fn seg_values(seg: &[u32; 4], avail: &[bool], a: &[V3]) -> Option<[V3; 4]> {
+    if seg.iter().all(|&c| avail[c as usize]) {
+        Some(seg.map(|c| a[c as usize]))
+    } else {
+        None
+    }
 }
 
 /// The gap of pair (secondary k, segment m) (card eq. (8)–(10)).
