@@ -18,6 +18,7 @@ pub mod interfaces;
 pub mod search;
 pub mod setup;
 pub mod stiffness;
+pub mod tied;
 
 use crate::domain::Subdomain;
 use crate::parallel::World;

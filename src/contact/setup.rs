@@ -302,13 +302,18 @@ struct Common {
 
 /// Builds the contact set-up; `holders[g]` lists the ranks holding global node g.
 pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<ContactSetup, String> {
-    if m.interfaces.is_empty() {
+    // TYPE2 (tied) is a kinematic condition, built by `super::tied`.
+    let contact_ifaces = m
+        .interfaces
+        .iter()
+        .filter(|i| !matches!(i.card.kind, InterfaceKind::Type2(_)));
+    if contact_ifaces.clone().next().is_none() {
         return Ok(ContactSetup::default());
     }
     let faces = FaceIndex::build(m);
     // Contact nodes.
     let mut all: Vec<u32> = Vec::new();
-    for i in &m.interfaces {
+    for i in contact_ifaces.clone() {
         all.extend(i.secondary_nodes.iter().copied());
         all.extend(i.main_segments.iter().flatten().copied());
         all.extend(i.secondary_segments.iter().flatten().copied());
@@ -317,7 +322,7 @@ pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<ContactSetup, String> {
     all.dedup();
     let cn = |g: u32| all.binary_search(&g).expect("contact node") as u32;
     let mut interfaces = Vec::new();
-    for i in &m.interfaces {
+    for i in contact_ifaces {
         let c = &i.card;
         let kw = format!("{}: /INTER/TYPE{}/{}", c.loc, c.type_number(), c.id);
         let (common, t7) = match &c.kind {

@@ -36,6 +36,8 @@ pub struct GlobalData {
     pub th_nodes: Vec<u32>,
     /// Contact interfaces, resolved (empty without /INTER).
     pub contact: crate::contact::setup::ContactSetup,
+    /// Tied interfaces (/INTER/TYPE2), resolved.
+    pub tied: crate::contact::tied::TiedSetup,
 }
 
 impl GlobalData {
@@ -63,6 +65,7 @@ impl GlobalData {
             added_mass: m.mass.added_total,
             th_nodes: Vec::new(),
             contact: Default::default(),
+            tied: Default::default(),
         }
     }
 }

@@ -110,6 +110,7 @@ fn prepare(opts: &RunOptions, nranks: usize) -> Result<Prepared, String> {
         }
     }
     g.contact = crate::contact::setup::build(&m, &holders)?;
+    g.tied = crate::contact::tied::build(&m, &holders)?;
     for th in m.time_histories.iter().filter(|t| t.kind == "NODE") {
         for &id in &th.objects {
             let i = m.nodes.ids.binary_search(&id).map_err(|_| {
@@ -130,6 +131,7 @@ fn prepare(opts: &RunOptions, nranks: usize) -> Result<Prepared, String> {
             }
         }
     }
+    notes.extend(g.tied.notes());
     // N = 0 with a law the reference engine does not integrate globally.
     let mut seen = std::collections::BTreeSet::new();
     for part in &m.parts {
@@ -253,7 +255,51 @@ fn check_interface(c: &deck::InterfaceCard) -> Result<(), String> {
     let kw = format!("{}: /INTER/TYPE{}/{}", c.loc, c.type_number(), c.id);
     let no = |what: &str| Err(format!("{kw}: {what} is not supported by the engine yet"));
     match &c.kind {
-        K::Type2(_) => no("TYPE2 (tied interface)"),
+        K::Type2(t) => {
+            // Spotflag 0 reads as 5 (deck::interfaces::read_type2): the standard
+            // kinematic formulation is the one computed (contact::interfaces::type2).
+            let fo = |field: &str, what: &str| {
+                Err(format!(
+                    "{kw}, field {field}: {what} is not supported by the engine yet"
+                ))
+            };
+            match t.spotflag {
+                5 => {}
+                1 => return fo("Spotflag", "Spotflag = 1 (optimized spotweld formulation, element mean rigid motion)"),
+                2 => return fo("Spotflag", "Spotflag = 2 (formulation for hierarchy levels)"),
+                3 => return fo("Spotflag", "Spotflag = 3"),
+                4 => return fo("Spotflag", "Spotflag = 4 (rotations not transmitted)"),
+                10..=12 => return fo("Spotflag", &format!("Spotflag = {} (formulation with rotations of bricks)", t.spotflag)),
+                20..=22 => return fo("Spotflag", &format!("Spotflag = {} (formulation with failure, rupture cards)", t.spotflag)),
+                25..=28 => return fo("Spotflag", &format!("Spotflag = {} (penalty formulation, penalty card)", t.spotflag)),
+                30 => return fo("Spotflag", "Spotflag = 30"),
+                other => return fo("Spotflag", &format!("Spotflag = {other}")),
+            }
+            if t.level != 0 {
+                return fo("Level", "a hierarchy level (Level > 0)");
+            }
+            if t.isearch == 1 {
+                return fo("Isearch", "Isearch = 1 (old search)");
+            }
+            if t.idel2 != 1000 {
+                return fo("Idel2", "Idel2 (releasing nodes when main elements are deleted)");
+            }
+            if matches!(t.ignore, 2 | 3) && t.dsearch == 0.0 {
+                return fo("Ignore", "Ignore = 2 or 3 with dsearch = 0 (recomputed search distance)");
+            }
+            if t.rupture.is_some() {
+                return fo("Rupt", "the rupture cards");
+            }
+            if t.penalty.is_some() {
+                return fo("Stfac", "the penalty card");
+            }
+            if let Some(th) = &t.thermal {
+                if th.ithe != 0 {
+                    return fo("Ithe", "heat transfer (Ithe = 1)");
+                }
+            }
+            Ok(())
+        }
         K::Type11(_) => no("TYPE11 (edge to edge)"),
         K::Type3(t) => {
             if t.idel != 0 {
@@ -403,8 +449,18 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
     let mut x = sd.x.clone();
     let mut v = vec![[0.0f64; 3]; n];
     let mut vr = vec![[0.0f64; 3]; n];
-    let mass = sd.mass.clone();
-    let inertia = sd.inertia.clone();
+    // Gravity acts on each node's own mass; the dynamics use the masses with
+    // the tied secondary nodes' masses and inertias moved to their main nodes
+    // (/INTER/TYPE2, contact::tied).
+    let grav_mass = sd.mass.clone();
+    let mut mass = sd.mass.clone();
+    let mut inertia = sd.inertia.clone();
+    let mut ties = crate::contact::tied::TiedSystem::new(g.tied.clone(), &sd);
+    ties.add_masses(&mut mass, &mut inertia);
+    let (mass, inertia) = (mass, inertia);
+    // Tied secondary nodes: translation (and rotation) follow their main segment.
+    let (tied_tr, tied_rot) = ties.masks(n);
+    let mut ftie = vec![[0.0f64; 6]; n];
     let mut fixed = vec![[false; 6]; n];
     for c in &g.bcs {
         for l in locals(&c.nodes) {
@@ -444,6 +500,9 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
             main_mass: rb.card.mass + main_node_mass(&sd, main_local),
         });
     }
+    // Kinetic energy: rigid-body main nodes are counted by their body, tied
+    // secondary nodes by their main nodes (which carry their mass).
+    let ke_skip: Vec<bool> = (0..n).map(|l| is_main[l] || tied_tr[l]).collect();
     let walls: Vec<(Vec<u32>, &model::RigidWall)> = g
         .rigid_walls
         .iter()
@@ -627,9 +686,13 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
     let mut e_int = 0.0f64;
     let mut w_ext = 0.0f64;
     let mut wall_work = 0.0f64;
+    // Tied secondary nodes start with their main segment's motion.
+    if !ties.is_empty() {
+        ties.recover(world, &mut v, &mut vr);
+    }
     let stop = compute_all(&mut blocks, &offsets, &x, &v, &vr, 0.0, &mut contrib);
     plan.assemble(world, &contrib, &mut fint);
-    external_forces(&g, &fct_index, &cloads, &gravity, &mass, t, &mut fext);
+    external_forces(&g, &fct_index, &cloads, &gravity, &grav_mass, t, &mut fext);
     let cstep = contact_forces(&mut contact, &x, &v, t, 0.0, &mut fcont, &mut fixed);
     let mut step = global_step(
         world,
@@ -650,7 +713,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
         &mass,
         &inertia,
         &owned,
-        &is_main,
+        &ke_skip,
         &bodies,
         &local_bodies,
     );
@@ -767,7 +830,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
             &mass,
             &inertia,
             &owned,
-            &is_main,
+            &ke_skip,
             b,
             &local_bodies,
         )
@@ -826,22 +889,38 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
         } else {
             0.5 * (dt_prev + dt)
         };
+        // Tied interfaces: the secondary nodes' forces and moments go to their
+        // main nodes (contact::interfaces::type2), summed in key order.
+        if !ties.is_empty() {
+            let f_of = |l: usize| {
+                let mut f = [0.0; 6];
+                for k in 0..3 {
+                    f[k] = fext[l][k] - fint[l][k] + fcont[l][k];
+                    f[3 + k] = fext[l][3 + k] - fint[l][3 + k];
+                }
+                f
+            };
+            ties.transfer(world, &f_of, &mut ftie);
+        }
         // Accelerations and velocities at n+½.
         for l in 0..n {
             if is_main[l] {
                 continue;
             }
-            if mass[l] > 0.0 {
+            if mass[l] > 0.0 && !tied_tr[l] {
                 for k in 0..3 {
                     if !fixed[l][k] {
-                        v[l][k] += (fext[l][k] - fint[l][k] + fcont[l][k]) / mass[l] * dt_v;
+                        v[l][k] +=
+                            (fext[l][k] - fint[l][k] + fcont[l][k] + ftie[l][k]) / mass[l] * dt_v;
                     }
                 }
             }
-            if inertia[l] > 0.0 {
+            if inertia[l] > 0.0 && !tied_rot[l] {
                 for k in 0..3 {
                     if !fixed[l][3 + k] {
-                        vr[l][k] += (fext[l][3 + k] - fint[l][3 + k]) / inertia[l] * dt_v;
+                        vr[l][k] += (fext[l][3 + k] - fint[l][3 + k] + ftie[l][3 + k])
+                            / inertia[l]
+                            * dt_v;
                     }
                 }
             }
@@ -990,6 +1069,10 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
                 }
             }
         }
+        // Tied secondary nodes follow their main nodes (after every other condition).
+        if !ties.is_empty() {
+            ties.recover(world, &mut v, &mut vr);
+        }
         // External work over the step, with the forces at n.
         for l in 0..n {
             if owned[l] {
@@ -1000,10 +1083,10 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
                     // with the mean of the velocities before and after the step:
                     // f·v_after alone overstates the work by (f·Δt)²/2M, which
                     // adds up when friction forces are large and their work small.
-                    let dv = if fixed[l][k] || mass[l] <= 0.0 {
+                    let dv = if fixed[l][k] || mass[l] <= 0.0 || tied_tr[l] {
                         0.0
                     } else {
-                        (fext[l][k] - fint[l][k] + fcont[l][k]) / mass[l] * dt_v
+                        (fext[l][k] - fint[l][k] + fcont[l][k] + ftie[l][k]) / mass[l] * dt_v
                     };
                     e_contact -= fcont[l][k] * (v[l][k] - 0.5 * dv) * dt_v;
                 }
@@ -1050,7 +1133,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
         // Forces at n+1.
         let stop = compute_all(&mut blocks, &offsets, &x, &v, &vr, dt, &mut contrib);
         plan.assemble(world, &contrib, &mut fint);
-        external_forces(&g, &fct_index, &cloads, &gravity, &mass, t, &mut fext);
+        external_forces(&g, &fct_index, &cloads, &gravity, &grav_mass, t, &mut fext);
         let cstep = contact_forces(&mut contact, &x, &v, t, dt, &mut fcont, &mut fixed);
         if !contact.is_empty() {
             contact_force.clone_from(&fcont);
@@ -1103,7 +1186,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
                 &mass,
                 &inertia,
                 &owned,
-                &is_main,
+                &ke_skip,
                 &bodies,
                 &local_bodies,
             );
@@ -1122,7 +1205,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
                 &mass,
                 &inertia,
                 &owned,
-                &is_main,
+                &ke_skip,
                 &bodies,
                 &local_bodies,
             );
@@ -1167,6 +1250,34 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
                 }
             }
         }
+        // Tied interfaces: what the secondary nodes passed to their main nodes.
+        if !ties.is_empty() && (cycle % print_every == 0 || t >= tstop) {
+            let mut r: Vec<f64> = ties
+                .sums
+                .iter()
+                .flat_map(|s| {
+                    [
+                        s.tied as f64,
+                        s.force[0],
+                        s.force[1],
+                        s.force[2],
+                        s.moment[0],
+                        s.moment[1],
+                        s.moment[2],
+                    ]
+                })
+                .collect();
+            world.sum_f64(&mut r);
+            if let Some(l) = &mut listing {
+                for (i, it) in ties.setup.interfaces.iter().enumerate() {
+                    let q = &r[7 * i..7 * i + 7];
+                    l.line(&format!(
+                        "     INTER {:>8} TYPE2  TIED NODES {:>6}  FORCE {:>12.5E} {:>12.5E} {:>12.5E}  MOMENT {:>12.5E} {:>12.5E} {:>12.5E}",
+                        it.id, q[0] as u64, q[1], q[2], q[3], q[4], q[5], q[6]
+                    ));
+                }
+            }
+        }
         // Output hook: histories, states, restart files, progress, stop requests.
         match out.after_cycle(&octx, &mut loop_state!()) {
             Ok(None) => {}
@@ -1204,7 +1315,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
             &mass,
             &inertia,
             &owned,
-            &is_main,
+            &ke_skip,
             &bodies,
             &local_bodies,
         );

@@ -2,6 +2,7 @@
 //! each file turns one measured node–segment pair into the force on the
 //! secondary node (the segment nodes take −N_i times it, EQ. 8.6.6.4–6).
 
+pub mod type2;
 pub mod type5;
 pub mod type7;
 
