@@ -76,7 +76,10 @@ fn a_tied_bent_strip_deflects_as_the_continuous_one_not_as_a_hinge() {
     // length a) turns about it under P, w_tip ≈ ½·(3P/m2)·t² at t = 5.984.
     let m2 = RHO * 1.0 * 10.0 * 50.0;
     let hinge = 0.5 * 3.0 * 5.25e-5 / m2 * 5.984f64.powi(2);
-    eprintln!("bending: a hinge would give ~{hinge:.4} mm ({:.1} x)", hinge / wc);
+    eprintln!(
+        "bending: a hinge would give ~{hinge:.4} mm ({:.1} x)",
+        hinge / wc
+    );
     assert!(hinge > 3.0 * wt);
     // The statics: first peak ~2x the static P L³/(3EI) = 0.1 mm.
     assert!(wt > 0.17 && wt < 0.22, "{wt}");
@@ -95,10 +98,19 @@ fn a_tied_bent_strip_deflects_as_the_continuous_one_not_as_a_hinge() {
     assert!(wy.abs() > 0.0);
     let w22 = rows[&22][1];
     let want = rows[&MAIN[0]][1] / 3.0 + 2.0 * rows[&MAIN[1]][1] / 3.0;
-    assert!((w22 - want).abs() < 1e-12 * (1.0 + want.abs()), "{w22} vs {want}");
+    assert!(
+        (w22 - want).abs() < 1e-12 * (1.0 + want.abs()),
+        "{w22} vs {want}"
+    );
     // The listing names the interface.
-    assert!(r.listing.text.contains("/INTER/TYPE2/1: 4 secondary nodes tied"));
-    assert!(r.listing.text.contains("INTER        1 TYPE2  TIED NODES      4"));
+    assert!(r
+        .listing
+        .text
+        .contains("/INTER/TYPE2/1: 4 secondary nodes tied"));
+    assert!(r
+        .listing
+        .text
+        .contains("INTER        1 TYPE2  TIED NODES      4"));
 }
 
 #[test]
@@ -154,7 +166,9 @@ fn a_flying_tied_strip_keeps_momentum_and_energy_and_bytes_on_1_2_4_ranks() {
         .map(|k| (p[k] - want[k]).abs())
         .fold(0.0f64, f64::max)
         / (mtot * 1.0);
-    eprintln!("free flight: momentum {p:?}, expected {want:?}, error {err:.2e} (relative to M·|v0x|)");
+    eprintln!(
+        "free flight: momentum {p:?}, expected {want:?}, error {err:.2e} (relative to M·|v0x|)"
+    );
     assert!(err < 1e-12, "momentum error {err}");
     // Energy balance: internal + kinetic − initial kinetic − external work,
     // against the continuous strip in the same flight.
@@ -166,7 +180,9 @@ fn a_flying_tied_strip_keeps_momentum_and_energy_and_bytes_on_1_2_4_ranks() {
     let bt = balance(&rows);
     let (rc, _) = state("cont_free", "free-c", &a);
     let bc = balance(&rc.energies().1);
-    eprintln!("free flight: energy balance tied {bt:.3e}, continuous {bc:.3e} (of the external work)");
+    eprintln!(
+        "free flight: energy balance tied {bt:.3e}, continuous {bc:.3e} (of the external work)"
+    );
     assert!(bt.abs() < 1e-3 && bt.abs() <= 2.0 * bc.abs() + 1e-5);
     // The partition puts the secondary and main nodes on different ranks.
     let part = common::crashsim_json(&["partition", d.to_str().unwrap(), "--np", "2", "--json"]);
@@ -196,7 +212,11 @@ fn variant(tag: &str, edit: &dyn Fn(String) -> String) -> PathBuf {
     assert_ne!(new, text, "{tag}: the edit changed nothing");
     let p = dir.join("tied_bend_0000.rad");
     std::fs::write(&p, new).unwrap();
-    std::fs::copy(src.with_file_name("tied_bend_0001.rad"), dir.join("tied_bend_0001.rad")).unwrap();
+    std::fs::copy(
+        src.with_file_name("tied_bend_0001.rad"),
+        dir.join("tied_bend_0001.rad"),
+    )
+    .unwrap();
     p
 }
 
@@ -238,13 +258,28 @@ fn type2_options_the_engine_does_not_compute_are_refused_by_field() {
         ("ignore2", card(2, 0, 0, 0, 0), "field Ignore"),
     ] {
         let d = variant(tag, &with(c));
-        refused(&d, &["tied_bend_0000.rad:", "/INTER/TYPE2/1", field, "not supported by the engine yet"]);
+        refused(
+            &d,
+            &[
+                "tied_bend_0000.rad:",
+                "/INTER/TYPE2/1",
+                field,
+                "not supported by the engine yet",
+            ],
+        );
     }
     // The penalty formulation (with its card) and heat transfer.
     let d = variant("spot25", &|t: String| {
-        t.replace(CARD, &(card(0, 25, 0, 0, 0) + "\n                   0                   0                             0"))
+        t.replace(
+            CARD,
+            &(card(0, 25, 0, 0, 0)
+                + "\n                   0                   0                             0"),
+        )
     });
-    refused(&d, &["/INTER/TYPE2/1", "field Spotflag", "Spotflag = 25 (penalty"]);
+    refused(
+        &d,
+        &["/INTER/TYPE2/1", "field Spotflag", "Spotflag = 25 (penalty"],
+    );
     let d = variant("ithe", &|t: String| {
         t.replace(CARD, &format!("{CARD}\n         1                   1"))
     });
@@ -253,15 +288,22 @@ fn type2_options_the_engine_does_not_compute_are_refused_by_field() {
     let d = variant("bcs", &|t: String| {
         t.replace("/END", "/BCS/9\nconflict\n#  Tra rot   skew_ID  grnod_ID\n   100 000         0        10\n/END")
     });
-    refused(&d, &["/INTER/TYPE2/1", "grnd_IDs", "secondary node 11", "/BCS/9"]);
+    refused(
+        &d,
+        &["/INTER/TYPE2/1", "grnd_IDs", "secondary node 11", "/BCS/9"],
+    );
     // A node tied twice.
     let d = variant("twice", &|t: String| {
-        t.replace(
-            "/END",
-            "/INTER/TYPE2/2\nagain\n        10        20\n/END",
-        )
+        t.replace("/END", "/INTER/TYPE2/2\nagain\n        10        20\n/END")
     });
-    refused(&d, &["/INTER/TYPE2/2", "grnd_IDs", "already a secondary node of /INTER/TYPE2/1"]);
+    refused(
+        &d,
+        &[
+            "/INTER/TYPE2/2",
+            "grnd_IDs",
+            "already a secondary node of /INTER/TYPE2/1",
+        ],
+    );
     // A secondary node on its own main surface.
     let d = variant("self", &|t: String| {
         t.replace(
@@ -269,5 +311,12 @@ fn type2_options_the_engine_does_not_compute_are_refused_by_field() {
             "/GRNOD/NODE/16\nmain node\n      1001\n/INTER/TYPE2/3\nself\n        16        20\n/END",
         )
     });
-    refused(&d, &["/INTER/TYPE2/3", "grnd_IDs", "node 1001 is both a secondary node"]);
+    refused(
+        &d,
+        &[
+            "/INTER/TYPE2/3",
+            "grnd_IDs",
+            "node 1001 is both a secondary node",
+        ],
+    );
 }

@@ -101,48 +101,72 @@ impl TiedSetup {
 
 /// Builds the TYPE2 set-up on rank 0; `holders[g]` lists the ranks holding global node g.
 pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<TiedSetup, String> {
-    let mut raw: Vec<(u64, String, Vec<(u32, [u32; 4], [f64; 4], V3, bool)>, Vec<u64>, bool, f64)> =
-        Vec::new();
+    let mut raw: Vec<(
+        u64,
+        String,
+        Vec<(u32, [u32; 4], [f64; 4], V3, bool)>,
+        Vec<u64>,
+        bool,
+        f64,
+    )> = Vec::new();
     // Every node constrained by some other condition, for the conflict checks.
     let mut bc_of: std::collections::HashMap<u32, String> = Default::default();
     for c in &m.bcs {
         if c.card.fixed.iter().any(|&f| f) {
             for &n in &c.nodes {
-                bc_of.entry(n).or_insert(format!("{}: /BCS/{}", c.card.loc, c.card.id));
+                bc_of
+                    .entry(n)
+                    .or_insert(format!("{}: /BCS/{}", c.card.loc, c.card.id));
             }
         }
     }
     for c in &m.imposed_velocities {
         for &n in &c.nodes {
-            bc_of.entry(n).or_insert(format!("{}: /IMPVEL/{}", c.card.loc, c.card.id));
+            bc_of
+                .entry(n)
+                .or_insert(format!("{}: /IMPVEL/{}", c.card.loc, c.card.id));
         }
     }
     for c in &m.imposed_displacements {
         for &n in &c.nodes {
-            bc_of.entry(n).or_insert(format!("{}: /IMPDISP/{}", c.card.loc, c.card.id));
+            bc_of
+                .entry(n)
+                .or_insert(format!("{}: /IMPDISP/{}", c.card.loc, c.card.id));
         }
     }
     let mut rb_of: std::collections::HashMap<u32, String> = Default::default();
     for r in &m.rigid_bodies {
-        for &n in r.secondary_nodes.iter().chain(std::iter::once(&r.main_node)) {
-            rb_of.entry(n).or_insert(format!("{}: /RBODY/{}", r.card.loc, r.card.id));
+        for &n in r
+            .secondary_nodes
+            .iter()
+            .chain(std::iter::once(&r.main_node))
+        {
+            rb_of
+                .entry(n)
+                .or_insert(format!("{}: /RBODY/{}", r.card.loc, r.card.id));
         }
     }
     for w in &m.rigid_walls {
         for &n in &w.secondary_nodes {
-            rb_of.entry(n).or_insert(format!("{}: /RWALL/{}", w.card.loc, w.card.id));
+            rb_of
+                .entry(n)
+                .or_insert(format!("{}: /RWALL/{}", w.card.loc, w.card.id));
         }
     }
     // Secondary nodes over all TYPE2 (tied twice) and main nodes (chains).
     let mut tied_by: std::collections::HashMap<u32, u64> = Default::default();
-    let mut main_of: std::collections::HashMap<u32, u64> = Default::default();
+    let mut kws: Vec<String> = Vec::new();
     let nid = |n: u32| m.nodes.ids[n as usize];
     for i in &m.interfaces {
-        let InterfaceKind::Type2(t) = &i.card.kind else { continue };
+        let InterfaceKind::Type2(t) = &i.card.kind else {
+            continue;
+        };
         let c = &i.card;
         let kw = format!("{}: /INTER/TYPE2/{}", c.loc, c.id);
         if i.main_segments.is_empty() {
-            return Err(format!("{kw}, field surf_IDm: the main surface has no segment"));
+            return Err(format!(
+                "{kw}, field surf_IDm: the main surface has no segment"
+            ));
         }
         // dsearch: 0 → the mean size of the main segments (reference guide, /INTER/TYPE2 dsearch).
         let dsearch = if t.dsearch > 0.0 {
@@ -163,9 +187,6 @@ pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<TiedSetup, String> {
         let mut main_nodes: Vec<u32> = i.main_segments.iter().flatten().copied().collect();
         main_nodes.sort_unstable();
         main_nodes.dedup();
-        for &n in &main_nodes {
-            main_of.entry(n).or_insert(c.id);
-        }
         let mut ties = Vec::new();
         let mut untied = Vec::new();
         for &s in &i.secondary_nodes {
@@ -213,27 +234,27 @@ pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<TiedSetup, String> {
         }
         let removed = matches!(t.ignore, 1..=3);
         raw.push((c.id, c.title.clone(), ties, untied, removed, dsearch));
+        kws.push(kw);
     }
     // Chains and rigid-body main nodes.
-    for (id, _, ties, _, _, _) in &raw {
+    for ((_, _, ties, _, _, _), kw) in raw.iter().zip(&kws) {
         for (_, seg, _, _, _) in ties {
             for &q in seg {
                 if let Some(other) = tied_by.get(&q) {
                     return Err(format!(
-                        "/INTER/TYPE2/{id}: main node {} is itself a secondary node of /INTER/TYPE2/{other}: tied-interface hierarchies (Level) are not supported by the engine yet",
+                        "{kw}, field surf_IDm: main node {} is itself a secondary node of /INTER/TYPE2/{other}: tied-interface hierarchies (Level) are not supported by the engine yet",
                         nid(q)
                     ));
                 }
                 if let Some(what) = rb_of.get(&q) {
                     return Err(format!(
-                        "/INTER/TYPE2/{id}: main node {} is also constrained by {what}: a tie onto a rigid body or wall is not supported by the engine yet",
+                        "{kw}, field surf_IDm: main node {} is also constrained by {what}: a tie onto a rigid body or wall is not supported by the engine yet",
                         nid(q)
                     ));
                 }
             }
         }
     }
-    let _ = main_of;
     let mut all: Vec<u32> = raw
         .iter()
         .flat_map(|r| r.2.iter().flat_map(|t| std::iter::once(t.0).chain(t.1)))
@@ -243,25 +264,27 @@ pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<TiedSetup, String> {
     let tn = |g: u32| all.binary_search(&g).expect("tnode") as u32;
     let interfaces = raw
         .into_iter()
-        .map(|(id, title, ties, untied, removed, dsearch)| TiedInterface {
-            id,
-            title,
-            ties: ties
-                .into_iter()
-                .map(|(s, seg, shape, offset, rot)| Tie {
-                    sec: tn(s),
-                    seg: seg.map(tn),
-                    shape,
-                    offset,
-                    rot,
-                    ms: m.nodal_mass[s as usize],
-                    is: m.nodal_inertia[s as usize],
-                })
-                .collect(),
-            untied,
-            removed,
-            dsearch,
-        })
+        .map(
+            |(id, title, ties, untied, removed, dsearch)| TiedInterface {
+                id,
+                title,
+                ties: ties
+                    .into_iter()
+                    .map(|(s, seg, shape, offset, rot)| Tie {
+                        sec: tn(s),
+                        seg: seg.map(tn),
+                        shape,
+                        offset,
+                        rot,
+                        ms: m.nodal_mass[s as usize],
+                        is: m.nodal_inertia[s as usize],
+                    })
+                    .collect(),
+                untied,
+                removed,
+                dsearch,
+            },
+        )
         .collect();
     let mut holders_ptr = vec![0u32];
     let mut hs = Vec::new();
@@ -405,7 +428,12 @@ impl TiedSystem {
     /// force the node would integrate, external − internal + contact) spread
     /// over their main nodes: returns the shares per local node in `ftie`,
     /// summed in key order (collective).
-    pub fn transfer(&mut self, world: &World, f: &dyn Fn(usize) -> [f64; 6], ftie: &mut [[f64; 6]]) {
+    pub fn transfer(
+        &mut self,
+        world: &World,
+        f: &dyn Fn(usize) -> [f64; 6],
+        ftie: &mut [[f64; 6]],
+    ) {
         for x in ftie.iter_mut() {
             *x = [0.0; 6];
         }
@@ -422,7 +450,11 @@ impl TiedSystem {
                 }
                 let fs = f(l as usize);
                 let force = [fs[0], fs[1], fs[2]];
-                let moment = if tie.rot { [fs[3], fs[4], fs[5]] } else { [0.0; 3] };
+                let moment = if tie.rot {
+                    [fs[3], fs[4], fs[5]]
+                } else {
+                    [0.0; 3]
+                };
                 let sh = type2::spread(&tie.shape, force, moment, tie.offset, tie.rot);
                 let su = &mut self.sums[ii];
                 su.tied += 1;
@@ -498,8 +530,11 @@ impl TiedSystem {
                     b
                 })
                 .collect();
-            let mut recv: Vec<Vec<f64>> =
-                self.recv.iter().map(|ids| vec![0.0; 6 * ids.len()]).collect();
+            let mut recv: Vec<Vec<f64>> = self
+                .recv
+                .iter()
+                .map(|ids| vec![0.0; 6 * ids.len()])
+                .collect();
             world.exchange_f64(&self.ranks, &send, &mut recv);
             for (ids, b) in self.recv.iter().zip(&recv) {
                 for (j, &q) in ids.iter().enumerate() {

@@ -265,13 +265,47 @@ fn check_interface(c: &deck::InterfaceCard) -> Result<(), String> {
             };
             match t.spotflag {
                 5 => {}
-                1 => return fo("Spotflag", "Spotflag = 1 (optimized spotweld formulation, element mean rigid motion)"),
-                2 => return fo("Spotflag", "Spotflag = 2 (formulation for hierarchy levels)"),
+                1 => {
+                    return fo(
+                        "Spotflag",
+                        "Spotflag = 1 (optimized spotweld formulation, element mean rigid motion)",
+                    )
+                }
+                2 => {
+                    return fo(
+                        "Spotflag",
+                        "Spotflag = 2 (formulation for hierarchy levels)",
+                    )
+                }
                 3 => return fo("Spotflag", "Spotflag = 3"),
                 4 => return fo("Spotflag", "Spotflag = 4 (rotations not transmitted)"),
-                10..=12 => return fo("Spotflag", &format!("Spotflag = {} (formulation with rotations of bricks)", t.spotflag)),
-                20..=22 => return fo("Spotflag", &format!("Spotflag = {} (formulation with failure, rupture cards)", t.spotflag)),
-                25..=28 => return fo("Spotflag", &format!("Spotflag = {} (penalty formulation, penalty card)", t.spotflag)),
+                10..=12 => {
+                    return fo(
+                        "Spotflag",
+                        &format!(
+                            "Spotflag = {} (formulation with rotations of bricks)",
+                            t.spotflag
+                        ),
+                    )
+                }
+                20..=22 => {
+                    return fo(
+                        "Spotflag",
+                        &format!(
+                            "Spotflag = {} (formulation with failure, rupture cards)",
+                            t.spotflag
+                        ),
+                    )
+                }
+                25..=28 => {
+                    return fo(
+                        "Spotflag",
+                        &format!(
+                            "Spotflag = {} (penalty formulation, penalty card)",
+                            t.spotflag
+                        ),
+                    )
+                }
                 30 => return fo("Spotflag", "Spotflag = 30"),
                 other => return fo("Spotflag", &format!("Spotflag = {other}")),
             }
@@ -282,10 +316,16 @@ fn check_interface(c: &deck::InterfaceCard) -> Result<(), String> {
                 return fo("Isearch", "Isearch = 1 (old search)");
             }
             if t.idel2 != 1000 {
-                return fo("Idel2", "Idel2 (releasing nodes when main elements are deleted)");
+                return fo(
+                    "Idel2",
+                    "Idel2 (releasing nodes when main elements are deleted)",
+                );
             }
             if matches!(t.ignore, 2 | 3) && t.dsearch == 0.0 {
-                return fo("Ignore", "Ignore = 2 or 3 with dsearch = 0 (recomputed search distance)");
+                return fo(
+                    "Ignore",
+                    "Ignore = 2 or 3 with dsearch = 0 (recomputed search distance)",
+                );
             }
             if t.rupture.is_some() {
                 return fo("Rupt", "the rupture cards");
@@ -503,6 +543,17 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
     // Kinetic energy: rigid-body main nodes are counted by their body, tied
     // secondary nodes by their main nodes (which carry their mass).
     let ke_skip: Vec<bool> = (0..n).map(|l| is_main[l] || tied_tr[l]).collect();
+    // Rotational: a tied secondary node's inertia is its main nodes' unless
+    // only its translation is tied (main nodes without rotations).
+    let inertia_ke: Vec<f64> = (0..n)
+        .map(|l| {
+            if is_main[l] || tied_rot[l] {
+                0.0
+            } else {
+                inertia[l]
+            }
+        })
+        .collect();
     let walls: Vec<(Vec<u32>, &model::RigidWall)> = g
         .rigid_walls
         .iter()
@@ -711,7 +762,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
         &v,
         &vr,
         &mass,
-        &inertia,
+        &inertia_ke,
         &owned,
         &ke_skip,
         &bodies,
@@ -828,7 +879,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
             v,
             vr,
             &mass,
-            &inertia,
+            &inertia_ke,
             &owned,
             &ke_skip,
             b,
@@ -918,9 +969,8 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
             if inertia[l] > 0.0 && !tied_rot[l] {
                 for k in 0..3 {
                     if !fixed[l][3 + k] {
-                        vr[l][k] += (fext[l][3 + k] - fint[l][3 + k] + ftie[l][3 + k])
-                            / inertia[l]
-                            * dt_v;
+                        vr[l][k] +=
+                            (fext[l][3 + k] - fint[l][3 + k] + ftie[l][3 + k]) / inertia[l] * dt_v;
                     }
                 }
             }
@@ -1184,7 +1234,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
                 &v,
                 &vr,
                 &mass,
-                &inertia,
+                &inertia_ke,
                 &owned,
                 &ke_skip,
                 &bodies,
@@ -1203,7 +1253,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
                 &v,
                 &vr,
                 &mass,
-                &inertia,
+                &inertia_ke,
                 &owned,
                 &ke_skip,
                 &bodies,
@@ -1313,7 +1363,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
             &v,
             &vr,
             &mass,
-            &inertia,
+            &inertia_ke,
             &owned,
             &ke_skip,
             &bodies,
@@ -1628,7 +1678,7 @@ fn kinetic(
     mass: &[f64],
     inertia: &[f64],
     owned: &[bool],
-    is_main: &[bool],
+    is_main: &[bool], // skip the translational energy (rigid-body main nodes, tied secondary nodes)
     bodies: &[RigidBodyState],
     local: &[LocalBody],
 ) -> (f64, f64) {
@@ -1636,6 +1686,8 @@ fn kinetic(
     for l in 0..v.len() {
         if owned[l] && !is_main[l] {
             e[0] += 0.5 * mass[l] * (v[l][0] * v[l][0] + v[l][1] * v[l][1] + v[l][2] * v[l][2]);
+        }
+        if owned[l] {
             e[1] += 0.5
                 * inertia[l]
                 * (vr[l][0] * vr[l][0] + vr[l][1] * vr[l][1] + vr[l][2] * vr[l][2]);
