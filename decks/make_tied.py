@@ -20,14 +20,17 @@ nu = 0, rho = 7.85e-6: L = 100, W = 10, t = 1 (the geometry of decks/cantilever)
               1/2/4-rank identity.
 * cont_free   the continuous strip in the same flight (the engine's own
               energy error without a tie).
+* tied_plate_block  a 6 x 3 shell plate tied onto the top face of a 4 x 2 x 1
+              brick block (main nodes without rotations: translation only),
+              flying with a plate corner loaded: momentum, energy, 1/2 ranks.
 """
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from make_contact import (bcs, cload, engine, funct, group, header, i10, inivel, law1,  # noqa: E402
-                          nodes_block, part, plate, prop_shell, r20, shells_block, surf_part,
-                          th_node, write)
+from make_contact import (Box, bcs, bricks_block, cload, engine, funct, group, header, i10,  # noqa: E402
+                          inivel, law1, nodes_block, part, plate, prop_shell, prop_solid, r20,
+                          shells_block, surf_part, th_node, write)
 
 L, W, T = 100.0, 10.0, 1.0
 P_BEND = 5.25e-5
@@ -107,6 +110,38 @@ def deck(name, tied, load, free=False):
     return name, S, N
 
 
+def plate_on_block():
+    """A 6 x 3 shell plate lying on the top face of a 4 x 2 x 1 brick block
+    (20 x 10 x 5), every plate node tied to the block's surface (main nodes
+    without rotations: translation tied only); flying at v = (1, 0, 0.5)
+    with a plate corner loaded along z for 0.5 ms."""
+    name = "tied_plate_block"
+    box = Box(1, 1, (0.0, 0.0, 0.0), (20.0, 10.0, 5.0), (4, 2, 1))
+    pn, ps = plate(1001, 1001, (0.0, 0.0), 20.0, 10.0, 6, 3, 5.0)
+    S = header(name, "Tied interface check: shell plate on a brick block",
+               [f"{name}: written by decks/make_tied.py.",
+                "Plate nodes (secondary) tied to the block's surface (main, bricks: no rotations)."])
+    S += law1(1, "steel, nu = 0.3")
+    S += prop_shell(1, "1 mm, 5 points", T, n_ip=5)
+    S += prop_solid(2, "block")
+    S += part(1, "plate", 1, 1)
+    S += part(2, "block", 2, 1)
+    S += nodes_block(box.nodes() + pn)
+    S += shells_block(1, ps)
+    S += bricks_block(2, box.bricks())
+    S += group(14, "all nodes", [n[0] for n in box.nodes() + pn])
+    S += inivel(1, "flight", V_FREE, 14)
+    S += funct(1, "constant", [(0.0, 1.0), (1e3, 1.0)])
+    S += group(12, "plate corner", [1001 + 6 + 7 * 3])
+    S += cload(1, "plate corner", 1, "Z", 12, P_FREE)
+    S += group(10, "plate nodes", [n[0] for n in pn])
+    S += surf_part(20, "block surface", [2])
+    S += inter2(1, "plate on block", 10, 20)
+    S += ["/END"]
+    N = engine(name, 0.5, -500, comments=["0.5 ms."])
+    return name, S, N
+
+
 MAKERS = dict(
     tied_bend=lambda: deck("tied_bend", True, "bend"),
     cont_bend=lambda: deck("cont_bend", False, "bend"),
@@ -114,6 +149,7 @@ MAKERS = dict(
     cont_pull=lambda: deck("cont_pull", False, "pull"),
     tied_free=lambda: deck("tied_free", True, None, free=True),
     cont_free=lambda: deck("cont_free", False, None, free=True),
+    tied_plate_block=plate_on_block,
 )
 
 if __name__ == "__main__":

@@ -12,6 +12,8 @@
 //! * free flight with a tip load: momentum M v0 + P (t − Δt/2) to round-off,
 //!   energy balance as closed as the continuous strip's, the same bytes on
 //!   1, 2 and 4 ranks with the secondary and main nodes on different ranks;
+//! * a shell plate tied onto a brick block (translation only: brick main
+//!   nodes have no rotation): momentum and energy in flight, 1 = 2 ranks;
 //! * every option the engine does not compute exits 2 naming its field.
 
 #[path = "contact_common/mod.rs"]
@@ -318,5 +320,61 @@ fn type2_options_the_engine_does_not_compute_are_refused_by_field() {
             "grnd_IDs",
             "node 1001 is both a secondary node",
         ],
+    );
+}
+
+#[test]
+fn a_shell_plate_tied_onto_a_brick_block_flies_with_its_momentum_and_energy() {
+    // Main nodes on bricks carry no rotation: only the translation is tied,
+    // the plate nodes keep their own rotations.
+    let d = deck("tied_plate_block");
+    let a = RunArgs {
+        energies: true,
+        ..Default::default()
+    };
+    let (r1, s1) = state("tied_plate_block", "pb1", &a);
+    assert!(r1.listing.text.contains(
+        "28 secondary nodes tied (Spotflag 5, standard kinematic formulation), 0 with rotations"
+    ));
+    let (_, rows) = r1.energies();
+    let n = rows.len();
+    let t_end = rows[n - 1][0];
+    let dt_last = rows[n - 1][0] - rows[n - 2][0];
+    let mesh = read_mesh(&d);
+    let mut m = shell_masses(&mesh, RHO, 1.0, &[1]);
+    for (id, mi) in brick_masses(&mesh, RHO, &[2]) {
+        *m.entry(id).or_insert(0.0) += mi;
+    }
+    let mut p = [0.0; 3];
+    let mut mtot = 0.0;
+    for (id, mi) in &m {
+        mtot += mi;
+        for k in 0..3 {
+            p[k] += mi * s1[id][3 + k];
+        }
+    }
+    let want = [mtot, 0.0, 0.5 * mtot + 5.25e-3 * (t_end - 0.5 * dt_last)];
+    let err = (0..3)
+        .map(|k| (p[k] - want[k]).abs())
+        .fold(0.0f64, f64::max)
+        / mtot;
+    eprintln!("plate on block: momentum error {err:.2e}");
+    assert!(err < 1e-12, "momentum error {err}");
+    let l = rows.last().unwrap();
+    let bal = (l[3] + l[4] + l[5] - 0.5 * mtot * 1.25 - l[6]) / l[6];
+    eprintln!("plate on block: energy balance {bal:.3e} of the external work");
+    assert!(bal.abs() < 2e-3, "{bal}");
+    // Secondary (plate) and main (block) nodes partly on different ranks.
+    let r2 = run(
+        &d,
+        &scratch("tied-pb2"),
+        &RunArgs {
+            ranks: 2,
+            ..Default::default()
+        },
+    );
+    assert!(
+        r2.final_state_bytes() == r1.final_state_bytes(),
+        "2 ranks differ from 1"
     );
 }
