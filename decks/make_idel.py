@@ -41,6 +41,9 @@ column (71-80 of the first card of each /INTER/TYPE7) for each variant.
                 segments (the cube falls through), Idel = 1 removes none (not
                 all of the segment's elements are deleted: the cube is
                 stopped).
+* idel_gap_t5   idel_gap with interface 1 a /INTER/TYPE5 (Gap 0.2, Idel 2 in
+                the written deck) and no interface 2: Idel = 2 lets the cube
+                through, Idel = 0 (no deletion) stops it.
 """
 import os
 import sys
@@ -72,7 +75,18 @@ def law2(mid, title, a, b, n, eps_max):
             r20(0) * 4]
 
 
-def deck(name, layers):
+def inter5(iid, title, sec, main, gap, idel):
+    """/INTER/TYPE5 (src/deck/interfaces.rs read_type5): Stfac 0 -> 0.2."""
+    return [f"/INTER/TYPE5/{iid}", title,
+            "#  grnd_IDs  surf_IDm                                                      Ibag      Idel",
+            i10(sec) + i10(main) + " " * 40 + i10(0) + i10(idel),
+            "#              Stfac                Fric                 Gap              Tstart               Tstop",
+            r20(0) + r20(0) + r20(gap) + r20(0) + r20(0),
+            "#      IBC                 IRM    Inacti",
+            "       000" + " " * 10 + i10(0) + i10(0)]
+
+
+def deck(name, layers, type5=False):
     nid = lambda i, j: 1 + i + (NX + 1) * j
     nodes = [(nid(i, j), H * i, H * j, 0.0) for j in range(NY + 1) for i in range(NX + 1)]
     steel, band, weak = [], [], []
@@ -129,15 +143,19 @@ def deck(name, layers):
     S += group(7, "band middle line", [nid(BAND[1], j) for j in range(NY + 1)])
     S += impvel(2, f"band middle line driven at V/2 = {V / 2:g}", 1, "X", 7, V / 2)
     S += inivel(1, "cube", (V / 2, 0.0, VZ), 4)
-    S += inter7(1, "cube on the plate", 4, 5, gapmin=GAPMIN, idel=2)
-    if not layers:
+    if type5:
+        S += inter5(1, "cube on the plate (TYPE5)", 4, 5, GAPMIN, 2)
+    else:
+        S += inter7(1, "cube on the plate", 4, 5, gapmin=GAPMIN, idel=2)
+    if not layers and not type5:
         S += inter7(2, "plate nodes on the cube", 1, 6, gapmin=GAPMIN, idel=2)
     S += ["/END"]
     N = engine(name, TEND, -100, comments=[f"{TEND:g} ms: the cube has passed the plate's plane or been stopped."])
     return name, S, N
 
 
-DECKS = {"idel_gap": lambda: deck("idel_gap", False), "idel_layers": lambda: deck("idel_layers", True)}
+DECKS = {"idel_gap": lambda: deck("idel_gap", False), "idel_layers": lambda: deck("idel_layers", True),
+         "idel_gap_t5": lambda: deck("idel_gap_t5", False, True)}
 
 if __name__ == "__main__":
     out = sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(os.path.abspath(__file__))

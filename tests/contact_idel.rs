@@ -8,6 +8,8 @@
 //!   The 5 nodes of the band's middle line belong to band shells only.
 //! * idel_layers: the same band doubled by a weak shell layer that never
 //!   fails (not in the surface), interface 1 only.
+//! * idel_gap_t5: idel_gap with interface 1 a TYPE5 (its card's Idel, 0 = no
+//!   deletion), no interface 2.
 //!
 //! What shows each option: whether the cube goes through (its final velocity
 //! is still exactly (5, 0, -2), its bottom below the plate) or is stopped (it
@@ -27,7 +29,7 @@ const CUBE: [u64; 8] = [1001, 1002, 1003, 1004, 1005, 1006, 1007, 1008];
 /// The band's shells (columns 3 and 4 of the 8 x 4 plate).
 const BAND: [u64; 8] = [104, 105, 112, 113, 120, 121, 128, 129];
 
-/// decks/NAME with the Idel column (71-80) of every /INTER/TYPE7 set to `idel`.
+/// decks/NAME with the Idel column (71-80) of every /INTER/TYPE7 and TYPE5 set to `idel`.
 fn variant(name: &str, idel: i64, dir: &Path) -> PathBuf {
     let src = deck(name);
     let text = std::fs::read_to_string(&src).unwrap();
@@ -35,7 +37,7 @@ fn variant(name: &str, idel: i64, dir: &Path) -> PathBuf {
     let mut out = Vec::new();
     let mut card_at = None;
     for (i, l) in lines.iter().enumerate() {
-        if l.starts_with("/INTER/TYPE7/") {
+        if l.starts_with("/INTER/TYPE7/") || l.starts_with("/INTER/TYPE5/") {
             card_at = Some(i + 3);
         }
         if card_at == Some(i) {
@@ -268,4 +270,20 @@ fn deletion_is_bitwise_identical_on_1_2_4_ranks_and_any_thread_count() {
             assert_eq!(idel_lines(&r.listing), lines, "Idel = {idel}: {n} ranks' IDEL lines");
         }
     }
+}
+
+#[test]
+fn type5_idel_2_removes_the_segments_idel_0_keeps_them() {
+    let r0 = run_idel("idel_gap_t5", 0, "t5-0", 1);
+    band_deleted(&r0);
+    assert!(idel_lines(&r0.listing).is_empty());
+    stopped(&cube(&r0.final_state()), "TYPE5, Idel = 0");
+    let r2 = run_idel("idel_gap_t5", 2, "t5-2", 1);
+    assert_eq!(removed(&r2.listing, 1), (8, 0));
+    through(&cube(&r2.final_state()), "TYPE5, Idel = 2");
+    // The TYPE5 walk skips removed segments the same way on 2 ranks.
+    let r2b = run_idel("idel_gap_t5", 2, "t5-2-np2", 2);
+    assert!(r2b.final_state_bytes() == r2.final_state_bytes());
+    let r0b = run_idel("idel_gap_t5", 0, "t5-0-np2", 2);
+    assert!(r0b.final_state_bytes() == r0.final_state_bytes());
 }
