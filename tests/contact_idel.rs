@@ -67,7 +67,11 @@ fn idel_lines(l: &Listing) -> Vec<(u64, u64, u64, u64, u64)> {
             let f: Vec<&str> = s.split_whitespace().collect();
             let n = |i: usize| f[i].parse::<u64>().unwrap();
             // IDEL INTER id TYPE7 CYCLE c TIME t REMOVED s MAIN SEGMENTS n SECONDARY NODES (TOTAL S SEGMENTS N NODES, ...
-            assert_eq!((f[8], f[10], f[13], f[15]), ("REMOVED", "MAIN", "SECONDARY", "(TOTAL"), "{s}");
+            assert_eq!(
+                (f[8], f[10], f[13], f[15]),
+                ("REMOVED", "MAIN", "SECONDARY", "(TOTAL"),
+                "{s}"
+            );
             (n(2), n(9), n(12), n(16), n(18))
         })
         .collect()
@@ -178,8 +182,14 @@ fn idel_1_keeps_a_segment_while_one_of_its_elements_lives_idel_2_does_not() {
     for id in 1..=8u64 {
         assert_eq!(*weak[&id].last().unwrap(), 0.0, "weak shell {id} lives");
     }
-    assert!(idel_lines(&r1.listing).is_empty(), "Idel = 1 removes nothing");
-    stopped(&cube(&r1.final_state()), "Idel = 1, two elements per segment");
+    assert!(
+        idel_lines(&r1.listing).is_empty(),
+        "Idel = 1 removes nothing"
+    );
+    stopped(
+        &cube(&r1.final_state()),
+        "Idel = 1, two elements per segment",
+    );
     // Nothing removed: the run is Idel = 1000's, to the bit.
     let r0 = run_idel("idel_layers", 1000, "layers-1000", 1);
     assert_eq!(r1.final_state_bytes(), r0.final_state_bytes());
@@ -187,7 +197,10 @@ fn idel_1_keeps_a_segment_while_one_of_its_elements_lives_idel_2_does_not() {
     let r2 = run_idel("idel_layers", 2, "layers-2", 1);
     band_deleted(&r2);
     assert_eq!(removed(&r2.listing, 1), (8, 0));
-    through(&cube(&r2.final_state()), "Idel = 2, two elements per segment");
+    through(
+        &cube(&r2.final_state()),
+        "Idel = 2, two elements per segment",
+    );
 }
 
 #[test]
@@ -260,14 +273,21 @@ fn deletion_is_bitwise_identical_on_1_2_4_ranks_and_any_thread_count() {
             &[("RAYON_NUM_THREADS", "1")],
         );
         assert_ok(&out, "one thread");
-        assert!(std::fs::read(&fs).unwrap() == reference, "Idel = {idel}: 1 thread");
+        assert!(
+            std::fs::read(&fs).unwrap() == reference,
+            "Idel = {idel}: 1 thread"
+        );
         for n in [2, 4] {
             let r = run_idel("idel_gap", idel, &format!("det{idel}-{n}"), n);
             assert!(
                 r.final_state_bytes() == reference,
                 "Idel = {idel}: {n} ranks differ from 1"
             );
-            assert_eq!(idel_lines(&r.listing), lines, "Idel = {idel}: {n} ranks' IDEL lines");
+            assert_eq!(
+                idel_lines(&r.listing),
+                lines,
+                "Idel = {idel}: {n} ranks' IDEL lines"
+            );
         }
     }
 }

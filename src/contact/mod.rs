@@ -55,6 +55,10 @@ struct Removal {
     sec_off: Vec<bool>,
 }
 
+/// Idel: element (kind index, element index) → (interface, pass, segment or
+/// secondary-node index, is a secondary node).
+type IdelIndex = std::collections::HashMap<(u8, u32), Vec<(u32, u32, u32, bool)>>;
+
 /// Segments and nodes an interface removed at one cycle (Idel), for the listing.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Removed {
@@ -84,10 +88,18 @@ struct PassRun {
 
 impl PassRun {
     fn seg_off(&self, m: u32) -> bool {
-        self.removal.seg_off.get(m as usize).copied().unwrap_or(false)
+        self.removal
+            .seg_off
+            .get(m as usize)
+            .copied()
+            .unwrap_or(false)
     }
     fn sec_off(&self, k: u32) -> bool {
-        self.removal.sec_off.get(k as usize).copied().unwrap_or(false)
+        self.removal
+            .sec_off
+            .get(k as usize)
+            .copied()
+            .unwrap_or(false)
     }
 }
 
@@ -152,7 +164,7 @@ pub struct ContactSystem {
     /// Idel: element (kind index, element index) → the (interface, pass,
     /// index, is a secondary node) it is associated with; empty when no
     /// interface deletes.
-    idel_index: std::collections::HashMap<(u8, u32), Vec<(u32, u32, u32, bool)>>,
+    idel_index: IdelIndex,
     /// Elements already known deleted (all ranks).
     dead: std::collections::HashSet<(u8, u32)>,
     /// What the interfaces removed at the last `compute`, and totals.
@@ -247,8 +259,7 @@ impl ContactSystem {
             })
             .collect();
         let sums = vec![InterfaceSums::default(); setup.interfaces.len()];
-        let mut idel_index: std::collections::HashMap<(u8, u32), Vec<(u32, u32, u32, bool)>> =
-            std::collections::HashMap::new();
+        let mut idel_index = IdelIndex::new();
         for (ii, it) in setup.interfaces.iter().enumerate() {
             if setup::IdelRule::of(it.idel).is_none() {
                 continue;
@@ -498,7 +509,6 @@ impl ContactSystem {
         touched.dedup();
         for (ii, pi) in touched {
             let run = &mut self.runs[ii][pi];
-            let p = &self.setup.interfaces[ii].passes[pi];
             // TYPE7: drop the removed pairs and their memory.
             if run.cand.ptr.len() == run.mine.len() + 1 {
                 let mut cand = Candidates {
@@ -531,7 +541,6 @@ impl ContactSystem {
                     *st5 = (NONE, PairState::default());
                 }
             }
-            let _ = p;
         }
         for (ii, it) in self.setup.interfaces.iter().enumerate() {
             let (s, n) = counts[ii];
@@ -869,7 +878,8 @@ impl ContactSystem {
                     Law::Type5 => {
                         let walk_reach = it.max_gap + 2.0 * it.margin + p.max_diag;
                         let removal = &run.removal;
-                        let seg_on = |m: u32| !removal.seg_off.get(m as usize).copied().unwrap_or(false);
+                        let seg_on =
+                            |m: u32| !removal.seg_off.get(m as usize).copied().unwrap_or(false);
                         run.mine
                             .par_iter()
                             .zip(run.nodes.par_iter_mut())
@@ -879,8 +889,7 @@ impl ContactSystem {
                                 let s = p.sec[k];
                                 let mut contribs = Vec::new();
                                 let mut sums = InterfaceSums::default();
-                                let node_off =
-                                    removal.sec_off.get(k).copied().unwrap_or(false);
+                                let node_off = removal.sec_off.get(k).copied().unwrap_or(false);
                                 if ns.off || node_off || ns.last_seg == NONE {
                                     return (contribs, None, sums);
                                 }

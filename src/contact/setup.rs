@@ -66,7 +66,10 @@ pub struct Pass {
     pub seg_elems: Vec<(u8, u32)>,
     /// Idel = 1, 2 (empty otherwise): the elements attached to each secondary
     /// node (every kind), CSR over `sec`; a node none of whose elements is
-    /// alive is "non-connected" and leaves the secondary side.
+    /// alive is "non-connected" and leaves the secondary side. A node with no
+    /// element at all is never removed (no deletion concerns it), and a node
+    /// on a spring stays connected while the spring lives (springs are never
+    /// deleted).
     pub sec_elems_ptr: Vec<u32>,
     pub sec_elems: Vec<(u8, u32)>,
 }
@@ -116,10 +119,22 @@ impl IdelRule {
     /// `None` for 0 and 1000 (no deletion).
     pub fn of(idel: i64) -> Option<IdelRule> {
         match idel {
-            1 => Some(IdelRule { all: true, nodes: true }),
-            2 => Some(IdelRule { all: false, nodes: true }),
-            -1 => Some(IdelRule { all: true, nodes: false }),
-            -2 => Some(IdelRule { all: false, nodes: false }),
+            1 => Some(IdelRule {
+                all: true,
+                nodes: true,
+            }),
+            2 => Some(IdelRule {
+                all: false,
+                nodes: true,
+            }),
+            -1 => Some(IdelRule {
+                all: true,
+                nodes: false,
+            }),
+            -2 => Some(IdelRule {
+                all: false,
+                nodes: false,
+            }),
             _ => None,
         }
     }

@@ -584,25 +584,26 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
         .iter()
         .map(|b| vec![true; b.local().global.len()])
         .collect();
-    let mut newly_deleted = |blocks: &[Box<dyn Block>], contact: &ContactSystem| -> Vec<(u8, u32)> {
-        let mut out = Vec::new();
-        if !contact.tracks_deletion() {
-            return out;
-        }
-        for (b, w) in blocks.iter().zip(was_alive.iter_mut()) {
-            let ki = crate::deck::Elements::KINDS
-                .iter()
-                .position(|&q| q == b.kind())
-                .unwrap() as u8;
-            for (e, a) in w.iter_mut().enumerate() {
-                if *a && !b.alive(e) {
-                    *a = false;
-                    out.push((ki, b.local().global[e]));
+    let mut newly_deleted =
+        |blocks: &[Box<dyn Block>], contact: &ContactSystem| -> Vec<(u8, u32)> {
+            let mut out = Vec::new();
+            if !contact.tracks_deletion() {
+                return out;
+            }
+            for (b, w) in blocks.iter().zip(was_alive.iter_mut()) {
+                let ki = crate::deck::Elements::KINDS
+                    .iter()
+                    .position(|&q| q == b.kind())
+                    .unwrap() as u8;
+                for (e, a) in w.iter_mut().enumerate() {
+                    if *a && !b.alive(e) {
+                        *a = false;
+                        out.push((ki, b.local().global[e]));
+                    }
                 }
             }
-        }
-        out
-    };
+            out
+        };
 
     // ---- listing ----------------------------------------------------------
     let mut listing = if rank == 0 {
