@@ -157,12 +157,12 @@ def th_node(tid, title, ids):
 def inter7(iid, title, sec, main, istf=0, igap=0, fscalegap=0.0, gapmax=0.0, fpenmax=0.0,
            itied=0, stmin=0.0, stmax=0.0, mesh_pct=0.0, dtmin=0.0, irem_gap=0, stfac=0.0,
            fric=0.0, gapmin=0.0, tstart=0.0, tstop=0.0, ibc="000", inacti=0, viss=0.0,
-           visf=0.0, bumult=0.0, ifric=0, ifiltr=0, xfreq=0.0, iform=0, coefs=None):
+           visf=0.0, bumult=0.0, ifric=0, ifiltr=0, xfreq=0.0, iform=0, coefs=None, idel=0):
     """/INTER/TYPE7 in the 2020-2026 layout (src/deck/interfaces.rs read_type7).
     A 0 takes the card default (VISs 0 -> 0.05: pass 1e-30 for none)."""
     L = [f"/INTER/TYPE7/{iid}", title,
          "#  grnd_IDs  surf_IDm      Istf      Ithe      Igap                Ibag      Idel     Icurv      Iadm",
-         i10(sec) + i10(main) + i10(istf) + i10(0) + i10(igap) + " " * 10 + i10(0) + i10(0) + i10(0) + i10(0),
+         i10(sec) + i10(main) + i10(istf) + i10(0) + i10(igap) + " " * 10 + i10(0) + i10(idel) + i10(0) + i10(0),
          "#          Fscalegap             Gap_max             Fpenmax                         Itied      Ists",
          r20(fscalegap) + r20(gapmax) + r20(fpenmax) + " " * 20 + i10(itied) + i10(0),
          "#              Stmin               Stmax          %mesh_size               dtmin  Irem_gap   Irem_i2",

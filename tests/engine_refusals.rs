@@ -35,13 +35,13 @@ fn qbat_shells_are_refused_at_their_property() {
 
 #[test]
 fn contact_options_the_engine_does_not_compute_are_refused_at_the_interface() {
-    // The demo tube's TYPE7 with Idel = 2 (segment deletion), not computed yet.
+    // The demo tube's TYPE7 with Icurv = 3 (curved gap envelope), not computed yet.
     let src = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("decks/demo/demo_0000.rad");
     let text = std::fs::read_to_string(&src).unwrap();
     let old = "         0         5         4         0         1                   0         0         0         0";
     assert!(text.contains(old));
-    let new = "         0         5         4         0         1                   0         2         0         0";
-    let dir = std::env::temp_dir().join(format!("crashsim-refusal-idel-{}", std::process::id()));
+    let new = "         0         5         4         0         1                   0         0         3         0";
+    let dir = std::env::temp_dir().join(format!("crashsim-refusal-icurv-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let deck = dir.join("demo_0000.rad");
     std::fs::write(&deck, text.replace(old, new)).unwrap();
@@ -55,7 +55,7 @@ fn contact_options_the_engine_does_not_compute_are_refused_at_the_interface() {
         &[
             "demo_0000.rad:889",
             "/INTER/TYPE7/1",
-            "Idel",
+            "Icurv",
             "not supported by the engine yet",
         ],
     );

@@ -43,6 +43,36 @@ struct NodeState {
     gap0: Vec<(u32, f64, f64)>,
 }
 
+/// Idel on one pass, replicated on every rank (every rank learns the same
+/// deleted elements at the same cycle, so every rank removes the same
+/// segments and nodes at the same cycle).
+#[derive(Clone, Debug, Default)]
+struct Removal {
+    /// Associated elements still alive, per main segment / secondary node.
+    seg_alive: Vec<u32>,
+    sec_alive: Vec<u32>,
+    /// Removed from the interface.
+    seg_off: Vec<bool>,
+    sec_off: Vec<bool>,
+}
+
+/// Idel: element (kind index, element index) → (interface, pass, segment or
+/// secondary-node index, is a secondary node).
+type IdelIndex = std::collections::HashMap<(u8, u32), Vec<(u32, u32, u32, bool)>>;
+
+/// Segments and nodes an interface removed at one cycle (Idel), for the listing.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Removed {
+    pub inter_id: u64,
+    pub type_number: u32,
+    pub idel: i64,
+    pub segments: u64,
+    pub nodes: u64,
+    /// Totals since the start.
+    pub segments_total: u64,
+    pub nodes_total: u64,
+}
+
 /// One pass on this rank: the owned secondary nodes, their candidates and pair memory.
 #[derive(Clone, Debug, Default)]
 struct PassRun {
@@ -53,6 +83,25 @@ struct PassRun {
     state: Vec<PairState>,
     /// TYPE5: one pair state per node (its current segment).
     state5: Vec<(u32, PairState)>,
+    /// Idel: removed segments and nodes (empty vectors when Idel is off).
+    removal: Removal,
+}
+
+impl PassRun {
+    fn seg_off(&self, m: u32) -> bool {
+        self.removal
+            .seg_off
+            .get(m as usize)
+            .copied()
+            .unwrap_or(false)
+    }
+    fn sec_off(&self, k: u32) -> bool {
+        self.removal
+            .sec_off
+            .get(k as usize)
+            .copied()
+            .unwrap_or(false)
+    }
 }
 
 /// Per-interface sums over this rank's pairs (diagnostics, summed over ranks by the caller).
@@ -113,6 +162,15 @@ pub struct ContactSystem {
     pub sums: Vec<InterfaceSums>,
     pub timers: ContactTimers,
     node_ids: Vec<u64>,
+    /// Idel: element (kind index, element index) → the (interface, pass,
+    /// index, is a secondary node) it is associated with; empty when no
+    /// interface deletes.
+    idel_index: IdelIndex,
+    /// Elements already known deleted (all ranks).
+    dead: std::collections::HashSet<(u8, u32)>,
+    /// What the interfaces removed at the last `compute`, and totals.
+    removed_now: Vec<Removed>,
+    removed_total: Vec<(u64, u64)>,
 }
 
 impl ContactSystem {
@@ -165,6 +223,27 @@ impl ContactSystem {
                             })
                             .collect();
                         let n = mine.len();
+                        let removal = match setup::IdelRule::of(it.idel) {
+                            Some(rule) => Removal {
+                                seg_alive: (0..p.segs.len())
+                                    .map(|m| p.elements_of_segment(m).len() as u32)
+                                    .collect(),
+                                sec_alive: if rule.nodes {
+                                    (0..p.sec.len())
+                                        .map(|k| p.elements_of_secondary(k).len() as u32)
+                                        .collect()
+                                } else {
+                                    Vec::new()
+                                },
+                                seg_off: vec![false; p.segs.len()],
+                                sec_off: if rule.nodes {
+                                    vec![false; p.sec.len()]
+                                } else {
+                                    Vec::new()
+                                },
+                            },
+                            None => Removal::default(),
+                        };
                         PassRun {
                             mine,
                             nodes,
@@ -174,13 +253,43 @@ impl ContactSystem {
                             },
                             state: Vec::new(),
                             state5: vec![(NONE, PairState::default()); n],
+                            removal,
                         }
                     })
                     .collect()
             })
             .collect();
         let sums = vec![InterfaceSums::default(); setup.interfaces.len()];
+        let mut idel_index = IdelIndex::new();
+        for (ii, it) in setup.interfaces.iter().enumerate() {
+            if setup::IdelRule::of(it.idel).is_none() {
+                continue;
+            }
+            for (pi, p) in it.passes.iter().enumerate() {
+                for m in 0..p.segs.len() {
+                    for &e in p.elements_of_segment(m) {
+                        idel_index
+                            .entry(e)
+                            .or_default()
+                            .push((ii as u32, pi as u32, m as u32, false));
+                    }
+                }
+                for k in 0..p.sec.len() {
+                    for &e in p.elements_of_secondary(k) {
+                        idel_index
+                            .entry(e)
+                            .or_default()
+                            .push((ii as u32, pi as u32, k as u32, true));
+                    }
+                }
+            }
+        }
+        let removed_total = vec![(0, 0); setup.interfaces.len()];
         ContactSystem {
+            idel_index,
+            dead: std::collections::HashSet::new(),
+            removed_now: Vec::new(),
+            removed_total,
             local,
             owned,
             held,
@@ -202,6 +311,17 @@ impl ContactSystem {
 
     pub fn is_empty(&self) -> bool {
         self.setup.is_empty()
+    }
+
+    /// Some interface removes segments or nodes of deleted elements (Idel):
+    /// `compute` then wants this rank's newly deleted elements every cycle.
+    pub fn tracks_deletion(&self) -> bool {
+        !self.idel_index.is_empty()
+    }
+
+    /// What the interfaces removed at the last `compute` (Idel), identical on every rank.
+    pub fn removed(&self) -> &[Removed] {
+        &self.removed_now
     }
 
     /// Ghost nodes this rank currently receives.
@@ -230,10 +350,12 @@ impl ContactSystem {
         fc: &mut [V3],
         kc: &mut [f64],
         release: &mut Vec<(u32, u8)>,
+        deleted: &[(u8, u32)],
     ) -> Option<ContactStep> {
         if self.is_empty() {
             return None;
         }
+        self.removed_now.clear();
         let t0 = std::time::Instant::now();
         for &c in &self.held {
             let l = self.local[c as usize] as usize;
@@ -241,14 +363,34 @@ impl ContactSystem {
             self.cv[c as usize] = v[l];
         }
         // Sort decision: largest motion since the last sort against half the smallest margin.
-        let mut motion = [0.0f64];
+        // The same reduction tells whether any rank deleted an element this
+        // cycle (Idel): only then are the deleted ids gathered.
+        let mut motion = [0.0f64, deleted.len() as f64];
         for &c in &self.held {
             if self.owned[c as usize] {
                 let d = geo::norm(geo::sub(self.cx[c as usize], self.x_sort[c as usize]));
                 motion[0] = motion[0].max(d);
             }
         }
-        world.max_f64(&mut motion);
+        if self.tracks_deletion() {
+            world.max_f64(&mut motion);
+        } else {
+            world.max_f64(&mut motion[..1]);
+        }
+        if self.tracks_deletion() && motion[1] > 0.0 {
+            let mine: Vec<u64> = deleted
+                .iter()
+                .map(|&(k, e)| (k as u64) << 32 | e as u64)
+                .collect();
+            let mut all: Vec<(u8, u32)> = world
+                .allgather_u64(&mine)
+                .into_iter()
+                .map(|c| ((c >> 32) as u8, c as u32))
+                .collect();
+            all.sort_unstable();
+            all.dedup();
+            self.apply_deletions(&all);
+        }
         let margin = self
             .setup
             .interfaces
@@ -327,6 +469,100 @@ impl ContactSystem {
         Some(best)
     }
 
+    /// Idel: elements deleted this cycle (every rank's, sorted) remove the
+    /// main segments of their interfaces (Idel ±2: any associated element
+    /// deleted; ±1: all of them) and, with Idel = 1, 2, the secondary nodes
+    /// none of whose elements is alive. The pairs of removed segments and
+    /// nodes leave the candidate lists now, with their memory (friction,
+    /// tie); the next sorts never find them again.
+    fn apply_deletions(&mut self, dead: &[(u8, u32)]) {
+        let mut touched: Vec<(usize, usize)> = Vec::new();
+        let mut counts = vec![(0u64, 0u64); self.setup.interfaces.len()];
+        for e in dead {
+            if !self.dead.insert(*e) {
+                continue;
+            }
+            let Some(list) = self.idel_index.get(e) else {
+                continue;
+            };
+            for &(ii, pi, idx, is_node) in list {
+                let (ii, pi, idx) = (ii as usize, pi as usize, idx as usize);
+                let rule = setup::IdelRule::of(self.setup.interfaces[ii].idel).expect("indexed");
+                let r = &mut self.runs[ii][pi].removal;
+                if is_node {
+                    r.sec_alive[idx] -= 1;
+                    if r.sec_alive[idx] == 0 && !r.sec_off[idx] {
+                        r.sec_off[idx] = true;
+                        counts[ii].1 += 1;
+                        touched.push((ii, pi));
+                    }
+                } else {
+                    r.seg_alive[idx] -= 1;
+                    if (!rule.all || r.seg_alive[idx] == 0) && !r.seg_off[idx] {
+                        r.seg_off[idx] = true;
+                        counts[ii].0 += 1;
+                        touched.push((ii, pi));
+                    }
+                }
+            }
+        }
+        touched.sort_unstable();
+        touched.dedup();
+        for (ii, pi) in touched {
+            let run = &mut self.runs[ii][pi];
+            // TYPE7: drop the removed pairs and their memory.
+            if run.cand.ptr.len() == run.mine.len() + 1 {
+                let mut cand = Candidates {
+                    ptr: vec![0],
+                    segs: Vec::with_capacity(run.cand.segs.len()),
+                };
+                let mut state = Vec::with_capacity(run.state.len());
+                for j in 0..run.mine.len() {
+                    let node_off = run.sec_off(run.mine[j]);
+                    for q in run.cand.ptr[j]..run.cand.ptr[j + 1] {
+                        let m = run.cand.segs[q];
+                        if node_off || run.seg_off(m) {
+                            continue;
+                        }
+                        cand.segs.push(m);
+                        if let Some(st) = run.state.get(q) {
+                            state.push(*st);
+                        }
+                    }
+                    cand.ptr.push(cand.segs.len());
+                }
+                run.cand = cand;
+                if !run.state.is_empty() {
+                    run.state = state;
+                }
+            }
+            // TYPE5: a node whose segment left starts a fresh pair.
+            for st5 in run.state5.iter_mut() {
+                if st5.0 != NONE && run.removal.seg_off[st5.0 as usize] {
+                    *st5 = (NONE, PairState::default());
+                }
+            }
+        }
+        for (ii, it) in self.setup.interfaces.iter().enumerate() {
+            let (s, n) = counts[ii];
+            if s == 0 && n == 0 {
+                continue;
+            }
+            let tot = &mut self.removed_total[ii];
+            tot.0 += s;
+            tot.1 += n;
+            self.removed_now.push(Removed {
+                inter_id: it.id,
+                type_number: it.type_number,
+                idel: it.idel,
+                segments: s,
+                nodes: n,
+                segments_total: tot.0,
+                nodes_total: tot.1,
+            });
+        }
+    }
+
     /// New ghost plan from the current positions (collective).
     fn rebuild_plan(&mut self, world: &World) {
         let boxes: Vec<Aabb> = self
@@ -380,15 +616,17 @@ impl ContactSystem {
                 continue;
             }
             for (pi, p) in it.passes.iter().enumerate() {
+                let run = &self.runs[ii][pi];
+                // Segments removed by Idel get an empty box: never candidates.
                 let boxes: Vec<Aabb> = p
                     .segs
                     .iter()
-                    .map(|s| match self.seg_x(s) {
-                        Some(x) => Aabb::of_points(&x),
-                        None => Aabb::EMPTY,
+                    .enumerate()
+                    .map(|(m, s)| match self.seg_x(s) {
+                        Some(x) if !run.seg_off(m as u32) => Aabb::of_points(&x),
+                        _ => Aabb::EMPTY,
                     })
                     .collect();
-                let run = &self.runs[ii][pi];
                 let pts: Vec<V3> = run
                     .mine
                     .iter()
@@ -404,6 +642,11 @@ impl ContactSystem {
                 };
                 for (j, &k) in run.mine.iter().enumerate() {
                     let s = p.sec[k as usize];
+                    if run.sec_off(k) {
+                        // Removed by Idel: no candidates.
+                        cand.ptr.push(cand.segs.len());
+                        continue;
+                    }
                     for &m in &raw.segs[raw.ptr[j]..raw.ptr[j + 1]] {
                         let seg = &p.segs[m as usize];
                         if seg.contains(&s) {
@@ -635,6 +878,9 @@ impl ContactSystem {
                     }
                     Law::Type5 => {
                         let walk_reach = it.max_gap + 2.0 * it.margin + p.max_diag;
+                        let removal = &run.removal;
+                        let seg_on =
+                            |m: u32| !removal.seg_off.get(m as usize).copied().unwrap_or(false);
                         run.mine
                             .par_iter()
                             .zip(run.nodes.par_iter_mut())
@@ -644,17 +890,25 @@ impl ContactSystem {
                                 let s = p.sec[k];
                                 let mut contribs = Vec::new();
                                 let mut sums = InterfaceSums::default();
-                                if ns.off || ns.last_seg == NONE {
+                                let node_off = removal.sec_off.get(k).copied().unwrap_or(false);
+                                if ns.off || node_off || ns.last_seg == NONE {
                                     return (contribs, None, sums);
                                 }
                                 let xs = cx[s as usize];
-                                let Some(m) = type5_walk(p, ns.last_seg, xs, walk_reach, &|c| {
-                                    if avail[c as usize] {
-                                        Some(cx[c as usize])
-                                    } else {
-                                        None
-                                    }
-                                }) else {
+                                let Some(m) = type5_walk(
+                                    p,
+                                    ns.last_seg,
+                                    xs,
+                                    walk_reach,
+                                    &|c| {
+                                        if avail[c as usize] {
+                                            Some(cx[c as usize])
+                                        } else {
+                                            None
+                                        }
+                                    },
+                                    &seg_on,
+                                ) else {
                                     return (contribs, None, sums);
                                 };
                                 ns.last_seg = m;
@@ -806,12 +1060,14 @@ fn pair_stiffness(it: &setup::Interface, p: &setup::Pass, k: usize, m: usize) ->
 /// node M2 among their nodes; the closest of the segments around M2. The walk
 /// is only taken while N is within `reach` of S0's nodes (farther nodes keep
 /// their segment), so it only ever reads nodes every rank can see.
+/// Segments removed by Idel (`seg_on` false) are never chosen, nor walked through.
 fn type5_walk(
     p: &setup::Pass,
     s0: u32,
     xs: V3,
     reach: f64,
     x_of: &dyn Fn(u32) -> Option<V3>,
+    seg_on: &dyn Fn(u32) -> bool,
 ) -> Option<u32> {
     let seg0 = p.segs[s0 as usize];
     let mut m1: Option<(f64, u32)> = None;
@@ -828,6 +1084,9 @@ fn type5_walk(
     let (_, m1) = m1?;
     let mut m2: Option<(f64, u32)> = None;
     for &sg in p.segments_around(m1) {
+        if !seg_on(sg) {
+            continue;
+        }
         for &c in &p.segs[sg as usize] {
             let xc = x_of(c)?;
             let d = geo::norm(geo::sub(xc, xs));
@@ -838,6 +1097,9 @@ fn type5_walk(
     }
     let (_, m2) = m2?;
     setup::closest_segment(p.segments_around(m2), xs, |sg| {
+        if !seg_on(sg) {
+            return None;
+        }
         let seg = p.segs[sg as usize];
         let mut x = [[0.0; 3]; 4];
         for i in 0..4 {

@@ -58,6 +58,20 @@ pub struct Pass {
     pub node_segs: Vec<u32>,
     /// Largest segment diagonal (for the ghost boxes).
     pub max_diag: f64,
+    /// Idel (empty when the interface does not delete): the elements
+    /// associated with each main segment, CSR over `segs` — every 4- or
+    /// 3-node shell whose nodes are the segment's and every solid that has
+    /// the segment as a face — as (kind index, element index).
+    pub seg_elems_ptr: Vec<u32>,
+    pub seg_elems: Vec<(u8, u32)>,
+    /// Idel = 1, 2 (empty otherwise): the elements attached to each secondary
+    /// node (every kind), CSR over `sec`; a node none of whose elements is
+    /// alive is "non-connected" and leaves the secondary side. A node with no
+    /// element at all is never removed (no deletion concerns it), and a node
+    /// on a spring stays connected while the spring lives (springs are never
+    /// deleted).
+    pub sec_elems_ptr: Vec<u32>,
+    pub sec_elems: Vec<(u8, u32)>,
 }
 
 impl Pass {
@@ -72,6 +86,57 @@ impl Pass {
     }
     pub fn is_tri(&self, s: usize) -> bool {
         self.segs[s][3] == self.segs[s][2]
+    }
+    /// Idel: the elements associated with main segment `s`.
+    pub fn elements_of_segment(&self, s: usize) -> &[(u8, u32)] {
+        csr(&self.seg_elems_ptr, &self.seg_elems, s)
+    }
+    /// Idel = 1, 2: the elements attached to secondary node `k` (index into `sec`).
+    pub fn elements_of_secondary(&self, k: usize) -> &[(u8, u32)] {
+        csr(&self.sec_elems_ptr, &self.sec_elems, k)
+    }
+}
+
+fn csr<'a, T>(ptr: &[u32], v: &'a [T], i: usize) -> &'a [T] {
+    if i + 1 >= ptr.len() {
+        return &[];
+    }
+    &v[ptr[i] as usize..ptr[i + 1] as usize]
+}
+
+/// What an interface's Idel asks for (card /INTER/TYPE7, Idel; TYPE3 and TYPE5
+/// read the same flag, with 0 meaning no deletion).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct IdelRule {
+    /// Idel = ±1: a main segment is removed when *all* its associated elements
+    /// are deleted; Idel = ±2: as soon as *one* of them is.
+    pub all: bool,
+    /// Idel = 1, 2: non-connected nodes also leave the secondary side (not with -1, -2).
+    pub nodes: bool,
+}
+
+impl IdelRule {
+    /// `None` for 0 and 1000 (no deletion).
+    pub fn of(idel: i64) -> Option<IdelRule> {
+        match idel {
+            1 => Some(IdelRule {
+                all: true,
+                nodes: true,
+            }),
+            2 => Some(IdelRule {
+                all: false,
+                nodes: true,
+            }),
+            -1 => Some(IdelRule {
+                all: true,
+                nodes: false,
+            }),
+            -2 => Some(IdelRule {
+                all: false,
+                nodes: false,
+            }),
+            _ => None,
+        }
     }
 }
 
@@ -101,7 +166,7 @@ pub struct Interface {
     pub fpenmax: f64,
     pub dtmin: f64,
     pub itied: i64,
-    /// Idel: 0/1000 none; ±1 all elements of a segment deleted; ±2 any.
+    /// Idel: 0/1000 none; ±1 all elements of a segment deleted; ±2 any (see [`IdelRule`]).
     pub idel: i64,
     /// Irem_gap = 2: in self-contact, ignore main segments with a node closer
     /// than 2·Gap to the secondary node in the initial configuration.
@@ -147,6 +212,55 @@ fn face_key(f: &[u32]) -> [u32; 4] {
     let mut k = [f[0], f[1], f[2], *f.get(3).unwrap_or(&f[2])];
     k.sort_unstable();
     k
+}
+
+/// Every element a face belongs to (shells by their nodes, solids by each of
+/// their faces), in kind then element order: Idel's "elements associated to
+/// one segment".
+fn face_elements(m: &Model) -> HashMap<[u32; 4], Vec<(u8, u32)>> {
+    let mut map: HashMap<[u32; 4], Vec<(u8, u32)>> = HashMap::new();
+    for (ki, set) in m.elements.iter().enumerate() {
+        let faces: &[[usize; 4]] = match set.kind {
+            ElementKind::Shell4 => &[[0, 1, 2, 3]],
+            ElementKind::Shell3 => &[[0, 1, 2, 2]],
+            ElementKind::Brick8 => &mgeo::HEXA_FACES,
+            ElementKind::Tetra4 => &[[0, 2, 1, 1], [0, 1, 3, 3], [1, 2, 3, 3], [2, 0, 3, 3]],
+            _ => continue,
+        };
+        for e in 0..set.len() {
+            let n = set.nodes_of(e);
+            let mut seen: Vec<[u32; 4]> = Vec::new();
+            for f in faces {
+                let key = face_key(&[n[f[0]], n[f[1]], n[f[2]], n[f[3]]]);
+                // A degenerate brick may repeat a face: count the element once.
+                if seen.contains(&key) {
+                    continue;
+                }
+                seen.push(key);
+                map.entry(key).or_default().push((ki as u8, e as u32));
+            }
+        }
+    }
+    map
+}
+
+/// Every element (any kind) attached to each of `nodes` (global node indices).
+fn node_elements(m: &Model, nodes: &[u32]) -> HashMap<u32, Vec<(u8, u32)>> {
+    let mut out: HashMap<u32, Vec<(u8, u32)>> = nodes.iter().map(|&n| (n, Vec::new())).collect();
+    for (ki, set) in m.elements.iter().enumerate() {
+        for e in 0..set.len() {
+            let ns = set.nodes_of(e);
+            for (i, q) in ns.iter().enumerate() {
+                if ns[..i].contains(q) {
+                    continue;
+                }
+                if let Some(v) = out.get_mut(q) {
+                    v.push((ki as u8, e as u32));
+                }
+            }
+        }
+    }
+    out
 }
 
 impl FaceIndex {
@@ -311,6 +425,17 @@ pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<ContactSetup, String> {
         return Ok(ContactSetup::default());
     }
     let faces = FaceIndex::build(m);
+    let any_idel = m.interfaces.iter().any(|i| match &i.card.kind {
+        InterfaceKind::Type7(t) => IdelRule::of(t.idel).is_some(),
+        InterfaceKind::Type5(t) => IdelRule::of(t.idel).is_some(),
+        InterfaceKind::Type3(t) => IdelRule::of(t.idel).is_some(),
+        _ => false,
+    });
+    let face_elems = if any_idel {
+        face_elements(m)
+    } else {
+        HashMap::new()
+    };
     // Contact nodes.
     let mut all: Vec<u32> = Vec::new();
     for i in contact_ifaces.clone() {
@@ -506,7 +631,33 @@ pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<ContactSetup, String> {
             }
             node_segs_ptr.push(node_segs.len() as u32);
             let sec_c: Vec<u32> = sec.iter().map(|&n| cn(n)).collect();
+            let rule = IdelRule::of(common.idel);
+            let mut seg_elems_ptr = Vec::new();
+            let mut seg_elems = Vec::new();
+            let mut sec_elems_ptr = Vec::new();
+            let mut sec_elems = Vec::new();
+            if let Some(rule) = rule {
+                seg_elems_ptr.push(0);
+                for s in main.iter() {
+                    if let Some(v) = face_elems.get(&face_key(s)) {
+                        seg_elems.extend_from_slice(v);
+                    }
+                    seg_elems_ptr.push(seg_elems.len() as u32);
+                }
+                if rule.nodes {
+                    let ne = node_elements(m, &sec);
+                    sec_elems_ptr.push(0);
+                    for n in &sec {
+                        sec_elems.extend_from_slice(&ne[n]);
+                        sec_elems_ptr.push(sec_elems.len() as u32);
+                    }
+                }
+            }
             let mut pass = Pass {
+                seg_elems_ptr,
+                seg_elems,
+                sec_elems_ptr,
+                sec_elems,
                 segs,
                 seg_k,
                 seg_gap,

@@ -159,6 +159,33 @@ impl World {
             .collect()
     }
 
+    /// Every rank's u64 values concatenated in rank order, on every rank (an
+    /// MPI_Allgatherv after an MPI_Allgather of the counts). Contact's Idel
+    /// uses it for the element ids deleted in a cycle, only at the cycles
+    /// where some rank deleted one.
+    pub fn allgather_u64(&self, mine: &[u64]) -> Vec<u64> {
+        use mpi::datatype::PartitionMut;
+        let n = self.size() as usize;
+        let len = mine.len() as i32;
+        let mut lens = vec![0i32; n];
+        self.comm.all_gather_into(&len, &mut lens[..]);
+        let displs: Vec<i32> = lens
+            .iter()
+            .scan(0, |acc, &l| {
+                let d = *acc;
+                *acc += l;
+                Some(d)
+            })
+            .collect();
+        let total: i32 = lens.iter().sum();
+        let mut buf = vec![0u64; total as usize];
+        {
+            let mut part = PartitionMut::new(&mut buf[..], &lens[..], &displs[..]);
+            self.comm.all_gather_varcount_into(mine, &mut part);
+        }
+        buf
+    }
+
     /// Every rank's values, in rank order, on every rank (a typed allgather).
     pub fn allgather<T: serde::Serialize + serde::de::DeserializeOwned>(&self, mine: &T) -> Vec<T> {
         let bytes = bincode::serialize(mine).expect("serializable");

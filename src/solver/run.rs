@@ -341,18 +341,10 @@ fn check_interface(c: &deck::InterfaceCard) -> Result<(), String> {
             Ok(())
         }
         K::Type11(_) => no("TYPE11 (edge to edge)"),
-        K::Type3(t) => {
-            if t.idel != 0 {
-                return no("Idel (segment deletion)");
-            }
-            Ok(())
-        }
+        K::Type3(_) => Ok(()),
         K::Type5(t) => {
             if t.sens_id != 0 {
                 return no("an activation sensor (sens_ID)");
-            }
-            if t.idel != 0 {
-                return no("Idel (segment deletion)");
             }
             if t.inacti != 0 {
                 return no("Inacti (moving nodes out of initial penetrations)");
@@ -383,9 +375,6 @@ fn check_interface(c: &deck::InterfaceCard) -> Result<(), String> {
             }
             if t.ibag == 1 {
                 return no("airbag vent closure (Ibag = 1)");
-            }
-            if t.idel != 1000 && t.idel != 0 {
-                return no("Idel (node and segment deletion)");
             }
             if t.inacti == 3 {
                 return no("Inacti = 3 (moving nodes out of initial penetrations)");
@@ -669,12 +658,24 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
                               t: f64,
                               dt: f64,
                               fcont: &mut [[f64; 3]],
-                              fixed: &mut [[bool; 6]]|
+                              fixed: &mut [[bool; 6]],
+                              deleted: &[(u8, u32)]|
      -> Option<ContactStep> {
         fcont.iter_mut().for_each(|f| *f = [0.0; 3]);
         kcont.iter_mut().for_each(|k| *k = 0.0);
         release.clear();
-        let s = contact.compute(world, x, v, &mass, t, dt, fcont, &mut kcont, &mut release);
+        let s = contact.compute(
+            world,
+            x,
+            v,
+            &mass,
+            t,
+            dt,
+            fcont,
+            &mut kcont,
+            &mut release,
+            deleted,
+        );
         // IBC: an impact releases the secondary node's boundary conditions.
         for &(l, bits) in &release {
             for k in 0..3 {
@@ -686,6 +687,33 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
         s
     };
     let mut e_contact = 0.0f64;
+    // Idel: which of this rank's elements were alive at the last look (all
+    // at the start, so that elements a restart brings back deleted are
+    // reported at the first cycle).
+    let mut was_alive: Vec<Vec<bool>> = blocks
+        .iter()
+        .map(|b| vec![true; b.local().global.len()])
+        .collect();
+    let mut newly_deleted =
+        |blocks: &[Box<dyn Block>], contact: &ContactSystem| -> Vec<(u8, u32)> {
+            let mut out = Vec::new();
+            if !contact.tracks_deletion() {
+                return out;
+            }
+            for (b, w) in blocks.iter().zip(was_alive.iter_mut()) {
+                let ki = crate::deck::Elements::KINDS
+                    .iter()
+                    .position(|&q| q == b.kind())
+                    .unwrap() as u8;
+                for (e, a) in w.iter_mut().enumerate() {
+                    if *a && !b.alive(e) {
+                        *a = false;
+                        out.push((ki, b.local().global[e]));
+                    }
+                }
+            }
+            out
+        };
 
     // ---- listing ----------------------------------------------------------
     let mut listing = if rank == 0 {
@@ -744,7 +772,8 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
     let stop = compute_all(&mut blocks, &offsets, &x, &v, &vr, 0.0, &mut contrib);
     plan.assemble(world, &contrib, &mut fint);
     external_forces(&g, &fct_index, &cloads, &gravity, &grav_mass, t, &mut fext);
-    let cstep = contact_forces(&mut contact, &x, &v, t, 0.0, &mut fcont, &mut fixed);
+    let dead = newly_deleted(&blocks, &contact);
+    let cstep = contact_forces(&mut contact, &x, &v, t, 0.0, &mut fcont, &mut fixed, &dead);
     let mut step = global_step(
         world,
         &g,
@@ -1184,7 +1213,17 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
         let stop = compute_all(&mut blocks, &offsets, &x, &v, &vr, dt, &mut contrib);
         plan.assemble(world, &contrib, &mut fint);
         external_forces(&g, &fct_index, &cloads, &gravity, &grav_mass, t, &mut fext);
-        let cstep = contact_forces(&mut contact, &x, &v, t, dt, &mut fcont, &mut fixed);
+        let dead = newly_deleted(&blocks, &contact);
+        let cstep = contact_forces(&mut contact, &x, &v, t, dt, &mut fcont, &mut fixed, &dead);
+        // Idel: segments and nodes the interfaces removed at this cycle.
+        if let Some(l) = &mut listing {
+            for r in contact.removed() {
+                l.line(&format!(
+                    "     IDEL INTER {:>8} TYPE{:<2} CYCLE {:>8} TIME {:>12.5E}  REMOVED {:>6} MAIN SEGMENTS {:>6} SECONDARY NODES  (TOTAL {} SEGMENTS {} NODES, Idel = {})",
+                    r.inter_id, r.type_number, cycle, t, r.segments, r.nodes, r.segments_total, r.nodes_total, r.idel
+                ));
+            }
+        }
         if !contact.is_empty() {
             contact_force.clone_from(&fcont);
             for (smp, su) in interface_samples.iter_mut().zip(&contact.sums) {
