@@ -71,7 +71,7 @@ enum Command {
         /// Write the /TH/NODE nodes' displacements every /TFILE period to this CSV file
         #[arg(long)]
         history: Option<PathBuf>,
-        /// Write the energies (internal, kinetic, rotational, external work, contact) at every cycle to this CSV file
+        /// Write the energies (internal without hourglass as the listing's I-ENERGY, kinetic, rotational, external work, contact, hourglass) at every cycle to this CSV file
         #[arg(long)]
         energies: Option<PathBuf>,
         /// Continue from a restart file DIR/NAME_rst.h5 (any number of ranks)

@@ -448,19 +448,20 @@ fn ball_drop_conserves_energy_and_bounces() {
             "kinetic",
             "rotational",
             "external_work",
-            "contact"
+            "contact",
+            "hourglass"
         ]
     );
-    let e0 = rows[0][4] + rows[0][5] + rows[0][3] + rows[0][7] - rows[0][6];
+    let e0 = rows[0][4] + rows[0][5] + rows[0][3] + rows[0][8] + rows[0][7] - rows[0][6];
     let mut worst = (0.0f64, 0.0);
     let mut max_contact_ie = 0.0f64;
     for row in &rows {
-        let e = row[3] + row[4] + row[5] + row[7] - row[6];
+        let e = row[3] + row[8] + row[4] + row[5] + row[7] - row[6];
         let err = (e - e0) / e0;
         if err.abs() > worst.0.abs() {
             worst = (err, row[0]);
         }
-        max_contact_ie = max_contact_ie.max(row[3]);
+        max_contact_ie = max_contact_ie.max(row[3] + row[8]);
     }
     eprintln!(
         "ball_drop: worst energy error {:.4}% at t = {:.4}",
@@ -597,12 +598,12 @@ fn internal_energy_after_the_stop(iform: i64) -> (f64, f64) {
     let before = rows
         .iter()
         .filter(|r| r[0] < 0.9 * t_stop)
-        .map(|r| r[3])
+        .map(|r| r[3] + r[8])
         .fold(0.0, f64::max);
     let after = rows
         .iter()
         .filter(|r| r[0] > 1.05 * t_stop)
-        .map(|r| r[3])
+        .map(|r| r[3] + r[8])
         .fold(0.0, f64::max);
     eprintln!("sliding_block, Iform {iform}: internal energy while sliding <= {before:.3e}, after the stop <= {after:.3e} (initial kinetic 6.28e-2)");
     (before, after)

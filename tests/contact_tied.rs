@@ -172,12 +172,12 @@ fn a_flying_tied_strip_keeps_momentum_and_energy_and_bytes_on_1_2_4_ranks() {
         "free flight: momentum {p:?}, expected {want:?}, error {err:.2e} (relative to M·|v0x|)"
     );
     assert!(err < 1e-12, "momentum error {err}");
-    // Energy balance: internal + kinetic − initial kinetic − external work,
+    // Energy balance: internal + hourglass + kinetic − initial kinetic − external work,
     // against the continuous strip in the same flight.
     let balance = |rows: &Vec<Vec<f64>>| {
         let l = rows.last().unwrap();
         let ke0 = 0.5 * mtot * (1.0 + 0.25);
-        (l[3] + l[4] + l[5] - ke0 - l[6]) / l[6]
+        (l[3] + l[8] + l[4] + l[5] - ke0 - l[6]) / l[6]
     };
     let bt = balance(&rows);
     let (rc, _) = state("cont_free", "free-c", &a);
@@ -361,7 +361,7 @@ fn a_shell_plate_tied_onto_a_brick_block_flies_with_its_momentum_and_energy() {
     eprintln!("plate on block: momentum error {err:.2e}");
     assert!(err < 1e-12, "momentum error {err}");
     let l = rows.last().unwrap();
-    let bal = (l[3] + l[4] + l[5] - 0.5 * mtot * 1.25 - l[6]) / l[6];
+    let bal = (l[3] + l[8] + l[4] + l[5] - 0.5 * mtot * 1.25 - l[6]) / l[6];
     eprintln!("plate on block: energy balance {bal:.3e} of the external work");
     assert!(bal.abs() < 2e-3, "{bal}");
     // Secondary (plate) and main (block) nodes partly on different ranks.

@@ -7,12 +7,12 @@
 //!
 //! - `/th/time [T]`, `/th/cycle [T]`;
 //! - `/th/global [T, 10]`: the time step, the listing's columns — internal
-//!   energy (with hourglass), translational and rotational kinetic energy,
+//!   energy (without the hourglass energy, as Radioss lists it), translational and rotational kinetic energy,
 //!   external work and the energy error in % (as the listing computes
 //!   them) — and the hourglass energy, plastic work, rigid-wall work and
 //!   contact energy (`GLOBAL_COLUMNS`);
 //! - `/th/parts/values [T, P, 3]` (ids in `/th/parts/id`): per part, its
-//!   elements' internal energy; kinetic energy Σ_e Σ_corners ½·(m_e/n)·|v|²
+//!   elements' internal energy (without hourglass); kinetic energy Σ_e Σ_corners ½·(m_e/n)·|v|²
 //!   and mass Σ m_e over its elements not deleted, with the element mass
 //!   m_e = ρ·t·A (shells), ρ·V (solids), the property mass (springs) taken
 //!   on the initial geometry, as the starter's part masses;
@@ -222,7 +222,8 @@ impl History {
             let nn = b.kind().nodes();
             for (e, out) in b.outputs().iter().enumerate() {
                 let p = le.part[e] as usize;
-                buf[o_parts + 3 * p] += out.eint;
+                // Internal energy without hourglass, as Radioss's part histories.
+                buf[o_parts + 3 * p] += out.eint - out.ehg;
                 if out.deleted {
                     continue;
                 }
@@ -262,10 +263,13 @@ impl History {
         }
         ctx.world.sum_f64(&mut buf);
         let (ke, ker) = (s.kinetic)(s.v, s.vr, s.bodies);
-        let (ie, w) = (buf[0], buf[3]);
+        // The listing's internal energy leaves the hourglass energy out (its
+        // own column), as the Radioss listing and time histories do; the
+        // balance counts both.
+        let (ie, w) = (buf[0] - buf[1], buf[3]);
         // The listing's energy error.
         let err = if s.e0 + w != 0.0 {
-            100.0 * (ie + ke + ker - s.e0 - w) / (s.e0 + w).abs()
+            100.0 * (ie + buf[1] + ke + ker - s.e0 - w) / (s.e0 + w).abs()
         } else {
             0.0
         };

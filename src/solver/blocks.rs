@@ -41,6 +41,9 @@ pub struct ElemOut {
     pub thick: f64,
     /// Internal energy with hourglass.
     pub eint: f64,
+    /// Hourglass energy (part of `eint`; Radioss reports it apart from the
+    /// listing's and the time histories' internal energy).
+    pub ehg: f64,
     pub deleted: bool,
 }
 
@@ -338,6 +341,7 @@ macro_rules! shell_block {
                             eps_p: self.eps_p[pts].iter().fold(0.0f64, |a, &b| a.max(b)),
                             thick: st.thick,
                             eint: st.eint + hourglass_of(st),
+                            ehg: hourglass_of(st),
                             deleted: !self.alive[e],
                         }
                     })
@@ -563,6 +567,7 @@ macro_rules! solid_block {
                         eps_p: s.eps_p,
                         thick: 0.0,
                         eint: s.eint + hourglass_of(s),
+                        ehg: hourglass_of(s),
                         deleted: !alive,
                     })
                     .collect()
@@ -829,6 +834,7 @@ impl Block for SpringBlock {
                 eps_p: 0.0,
                 thick: 0.0,
                 eint: s.eint,
+                ehg: 0.0,
                 deleted: !alive,
             })
             .collect()

@@ -804,14 +804,19 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
                 dt: f64,
                 step: &Step,
                 ie: f64,
+                hg: f64,
                 ke: f64,
                 ker: f64,
                 w: f64,
                 ec: f64| {
         if let Some(l) = listing {
-            // The balance counts the energy contact took (ec) with the internal energy.
+            // The I-ENERGY column leaves the hourglass energy out, as the
+            // Radioss listing does (its time histories carry it apart: on
+            // BOULE1V4 I-ENERGY + HOURGLASS + kinetic + contact energies
+            // equal the rigid wall's work); the balance counts both, and
+            // the energy contact took (ec).
             let err = if e0 + w != 0.0 {
-                100.0 * (ie + ec + ke + ker - e0 - w) / (e0 + w).abs()
+                100.0 * (ie + hg + ec + ke + ker - e0 - w) / (e0 + w).abs()
             } else {
                 0.0
             };
@@ -833,7 +838,19 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
         }
     };
     if opts.output.restart.is_none() {
-        emit(&mut listing, cycle, t, dt, &step, 0.0, ke0, ker0, 0.0, 0.0);
+        emit(
+            &mut listing,
+            cycle,
+            t,
+            dt,
+            &step,
+            0.0,
+            0.0,
+            ke0,
+            ker0,
+            0.0,
+            0.0,
+        );
     }
     let mut dt_prev = 0.0f64;
     let th_period = engine.th_period.unwrap_or(f64::INFINITY);
@@ -957,7 +974,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
     }
     let mut stopped: Option<String> = None;
     let loop_started = Instant::now();
-    let mut energy_rows: Vec<[f64; 8]> = Vec::new();
+    let mut energy_rows: Vec<[f64; 9]> = Vec::new();
 
     // ---- the cycle ----------------------------------------------------------
     let result: Result<(), RunError> = loop {
@@ -1266,6 +1283,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
                 blocks.iter().map(|b| b.energy()).sum::<f64>(),
                 w_ext,
                 e_contact,
+                blocks.iter().map(|b| b.energy_parts().0).sum::<f64>(),
             ];
             world.sum_f64(&mut e);
             let (ke, ker) = kinetic(
@@ -1279,10 +1297,13 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
                 &bodies,
                 &local_bodies,
             );
-            energy_rows.push([t, cycle as f64, dt, e[0], ke, ker, e[1], e[2]]);
+            energy_rows.push([t, cycle as f64, dt, e[0] - e[3], ke, ker, e[1], e[2], e[3]]);
         }
         if cycle % print_every == 0 || t >= tstop {
-            let mut ie = [blocks.iter().map(|b| b.energy()).sum::<f64>()];
+            let mut ie = [
+                blocks.iter().map(|b| b.energy()).sum::<f64>(),
+                blocks.iter().map(|b| b.energy_parts().0).sum::<f64>(),
+            ];
             world.sum_f64(&mut ie);
             e_int = ie[0];
             let mut w = [w_ext, e_contact];
@@ -1304,7 +1325,8 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
                 t,
                 dt,
                 &step,
-                e_int,
+                ie[0] - ie[1],
+                ie[1],
                 ke,
                 ker,
                 w[0],
@@ -1441,7 +1463,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
             ));
         }
         if let Some(e) = &final_energies {
-            l.line(&format!("     ENERGIES AT THE END     : internal {:.6E} (hourglass {:.6E}, plastic work {:.6E}), kinetic {:.6E} + rotational {:.6E}", e[0], e[1], e[2], e[3], e[4]));
+            l.line(&format!("     ENERGIES AT THE END     : internal {:.6E} (hourglass {:.6E} included, plastic work {:.6E}), kinetic {:.6E} + rotational {:.6E}", e[0], e[1], e[2], e[3], e[4]));
             l.line(&format!(
                 "                               external work {:.6E}, rigid-wall work {:.6E}, contact energy {:.6E}",
                 e[5], e[6], e[7]
@@ -1470,12 +1492,13 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
         write_final_elements(world, &g, &blocks, path)?;
     }
     if let (Some(path), 0) = (&opts.energies, rank) {
-        let mut s =
-            String::from("time,cycle,dt,internal,kinetic,rotational,external_work,contact\n");
+        let mut s = String::from(
+            "time,cycle,dt,internal,kinetic,rotational,external_work,contact,hourglass\n",
+        );
         for r in &energy_rows {
             s.push_str(&format!(
-                "{:.16e},{},{:.16e},{:.16e},{:.16e},{:.16e},{:.16e},{:.16e}\n",
-                r[0], r[1] as u64, r[2], r[3], r[4], r[5], r[6], r[7]
+                "{:.16e},{},{:.16e},{:.16e},{:.16e},{:.16e},{:.16e},{:.16e},{:.16e}\n",
+                r[0], r[1] as u64, r[2], r[3], r[4], r[5], r[6], r[7], r[8]
             ));
         }
         std::fs::write(path, s).map_err(|e| {
