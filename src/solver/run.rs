@@ -543,8 +543,8 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
     // Kinetic energy: rigid-body main nodes are counted by their body, tied
     // secondary nodes by their main nodes (which carry their mass).
     let ke_skip: Vec<bool> = (0..n).map(|l| is_main[l] || tied_tr[l]).collect();
-    // Rotational: a tied secondary node's inertia is its main nodes' unless
-    // only its translation is tied (main nodes without rotations).
+    // Rotational: a tied secondary node's inertia is its main nodes' (or, on
+    // main nodes without rotations, left out of the dynamics: contact::interfaces::type2).
     let inertia_ke: Vec<f64> = (0..n)
         .map(|l| {
             if is_main[l] || tied_rot[l] {
@@ -739,7 +739,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
     let mut wall_work = 0.0f64;
     // Tied secondary nodes start with their main segment's motion.
     if !ties.is_empty() {
-        ties.recover(world, &mut v, &mut vr);
+        ties.recover(world, &x, &mut v, &mut vr, 0.0);
     }
     let stop = compute_all(&mut blocks, &offsets, &x, &v, &vr, 0.0, &mut contrib);
     plan.assemble(world, &contrib, &mut fint);
@@ -951,7 +951,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
                 }
                 f
             };
-            ties.transfer(world, &f_of, &mut ftie);
+            ties.transfer(world, &x, &f_of, &mut ftie);
         }
         // Accelerations and velocities at n+½.
         for l in 0..n {
@@ -1121,7 +1121,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
         }
         // Tied secondary nodes follow their main nodes (after every other condition).
         if !ties.is_empty() {
-            ties.recover(world, &mut v, &mut vr);
+            ties.recover(world, &x, &mut v, &mut vr, dt);
         }
         // External work over the step, with the forces at n.
         for l in 0..n {
@@ -1155,6 +1155,10 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
             if let Some(l) = lb.main_local {
                 x[l as usize] = bodies[b].center;
             }
+        }
+        // Tied secondary nodes: at their place on the moved segment.
+        if !ties.is_empty() {
+            ties.place(&mut x);
         }
         t += dt;
         cycle += 1;
