@@ -266,7 +266,11 @@ mod tests {
             assert!((s[k] - om[k]).abs() < 1e-14);
         }
         // Rodrigues keeps the length and turns by the angle.
-        let r = rotate([1.0, 0.0, 0.5], [0.0, 0.0, 2.0], std::f64::consts::FRAC_PI_4);
+        let r = rotate(
+            [1.0, 0.0, 0.5],
+            [0.0, 0.0, 2.0],
+            std::f64::consts::FRAC_PI_4,
+        );
         assert!((r[0]).abs() < 1e-15 && (r[1] - 1.0).abs() < 1e-15 && r[2] == 0.5);
     }
 
