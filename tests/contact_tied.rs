@@ -122,6 +122,47 @@ fn a_tied_bent_strip_deflects_as_the_continuous_one_not_as_a_hinge() {
         .listing
         .text
         .contains("INTER        1 TYPE2  TIED NODES      4"));
+    // The run file lists the tie with the interfaces, and its time history
+    // carries the force and moment resultants the listing prints (last line
+    // and last sample: the final cycle).
+    let f = hdf5::File::open(r.dir.join("tied_bend.h5")).unwrap();
+    let ty = f
+        .dataset("mesh/interfaces/type")
+        .unwrap()
+        .read_raw::<u32>()
+        .unwrap();
+    let id = f
+        .dataset("mesh/interfaces/id")
+        .unwrap()
+        .read_raw::<u64>()
+        .unwrap();
+    assert_eq!((ty, id), (vec![2], vec![1]));
+    let ds = f.dataset("th/interfaces/values").unwrap();
+    let sh = ds.shape();
+    assert_eq!(sh[1..], [1, 13]);
+    let v = ds.read_raw::<f64>().unwrap();
+    let last = &v[13 * (sh[0] - 1)..13 * sh[0]];
+    let line = r
+        .listing
+        .text
+        .lines()
+        .filter(|l| l.contains("TYPE2  TIED NODES"))
+        .next_back()
+        .unwrap();
+    let w: Vec<&str> = line.split_whitespace().collect();
+    let num = |k: &str, j: usize| -> f64 {
+        let i = w.iter().position(|x| *x == k).unwrap();
+        w[i + 1 + j].parse().unwrap()
+    };
+    eprintln!("bending: last tied force/moment sample {:?}", &last[7..13]);
+    assert!(last[..7].iter().all(|&x| x == 0.0), "{last:?}");
+    for (c, want) in [(9, num("FORCE", 2)), (11, num("MOMENT", 1))] {
+        assert!(
+            (last[c] - want).abs() <= 1e-5 * want.abs() && want != 0.0,
+            "column {c}: {} vs listing {want}",
+            last[c]
+        );
+    }
 }
 
 #[test]

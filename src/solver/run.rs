@@ -847,14 +847,10 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
     // ---- output hooks (src/output): restart, HDF5 run file, time histories, progress ----
     // Contact forces per node and per-interface samples (refreshed every cycle).
     let mut contact_force = fcont.clone();
-    let mut interface_samples: Vec<output::InterfaceSample> = vec![
-        output::InterfaceSample {
-            normal: [0.0; 3],
-            tangential: [0.0; 3],
-            energy: 0.0
-        };
-        contact.sums.len()
-    ];
+    // The interface tables: the contact interfaces, then the tied ones (TYPE2).
+    let n_contact = contact.sums.len();
+    let mut interface_samples: Vec<output::InterfaceSample> =
+        vec![output::InterfaceSample::default(); n_contact + ties.sums.len()];
     let iface_info: Vec<output::InterfaceInfo> = contact
         .setup
         .interfaces
@@ -864,6 +860,11 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
             type_number: i.type_number,
             title: i.title.clone(),
         })
+        .chain(ties.setup.interfaces.iter().map(|i| output::InterfaceInfo {
+            id: i.id,
+            type_number: 2,
+            title: i.title.clone(),
+        }))
         .collect();
     let octx = output::Context {
         world,
@@ -952,6 +953,13 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
                 f
             };
             ties.transfer(world, &x, &f_of, &mut ftie);
+            for (smp, su) in interface_samples[n_contact..].iter_mut().zip(&ties.sums) {
+                *smp = output::InterfaceSample {
+                    tied_force: su.force,
+                    tied_moment: su.moment,
+                    ..Default::default()
+                };
+            }
         }
         // Accelerations and velocities at n+½.
         for l in 0..n {
@@ -1196,6 +1204,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
                     normal: su.f_normal,
                     tangential: su.f_tangent,
                     energy: su.energy,
+                    ..Default::default()
                 };
             }
         }
