@@ -146,8 +146,7 @@ fn a_tied_bent_strip_deflects_as_the_continuous_one_not_as_a_hinge() {
         .listing
         .text
         .lines()
-        .filter(|l| l.contains("TYPE2  TIED NODES"))
-        .next_back()
+        .rfind(|l| l.contains("TYPE2  TIED NODES"))
         .unwrap();
     let w: Vec<&str> = line.split_whitespace().collect();
     let num = |k: &str, j: usize| -> f64 {
@@ -556,8 +555,8 @@ fn placement(
         let p = |pos: &dyn Fn(u64) -> V3| {
             let mut p = [0.0; 3];
             for &(q, phi) in &t.main {
-                for k in 0..3 {
-                    p[k] += phi * pos(q)[k];
+                for (pk, xk) in p.iter_mut().zip(pos(q)) {
+                    *pk += phi * xk;
                 }
             }
             p

@@ -84,18 +84,18 @@ impl SpinMap {
             - j[0][1] * (j[1][0] * j[2][2] - j[1][2] * j[2][0])
             + j[0][2] * (j[1][0] * j[2][1] - j[1][1] * j[2][0]);
         let tr = j[0][0] + j[1][1] + j[2][2];
-        if !(det.abs() > 1e-12 * tr * tr * tr) {
+        // Collinear or coincident corners (or NaN): no spin.
+        if det.is_nan() || det.abs() <= 1e-12 * tr * tr * tr {
             return None;
         }
-        let mut jinv = [[0.0; 3]; 3];
-        for a in 0..3 {
-            for b in 0..3 {
-                // Cofactor (b, a) / det.
+        // J⁻¹ = cofactor matrix (transposed) / det.
+        let jinv = [0, 1, 2].map(|a| {
+            [0, 1, 2].map(|b| {
                 let (a1, a2) = ((b + 1) % 3, (b + 2) % 3);
                 let (b1, b2) = ((a + 1) % 3, (a + 2) % 3);
-                jinv[a][b] = (j[a1][b1] * j[a2][b2] - j[a1][b2] * j[a2][b1]) / det;
-            }
-        }
+                (j[a1][b1] * j[a2][b2] - j[a1][b2] * j[a2][b1]) / det
+            })
+        });
         Some(SpinMap { r, jinv })
     }
 
@@ -107,8 +107,8 @@ impl SpinMap {
     /// ω_seg from the corner velocities.
     pub fn spin(&self, v: &[V3; 4]) -> V3 {
         let mut h = [0.0; 3];
-        for i in 0..4 {
-            h = add(h, cross(self.r[i], v[i]));
+        for (r, vi) in self.r.iter().zip(v) {
+            h = add(h, cross(*r, *vi));
         }
         self.apply(h)
     }
