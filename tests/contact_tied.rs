@@ -12,9 +12,18 @@
 //! * free flight with a tip load: momentum M v0 + P (t − Δt/2) to round-off,
 //!   energy balance as closed as the continuous strip's, the same bytes on
 //!   1, 2 and 4 ranks with the secondary and main nodes on different ranks;
-//! * a shell plate tied onto a brick block (translation only: brick main
-//!   nodes have no rotation): momentum and energy in flight, 1 = 2 ranks;
-//! * every option the engine does not compute exits 2 naming its field.
+//! * a shell plate tied onto a brick block (brick main nodes have no
+//!   rotation: moments as force couples, rotation = the face's spin):
+//!   momentum and energy in flight, 1 = 2 ranks;
+//! * every option the engine does not compute exits 2 naming its field;
+//! * large rotations (tied_spin, tied_spin_block): offset strips, and a plate
+//!   0.5 above a brick block, spinning freely through 115°: the offsets turn
+//!   with their segments, angular momentum about the centre of mass (with the
+//!   masses the solver integrates) and energy kept, 1 = 2 ranks;
+//! * a shell cantilever tied onto a brick block's face bends as a clamped one
+//!   (tied_cant_block vs cont_bend), not as a hinge;
+//! * Ignore = 1000: a secondary node out of dsearch is left free and named in
+//!   a listing warning (tied_ignore = tied_free to the byte).
 
 #[path = "contact_common/mod.rs"]
 mod cc;
@@ -113,6 +122,46 @@ fn a_tied_bent_strip_deflects_as_the_continuous_one_not_as_a_hinge() {
         .listing
         .text
         .contains("INTER        1 TYPE2  TIED NODES      4"));
+    // The run file lists the tie with the interfaces, and its time history
+    // carries the force and moment resultants the listing prints (last line
+    // and last sample: the final cycle).
+    let f = hdf5::File::open(r.dir.join("tied_bend.h5")).unwrap();
+    let ty = f
+        .dataset("mesh/interfaces/type")
+        .unwrap()
+        .read_raw::<u32>()
+        .unwrap();
+    let id = f
+        .dataset("mesh/interfaces/id")
+        .unwrap()
+        .read_raw::<u64>()
+        .unwrap();
+    assert_eq!((ty, id), (vec![2], vec![1]));
+    let ds = f.dataset("th/interfaces/values").unwrap();
+    let sh = ds.shape();
+    assert_eq!(sh[1..], [1, 13]);
+    let v = ds.read_raw::<f64>().unwrap();
+    let last = &v[13 * (sh[0] - 1)..13 * sh[0]];
+    let line = r
+        .listing
+        .text
+        .lines()
+        .rfind(|l| l.contains("TYPE2  TIED NODES"))
+        .unwrap();
+    let w: Vec<&str> = line.split_whitespace().collect();
+    let num = |k: &str, j: usize| -> f64 {
+        let i = w.iter().position(|x| *x == k).unwrap();
+        w[i + 1 + j].parse().unwrap()
+    };
+    eprintln!("bending: last tied force/moment sample {:?}", &last[7..13]);
+    assert!(last[..7].iter().all(|&x| x == 0.0), "{last:?}");
+    for (c, want) in [(9, num("FORCE", 2)), (11, num("MOMENT", 1))] {
+        assert!(
+            (last[c] - want).abs() <= 1e-5 * want.abs() && want != 0.0,
+            "column {c}: {} vs listing {want}",
+            last[c]
+        );
+    }
 }
 
 #[test]
@@ -377,4 +426,373 @@ fn a_shell_plate_tied_onto_a_brick_block_flies_with_its_momentum_and_energy() {
         r2.final_state_bytes() == r1.final_state_bytes(),
         "2 ranks differ from 1"
     );
+}
+
+type V3 = [f64; 3];
+
+/// Final state with rotational velocities: id → [x, v, ω].
+fn full_state(r: &Run) -> BTreeMap<u64, [V3; 3]> {
+    let (h, rows) = read_csv(&r.dir.join("final_state.csv"));
+    assert_eq!(h[7], "vrx");
+    rows.iter()
+        .map(|r| {
+            (
+                r[0] as u64,
+                [[r[1], r[2], r[3]], [r[4], r[5], r[6]], [r[7], r[8], r[9]]],
+            )
+        })
+        .collect()
+}
+
+/// Nodal rotational inertias of 4-node shells (Ishell < 11): dm·(A/9 + t²/12)
+/// (src/model/mass.rs).
+fn shell_inertias(m: &cc::Mesh, rho: f64, t: f64) -> BTreeMap<u64, f64> {
+    let mut out = BTreeMap::new();
+    for (_, _, n) in &m.shells {
+        let x = n.map(|i| m.nodes[&i]);
+        let a = 0.5 * norm(cross(sub(x[2], x[0]), sub(x[3], x[1])));
+        let dm = rho * a * t / 4.0;
+        for i in n {
+            *out.entry(*i).or_insert(0.0) += dm * (a / 9.0 + t * t / 12.0);
+        }
+    }
+    out
+}
+
+/// One tie as the test sees it: secondary node, main nodes with Φ_i.
+struct TieT {
+    sec: u64,
+    main: Vec<(u64, f64)>,
+    /// Three main nodes of its segment: origin, along, across.
+    frame: [u64; 3],
+}
+
+/// The masses and inertias the solver integrates: each secondary node's mass
+/// on its main nodes by Φ_i, its inertia Φ_i (I_s + m_s d²) where the main
+/// nodes rotate (`rot`), the secondary nodes themselves left out.
+fn solver_masses(
+    m: &BTreeMap<u64, f64>,
+    inr: &BTreeMap<u64, f64>,
+    ties: &[TieT],
+    d: f64,
+    rot: bool,
+) -> BTreeMap<u64, (f64, f64)> {
+    let mut out: BTreeMap<u64, (f64, f64)> = m
+        .iter()
+        .map(|(&id, &mi)| (id, (mi, *inr.get(&id).unwrap_or(&0.0))))
+        .collect();
+    for t in ties {
+        let (ms, is) = out.remove(&t.sec).unwrap();
+        for &(q, phi) in &t.main {
+            let e = out.get_mut(&q).unwrap();
+            e.0 += phi * ms;
+            if rot {
+                e.1 += phi * (is + ms * d * d);
+            }
+        }
+    }
+    out
+}
+
+/// Angular momentum about the centre of mass: Σ m (x − c) × (v − v_c) + Σ I ω.
+fn angular_momentum(mi: &BTreeMap<u64, (f64, f64)>, s: &BTreeMap<u64, [V3; 3]>) -> V3 {
+    let mt: f64 = mi.values().map(|x| x.0).sum();
+    let mut c = [0.0; 3];
+    let mut vc = [0.0; 3];
+    for (id, &(m, _)) in mi {
+        for k in 0..3 {
+            c[k] += m * s[id][0][k] / mt;
+            vc[k] += m * s[id][1][k] / mt;
+        }
+    }
+    let mut h = [0.0; 3];
+    for (id, &(m, i)) in mi {
+        let hc = cross(sub(s[id][0], c), sub(s[id][1], vc));
+        for k in 0..3 {
+            h[k] += m * hc[k] + i * s[id][2][k];
+        }
+    }
+    h
+}
+
+/// The deck's initial state of a spin ω0 = (1, 0, 0) about the centre of the
+/// own nodal masses `m` (decks/make_tied.py spin_velocities).
+fn spin_initial(mesh: &cc::Mesh, m: &BTreeMap<u64, f64>) -> BTreeMap<u64, [V3; 3]> {
+    let mt: f64 = m.values().sum();
+    let c = [0, 1, 2].map(|k| m.iter().map(|(id, mi)| mi * mesh.nodes[id][k]).sum::<f64>() / mt);
+    let w = [1.0, 0.0, 0.0];
+    mesh.nodes
+        .iter()
+        .map(|(&id, &x)| (id, [x, cross(w, sub(x, c)), w]))
+        .collect()
+}
+
+/// Components of r in the frame (b − a, normal) of three main nodes.
+fn local(a: V3, b: V3, c: V3, r: V3) -> V3 {
+    let unit = |v: V3| {
+        let n = norm(v);
+        [v[0] / n, v[1] / n, v[2] / n]
+    };
+    let e1 = unit(sub(b, a));
+    let n = unit(cross(e1, sub(c, a)));
+    let e2 = cross(n, e1);
+    [dot(r, e1), dot(r, e2), dot(r, n)]
+}
+
+/// Secondary node placement checks: |x_s − p| = |d0| and the offset's
+/// components in the segment's chord frame (a, b, c) as at t = 0; returns the
+/// worst relative changes (of |d0|) of the distance, of the components, and
+/// of the components' mean over the ties.
+fn placement(
+    mesh: &cc::Mesh,
+    s: &BTreeMap<u64, [V3; 3]>,
+    ties: &[TieT],
+    d0: f64,
+) -> (f64, f64, f64) {
+    let (mut ed, mut el) = (0.0f64, 0.0f64);
+    let mut mean = [0.0; 3];
+    for t in ties {
+        let p = |pos: &dyn Fn(u64) -> V3| {
+            let mut p = [0.0; 3];
+            for &(q, phi) in &t.main {
+                for (pk, xk) in p.iter_mut().zip(pos(q)) {
+                    *pk += phi * xk;
+                }
+            }
+            p
+        };
+        let now = |q: u64| s[&q][0];
+        let then = |q: u64| mesh.nodes[&q];
+        let d1 = sub(s[&t.sec][0], p(&now));
+        ed = ed.max((norm(d1) - d0).abs() / d0);
+        let [a, b, c] = t.frame;
+        let l1 = local(now(a), now(b), now(c), d1);
+        let l0 = local(then(a), then(b), then(c), sub(then(t.sec), p(&then)));
+        el = el.max(norm(sub(l1, l0)) / d0);
+        for k in 0..3 {
+            mean[k] += (l1[k] - l0[k]) / d0 / ties.len() as f64;
+        }
+    }
+    (ed, el, norm(mean))
+}
+
+/// Energy balance of a free flight (no external work): change of
+/// internal + kinetic + rotational kinetic energy, relative to the kinetic.
+fn free_balance(r: &Run) -> f64 {
+    let (_, rows) = r.energies();
+    let (a, b) = (&rows[0], rows.last().unwrap());
+    assert_eq!(b[6], 0.0);
+    ((b[3] + b[4] + b[5]) - (a[3] + a[4] + a[5])) / (a[4] + a[5])
+}
+
+#[test]
+fn a_spinning_offset_tie_turns_with_its_segment_and_keeps_angular_momentum() {
+    // Strip 2 (z = 0.4) tied by its nodes at x = 45, 50 (y = 0, 10/3, 20/3, 10)
+    // onto the edges x = 45, 50 of strip 1 (y = 0, 5, 10): Φ linear along y.
+    let d = deck("tied_spin");
+    let mesh = read_mesh(&d);
+    let main = |i: u64, j: u64| 1 + i + 11 * j;
+    let mut ties = Vec::new();
+    for i in 0..2u64 {
+        for j in 0..4u64 {
+            let y = 10.0 * j as f64 / 3.0;
+            let (lo, eta) = if y <= 5.0 {
+                (0, y / 5.0)
+            } else {
+                (1, (y - 5.0) / 5.0)
+            };
+            ties.push(TieT {
+                sec: 1001 + i + 12 * j,
+                main: vec![(main(9 + i, lo), 1.0 - eta), (main(9 + i, lo + 1), eta)],
+                frame: [main(9, lo), main(10, lo), main(9, lo + 1)],
+            });
+        }
+    }
+    let a = RunArgs {
+        energies: true,
+        ..Default::default()
+    };
+    let (r1, _) = state("tied_spin", "spin1", &a);
+    let s1 = full_state(&r1);
+    // It turned by more than 90° about x.
+    let e = sub(s1[&main(0, 2)][0], s1[&main(0, 0)][0]);
+    let angle = e[2].atan2(e[1]);
+    // Placement: distance to the projection and local coordinates.
+    let (ed, el, em) = placement(&mesh, &s1, &ties, 0.4);
+    // A d kept in the global frame would have moved the node by 2|d| sin(θ/2).
+    eprintln!(
+        "spin: turned {:.1}°, |x_s − p| off by {ed:.2e} of |d|, offset in the segment's chord frame off by {el:.2e} of |d| (max), {em:.2e} (mean over the ties); a fixed global d: {:.2}",
+        angle.to_degrees(),
+        2.0 * (angle / 2.0).sin()
+    );
+    assert!(angle > std::f64::consts::FRAC_PI_2, "{angle}");
+    // d turns with the main nodes' rotations (eq. (5)); the chord frame of the
+    // segment differs from them by the strip's elastic bending, ±4e-6 rad with
+    // opposite signs at x = 45 and x = 50 (the max), which cancels in the mean.
+    assert!(ed < 1e-6 && em < 1e-6 && el < 1e-5, "{ed} {em} {el}");
+    // Angular momentum about the centre of mass, with the masses the solver integrates.
+    let m = shell_masses(&mesh, RHO, 1.0, &[]);
+    let inr = shell_inertias(&mesh, RHO, 1.0);
+    let mi = solver_masses(&m, &inr, &ties, 0.4, true);
+    let h0 = angular_momentum(&mi, &spin_initial(&mesh, &m));
+    let h1 = angular_momentum(&mi, &s1);
+    let eh = norm(sub(h1, h0)) / norm(h0);
+    let eb = free_balance(&r1);
+    eprintln!(
+        "spin: H0 {h0:?}, H {h1:?}, error {eh:.2e}; energy balance {eb:.2e} of the kinetic energy"
+    );
+    assert!(eh < 1e-6, "angular momentum error {eh}");
+    assert!(eb.abs() < 1e-5, "energy balance {eb}");
+    // The turned offsets are state: the same bytes on 2 ranks.
+    let r2 = run(
+        &d,
+        &scratch("tied-spin2"),
+        &RunArgs {
+            ranks: 2,
+            ..Default::default()
+        },
+    );
+    assert!(
+        r2.final_state_bytes() == r1.final_state_bytes(),
+        "2 ranks differ from 1"
+    );
+}
+
+/// The plate nodes of tied_spin_block, (2.5 i, 2.5 j, 5.5), on the block's top
+/// face (nodes every 5): Φ bilinear at s, t ∈ {−1, 0, 1}.
+fn plate_block_ties() -> Vec<TieT> {
+    let bnode = |i: u64, j: u64| 1 + i + 5 * (j + 3);
+    let mut ties = Vec::new();
+    for j in 0..5u64 {
+        for i in 0..9u64 {
+            let (ci, cj) = ((i / 2).min(3), (j / 2).min(1));
+            let s = (i - 2 * ci) as f64 - 1.0;
+            let t = (j - 2 * cj) as f64 - 1.0;
+            let sh = [
+                0.25 * (1.0 - s) * (1.0 - t),
+                0.25 * (1.0 + s) * (1.0 - t),
+                0.25 * (1.0 + s) * (1.0 + t),
+                0.25 * (1.0 - s) * (1.0 + t),
+            ];
+            let q = [
+                bnode(ci, cj),
+                bnode(ci + 1, cj),
+                bnode(ci + 1, cj + 1),
+                bnode(ci, cj + 1),
+            ];
+            ties.push(TieT {
+                sec: 1001 + i + 9 * j,
+                main: (0..4)
+                    .filter(|&k| sh[k] != 0.0)
+                    .map(|k| (q[k], sh[k]))
+                    .collect(),
+                frame: [q[0], q[1], q[3]],
+            });
+        }
+    }
+    ties
+}
+
+#[test]
+fn a_plate_tied_with_an_offset_onto_a_spinning_brick_block_keeps_angular_momentum() {
+    // Brick main nodes have no rotations: the plate nodes' moments reach the
+    // block as force couples and their rotation is the face's spin.
+    let d = deck("tied_spin_block");
+    let mesh = read_mesh(&d);
+    let ties = plate_block_ties();
+    let a = RunArgs {
+        energies: true,
+        ..Default::default()
+    };
+    let (r1, _) = state("tied_spin_block", "spinb1", &a);
+    assert!(r1.listing.text.contains(
+        "45 secondary nodes tied (Spotflag 5, standard kinematic formulation), 0 with rotations, 45 on segments without rotational DOFs"
+    ));
+    let s1 = full_state(&r1);
+    let bnode = |i: u64, j: u64| 1 + i + 5 * (j + 3);
+    let e = sub(s1[&bnode(0, 2)][0], s1[&bnode(0, 0)][0]);
+    let angle = e[2].atan2(e[1]);
+    let (ed, el, em) = placement(&mesh, &s1, &ties, 0.5);
+    eprintln!(
+        "spin on block: turned {:.1}°, |x_s − p| off by {ed:.2e} of |d|, offset in the face's chord frame off by {el:.2e} of |d| (max), {em:.2e} (mean)",
+        angle.to_degrees()
+    );
+    assert!(angle > std::f64::consts::FRAC_PI_2);
+    assert!(ed < 1e-6 && el < 2e-6 && em < 1e-6, "{ed} {el} {em}");
+    // The plate's rotations follow the face's spin (≈ ω0 = (1, 0, 0) here).
+    let w = s1[&1001][2];
+    assert!(
+        (w[0] - 1.0).abs() < 1e-2 && w[1].abs() < 1e-2 && w[2].abs() < 1e-2,
+        "{w:?}"
+    );
+    let mut m = shell_masses(&mesh, RHO, 1.0, &[1]);
+    for (id, mi) in brick_masses(&mesh, RHO, &[2]) {
+        *m.entry(id).or_insert(0.0) += mi;
+    }
+    let inr = shell_inertias(&mesh, RHO, 1.0);
+    let mi = solver_masses(&m, &inr, &ties, 0.5, false);
+    let h0 = angular_momentum(&mi, &spin_initial(&mesh, &m));
+    let h1 = angular_momentum(&mi, &s1);
+    let eh = norm(sub(h1, h0)) / norm(h0);
+    let eb = free_balance(&r1);
+    eprintln!("spin on block: H0 {h0:?}, H {h1:?}, error {eh:.2e}; energy balance {eb:.2e}");
+    assert!(eh < 1e-6, "angular momentum error {eh}");
+    assert!(eb.abs() < 1e-4, "energy balance {eb}");
+    let r2 = run(
+        &d,
+        &scratch("tied-spinb2"),
+        &RunArgs {
+            ranks: 2,
+            ..Default::default()
+        },
+    );
+    assert!(
+        r2.final_state_bytes() == r1.final_state_bytes(),
+        "2 ranks differ from 1"
+    );
+}
+
+#[test]
+fn a_shell_cantilever_tied_onto_a_brick_face_bends_as_a_clamped_one() {
+    // The strip's x = 0 edge on the face of a brick block clamped at its back:
+    // without the moment (translation only) the joint is a hinge.
+    let (r, tied) = state("tied_cant_block", "cantb", &RunArgs::default());
+    let (_, cont) = state("cont_bend", "cantb-c", &RunArgs::default());
+    let wt = tied[&(1001 + 20 + 21)][2];
+    let wc = cont[&TIP_CONT][2];
+    // Hinge at x = 0: the whole strip (mass m, length L) turns about it under
+    // P: w_tip ≈ ½ (3P/m) t² at t = 5.984.
+    let m = RHO * 1.0 * 10.0 * 100.0;
+    let hinge = 0.5 * 3.0 * 5.25e-5 / m * 5.984f64.powi(2);
+    eprintln!(
+        "cantilever on block: tip w {wt:.6e}, clamped {wc:.6e}, ratio {:.4}; a hinge ~{hinge:.3} ({:.1} x)",
+        wt / wc,
+        hinge / wc
+    );
+    assert!((wt / wc - 1.0).abs() < 0.03, "ratio {}", wt / wc);
+    assert!(hinge > 1.5 * wt);
+    assert!(r
+        .listing
+        .text
+        .contains("3 secondary nodes tied (Spotflag 5, standard kinematic formulation), 0 with rotations, 3 on segments"));
+}
+
+#[test]
+fn ignore_1000_leaves_a_node_out_of_dsearch_free_and_warns() {
+    // tied_free with node 6 (x = 25, 25 from the coarse half, dsearch 5) in the
+    // secondary group and Ignore = 1000: node 6 is not tied and moves with its
+    // own mesh, so the run is the same bytes as tied_free.
+    let (ri, si) = state("tied_ignore", "ign", &RunArgs::default());
+    let (rf, _) = state("tied_free", "ign-ref", &RunArgs::default());
+    assert!(ri.listing.text.contains(
+        "WARNING /INTER/TYPE2/1: 1 secondary nodes have no main segment within dsearch and are left free (Ignore = 1000): 6"
+    ), "{}", ri.listing.text);
+    assert!(ri
+        .listing
+        .text
+        .contains("/INTER/TYPE2/1: 4 secondary nodes tied"));
+    assert!(ri.final_state_bytes() == rf.final_state_bytes());
+    // It did move (flight at v0 = (1, 0, 0.5) for 1 ms).
+    let x0 = read_mesh(&deck("tied_ignore")).nodes[&6];
+    assert!((si[&6][0] - x0[0] - 1.0).abs() < 0.05, "{:?}", si[&6]);
 }

@@ -12,7 +12,12 @@
 //! - after the velocity update, the owners of main nodes send their velocities
 //!   (and rotational velocities) to the ranks that hold a secondary node tied
 //!   to them but not the main node (a static plan: ties never change), and
-//!   every holder of a secondary node recovers its velocity in corner order.
+//!   every holder of a secondary node recovers its velocity in corner order;
+//!   the same message carries the main nodes' positions after the step
+//!   (x + Δt v, the bits the owner computes), which the next cycle's force
+//!   transfer and the placing of the secondary nodes use;
+//! - the offsets d⃗ (turned with their segment every cycle) are state that
+//!   every holder of the secondary node updates from the same data.
 
 use super::geometry::{self as geo, V3};
 use super::interfaces::type2;
@@ -32,9 +37,11 @@ pub struct Tie {
     pub seg: [u32; 4],
     /// Shape functions Φ_i of the projection p (§8.4.5.1 four-triangle split).
     pub shape: [f64; 4],
-    /// d⃗ = x_s − p at t = 0.
+    /// d⃗ = x_s − Σ Φ_i x_i at t = 0 (global frame; turned with the segment at run time).
     pub offset: V3,
-    /// Rotations transmitted (every main node has a rotational DOF).
+    /// Rotations transmitted through the main nodes' rotational DOFs (shells);
+    /// false: main nodes without rotations (bricks), the segment's rigid spin
+    /// is used (`type2::Turn::Spin`).
     pub rot: bool,
     /// Secondary node's own mass and rotational inertia (transferred once).
     pub ms: f64,
@@ -77,10 +84,11 @@ impl TiedSetup {
         for it in &self.interfaces {
             let rot = it.ties.iter().filter(|t| t.rot).count();
             out.push(format!(
-                "/INTER/TYPE2/{}: {} secondary nodes tied (Spotflag 5, standard kinematic formulation), {} with rotations; dsearch {:e}",
+                "/INTER/TYPE2/{}: {} secondary nodes tied (Spotflag 5, standard kinematic formulation), {} with rotations, {} on segments without rotational DOFs (moments as force couples, rotation = the segment's spin); dsearch {:e}",
                 it.id,
                 it.ties.len(),
                 rot,
+                it.ties.len() - rot,
                 it.dsearch
             ));
             if !it.untied.is_empty() {
@@ -230,7 +238,8 @@ pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<TiedSetup, String> {
             }
             let seg = i.main_segments[k];
             let rot = seg.iter().all(|&q| m.nodal_inertia[q as usize] > 0.0);
-            ties.push((s, seg, pr.shape, geo::sub(xs, pr.point), rot));
+            let p = geo::interpolate(&pr.shape, &seg.map(|q| m.nodes.x[q as usize]));
+            ties.push((s, seg, pr.shape, geo::sub(xs, p), rot));
         }
         let removed = matches!(t.ignore, 1..=3);
         raw.push((c.id, c.title.clone(), ties, untied, removed, dsearch));
@@ -322,6 +331,15 @@ pub struct TiedSystem {
     /// Main-node velocity and rotational velocity per tnode (held or received).
     tv: Vec<V3>,
     tw: Vec<V3>,
+    /// Positions of the received (ghost) tnodes at the current cycle's start
+    /// (local tnodes are read from x).
+    tx: Vec<V3>,
+    /// Offsets d⃗ of the ties (per interface, per tie) at the cycle's start,
+    /// and after the step's rotation (`recover` → `place`).
+    d: Vec<Vec<V3>>,
+    d_next: Vec<Vec<V3>>,
+    /// The ghost positions have been received once.
+    started: bool,
     pub sums: Vec<TiedSums>,
 }
 
@@ -373,6 +391,11 @@ impl TiedSystem {
         let sendv = ranks.iter().map(|&r| norm(&mut send, r)).collect();
         let recvv = ranks.iter().map(|&r| norm(&mut recv, r)).collect();
         let sums = vec![TiedSums::default(); setup.interfaces.len()];
+        let d: Vec<Vec<V3>> = setup
+            .interfaces
+            .iter()
+            .map(|it| it.ties.iter().map(|t| t.offset).collect())
+            .collect();
         TiedSystem {
             local,
             owned,
@@ -381,6 +404,10 @@ impl TiedSystem {
             recv: recvv,
             tv: vec![[0.0; 3]; nt],
             tw: vec![[0.0; 3]; nt],
+            tx: vec![[0.0; 3]; nt],
+            d_next: d.clone(),
+            d,
+            started: false,
             sums,
             setup,
         }
@@ -391,6 +418,8 @@ impl TiedSystem {
     }
 
     /// Local secondary nodes: (translation tied, rotation tied) per local node.
+    /// Every secondary node's rotation follows its segment (the main nodes'
+    /// rotations, or the segment's spin where they have none).
     pub fn masks(&self, n: usize) -> (Vec<bool>, Vec<bool>) {
         let mut tr = vec![false; n];
         let mut ro = vec![false; n];
@@ -399,7 +428,7 @@ impl TiedSystem {
                 let l = self.local[tie.sec as usize];
                 if l != NONE {
                     tr[l as usize] = true;
-                    ro[l as usize] = tie.rot;
+                    ro[l as usize] = true;
                 }
             }
         }
@@ -424,18 +453,38 @@ impl TiedSystem {
         }
     }
 
+    /// Position of tnode t: local from x, else the received one.
+    fn pos(&self, t: u32, x: &[V3]) -> V3 {
+        let l = self.local[t as usize];
+        if l != NONE {
+            x[l as usize]
+        } else {
+            self.tx[t as usize]
+        }
+    }
+
+    /// How the tie's segment turns, from its corners' positions.
+    fn turn(tie: &Tie, xm: &[V3; 4]) -> type2::Turn {
+        if tie.rot {
+            type2::Turn::Nodal
+        } else {
+            type2::Turn::Spin(type2::SpinMap::new(xm, tie.seg[3] == tie.seg[2]))
+        }
+    }
+
     /// The secondary nodes' forces and moments `f` (6 components: the total
     /// force the node would integrate, external − internal + contact) spread
     /// over their main nodes: returns the shares per local node in `ftie`,
-    /// summed in key order (collective).
+    /// summed in key order (collective). `x`: positions at the cycle's start.
     pub fn transfer(
         &mut self,
         world: &World,
+        x: &[V3],
         f: &dyn Fn(usize) -> [f64; 6],
         ftie: &mut [[f64; 6]],
     ) {
-        for x in ftie.iter_mut() {
-            *x = [0.0; 6];
+        for v in ftie.iter_mut() {
+            *v = [0.0; 6];
         }
         for s in self.sums.iter_mut() {
             *s = TiedSums::default();
@@ -443,19 +492,17 @@ impl TiedSystem {
         // (tnode, key hi, key lo, share)
         let mut out: Vec<(u32, u64, u64, [f64; 6])> = Vec::new();
         for (ii, it) in self.setup.interfaces.iter().enumerate() {
-            for tie in &it.ties {
+            for (j, tie) in it.ties.iter().enumerate() {
                 let l = self.local[tie.sec as usize];
                 if l == NONE || !self.owned[tie.sec as usize] {
                     continue;
                 }
                 let fs = f(l as usize);
                 let force = [fs[0], fs[1], fs[2]];
-                let moment = if tie.rot {
-                    [fs[3], fs[4], fs[5]]
-                } else {
-                    [0.0; 3]
-                };
-                let sh = type2::spread(&tie.shape, force, moment, tie.offset, tie.rot);
+                let moment = [fs[3], fs[4], fs[5]];
+                let xm = tie.seg.map(|q| self.pos(q, x));
+                let turn = Self::turn(tie, &xm);
+                let sh = type2::spread(&tie.shape, force, moment, self.d[ii][j], &turn);
                 let su = &mut self.sums[ii];
                 su.tied += 1;
                 for k in 0..3 {
@@ -464,7 +511,7 @@ impl TiedSystem {
                 }
                 let hi = ((ii as u64) << 32) | self.setup.nodes[tie.sec as usize] as u64;
                 for (i, &q) in tie.seg.iter().enumerate() {
-                    if tie.shape[i] == 0.0 {
+                    if tie.shape[i] == 0.0 && sh[i] == [0.0; 6] {
                         continue;
                     }
                     out.push((q, hi, i as u64, sh[i]));
@@ -508,24 +555,34 @@ impl TiedSystem {
         }
     }
 
-    /// Secondary nodes' velocities (and rotational velocities where tied)
-    /// from their main nodes' (collective: ghost main-node velocities).
-    pub fn recover(&mut self, world: &World, v: &mut [V3], vr: &mut [V3]) {
+    /// Secondary nodes' velocities and rotational velocities from their main
+    /// nodes' (collective: ghost main-node velocities), and the offsets turned
+    /// over the step `dt` the positions will then make (0 before the first
+    /// cycle). `x`: positions at the cycle's start, not yet updated.
+    pub fn recover(&mut self, world: &World, x: &[V3], v: &mut [V3], vr: &mut [V3], dt: f64) {
         for (t, &l) in self.local.iter().enumerate() {
             if l != NONE {
                 self.tv[t] = v[l as usize];
                 self.tw[t] = vr[l as usize];
             }
         }
+        // Ghost positions after the step, x + Δt v (as the owner updates them).
+        let mut next: Vec<(u32, V3)> = Vec::new();
         if !self.ranks.is_empty() {
             let send: Vec<Vec<f64>> = self
                 .send
                 .iter()
                 .map(|ids| {
-                    let mut b = Vec::with_capacity(6 * ids.len());
+                    let mut b = Vec::with_capacity(9 * ids.len());
                     for &q in ids {
+                        let l = self.local[q as usize] as usize;
                         b.extend_from_slice(&self.tv[q as usize]);
                         b.extend_from_slice(&self.tw[q as usize]);
+                        let mut xn = x[l];
+                        for k in 0..3 {
+                            xn[k] += dt * v[l][k];
+                        }
+                        b.extend_from_slice(&xn);
                     }
                     b
                 })
@@ -533,30 +590,62 @@ impl TiedSystem {
             let mut recv: Vec<Vec<f64>> = self
                 .recv
                 .iter()
-                .map(|ids| vec![0.0; 6 * ids.len()])
+                .map(|ids| vec![0.0; 9 * ids.len()])
                 .collect();
             world.exchange_f64(&self.ranks, &send, &mut recv);
             for (ids, b) in self.recv.iter().zip(&recv) {
                 for (j, &q) in ids.iter().enumerate() {
-                    let c = &b[6 * j..6 * j + 6];
+                    let c = &b[9 * j..9 * j + 9];
                     self.tv[q as usize] = [c[0], c[1], c[2]];
                     self.tw[q as usize] = [c[3], c[4], c[5]];
+                    next.push((q, [c[6], c[7], c[8]]));
                 }
             }
         }
-        for it in &self.setup.interfaces {
-            for tie in &it.ties {
+        if !self.started {
+            // Before the first cycle (dt = 0): the positions now.
+            for &(q, xn) in &next {
+                self.tx[q as usize] = xn;
+            }
+            self.started = true;
+        }
+        for (ii, it) in self.setup.interfaces.iter().enumerate() {
+            for (j, tie) in it.ties.iter().enumerate() {
                 let l = self.local[tie.sec as usize];
                 if l == NONE {
                     continue;
                 }
                 let vm = tie.seg.map(|q| self.tv[q as usize]);
                 let wm = tie.seg.map(|q| self.tw[q as usize]);
-                let (vs, ws) = type2::recover(&tie.shape, &vm, &wm, tie.offset, tie.rot);
+                let xm = tie.seg.map(|q| self.pos(q, x));
+                let turn = Self::turn(tie, &xm);
+                let d = self.d[ii][j];
+                let (vs, ws) = type2::recover(&tie.shape, &vm, &wm, d, &turn);
                 v[l as usize] = vs;
-                if let Some(w) = ws {
-                    vr[l as usize] = w;
+                if tie.rot || tie.is > 0.0 {
+                    vr[l as usize] = ws;
                 }
+                self.d_next[ii][j] = type2::rotate(d, ws, dt);
+            }
+        }
+        for (q, xn) in next {
+            self.tx[q as usize] = xn;
+        }
+    }
+
+    /// After the position update: each secondary node placed at
+    /// Σ Φ_i x_iⁿ⁺¹ + d⃗ⁿ⁺¹ (module doc of `interfaces::type2`).
+    pub fn place(&mut self, x: &mut [V3]) {
+        for (ii, it) in self.setup.interfaces.iter().enumerate() {
+            for (j, tie) in it.ties.iter().enumerate() {
+                self.d[ii][j] = self.d_next[ii][j];
+                let l = self.local[tie.sec as usize];
+                if l == NONE {
+                    continue;
+                }
+                let xm = tie.seg.map(|q| self.pos(q, x));
+                let p = geo::interpolate(&tie.shape, &xm);
+                x[l as usize] = geo::add(p, self.d[ii][j]);
             }
         }
     }

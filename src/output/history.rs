@@ -16,9 +16,13 @@
 //!   and mass Σ m_e over its elements not deleted, with the element mass
 //!   m_e = ρ·t·A (shells), ρ·V (solids), the property mass (springs) taken
 //!   on the initial geometry, as the starter's part masses;
-//! - `/th/interfaces/values [T, I, 7]`: normal and tangential force
+//! - `/th/interfaces/values [T, I, 13]`: normal and tangential force
 //!   resultants (x, y, z) and contact energy, as the contact code passes
-//!   them in (`InterfaceSample`; none until contact lands);
+//!   them in (`InterfaceSample`), then for the tied interfaces (/INTER/TYPE2,
+//!   after the contact interfaces) the resultants of the forces and of the
+//!   moments their secondary nodes passed to the main nodes in the sampled
+//!   cycle, Σ F_s and Σ M_s (0 for the other types; the contact columns are 0
+//!   for TYPE2, whose energy is 0: the tie does no work);
 //! - `/th/rigid_walls/values [T, W, 3]`: the force the nodes put on each
 //!   wall in the sampled cycle;
 //! - `/th/nodes/values [T, M, 9]` for the /TH/NODE nodes: displacement
@@ -50,7 +54,7 @@ pub const GLOBAL_COLUMNS: [&str; 10] = [
 /// Columns of `/th/parts/values`.
 pub const PART_COLUMNS: [&str; 3] = ["internal_energy", "kinetic_energy", "mass"];
 /// Columns of `/th/interfaces/values`.
-pub const INTERFACE_COLUMNS: [&str; 7] = [
+pub const INTERFACE_COLUMNS: [&str; 13] = [
     "normal_force_x",
     "normal_force_y",
     "normal_force_z",
@@ -58,7 +62,15 @@ pub const INTERFACE_COLUMNS: [&str; 7] = [
     "tangential_force_y",
     "tangential_force_z",
     "contact_energy",
+    "tied_force_x",
+    "tied_force_y",
+    "tied_force_z",
+    "tied_moment_x",
+    "tied_moment_y",
+    "tied_moment_z",
 ];
+/// Values per interface and sample (`INTERFACE_COLUMNS`).
+pub const IW: usize = INTERFACE_COLUMNS.len();
 /// Columns of `/th/rigid_walls/values`.
 pub const WALL_COLUMNS: [&str; 3] = ["force_x", "force_y", "force_z"];
 /// Columns of `/th/nodes/values`.
@@ -89,7 +101,7 @@ impl ThLayout {
     pub fn width(&self) -> usize {
         1 + GLOBAL_COLUMNS.len()
             + 3 * self.parts
-            + 7 * self.interfaces
+            + IW * self.interfaces
             + 3 * self.walls
             + 9 * self.nodes
     }
@@ -104,12 +116,15 @@ pub struct ThRow {
 
 /// What the contact code reports per interface at a sample, as this rank's
 /// partial sums (they are added over ranks): normal and tangential force
-/// resultants and the contact energy.
+/// resultants and the contact energy; for a tied interface the force and
+/// moment resultants its secondary nodes passed to their main nodes.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct InterfaceSample {
     pub normal: [f64; 3],
     pub tangential: [f64; 3],
     pub energy: f64,
+    pub tied_force: [f64; 3],
+    pub tied_moment: [f64; 3],
 }
 
 /// The sampler: what it needs precomputed, and its schedule.
@@ -202,11 +217,11 @@ impl History {
         let l = self.layout;
         let (np, ni, nw, nm) = (l.parts, l.interfaces, l.walls, l.nodes);
         // Partial sums: [ie, hourglass, plastic, w_ext, wall work, then the
-        // tables as the file lays them out: parts [P][3], interfaces [I][7],
+        // tables as the file lays them out: parts [P][3], interfaces [I][IW],
         // walls [W][3], nodes [M][9]].
         let o_parts = 5;
         let o_if = o_parts + 3 * np;
-        let o_wall = o_if + 7 * ni;
+        let o_wall = o_if + IW * ni;
         let o_node = o_wall + 3 * nw;
         let mut buf = vec![0.0f64; o_node + 9 * nm];
         buf[0] = s.blocks.iter().map(|b| b.energy()).sum::<f64>();
@@ -240,10 +255,12 @@ impl History {
             }
         }
         for (i, smp) in s.interfaces.iter().enumerate().take(ni) {
-            let o = o_if + 7 * i;
+            let o = o_if + IW * i;
             buf[o..o + 3].copy_from_slice(&smp.normal);
             buf[o + 3..o + 6].copy_from_slice(&smp.tangential);
             buf[o + 6] = smp.energy;
+            buf[o + 7..o + 10].copy_from_slice(&smp.tied_force);
+            buf[o + 10..o + 13].copy_from_slice(&smp.tied_moment);
         }
         for (w, f) in s.wall_force.iter().enumerate().take(nw) {
             buf[o_wall + 3 * w..o_wall + 3 * w + 3].copy_from_slice(f);
@@ -273,7 +290,7 @@ impl History {
         } else {
             0.0
         };
-        let contact: f64 = (0..ni).map(|i| buf[o_if + 7 * i + 6]).sum();
+        let contact: f64 = (0..ni).map(|i| buf[o_if + IW * i + 6]).sum();
         let mut values = Vec::with_capacity(l.width());
         values.extend_from_slice(&[*s.t, *s.dt]);
         values.extend_from_slice(&[ie, ke, ker, w, err, buf[1], buf[2], buf[4], contact]);

@@ -18,7 +18,7 @@
 //!     coordinates, displacement, velocity, contact_force   [N,3] f64
 //!     <kind>/von_mises, plastic_strain, thickness (shells) [E] f64, deleted [E] u8
 //! /th/                   time histories: time, cycle, global [T,10], parts/values [T,P,3],
-//!                        interfaces/values [T,I,7], rigid_walls/values [T,W,3],
+//!                        interfaces/values [T,I,13], rigid_walls/values [T,W,3],
 //!                        nodes/values [T,M,9] (see `history`; a `columns` attribute names the last axis)
 //! ```
 //!
@@ -534,7 +534,7 @@ impl RunFile {
             ("th/cycle", 1),
             ("th/global", super::history::GLOBAL_COLUMNS.len()),
             ("th/parts/values", 3 * l.parts),
-            ("th/interfaces/values", 7 * l.interfaces),
+            ("th/interfaces/values", super::history::IW * l.interfaces),
             ("th/rigid_walls/values", 3 * l.walls),
             ("th/nodes/values", 9 * l.nodes),
         ];

@@ -532,8 +532,8 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
     // Kinetic energy: rigid-body main nodes are counted by their body, tied
     // secondary nodes by their main nodes (which carry their mass).
     let ke_skip: Vec<bool> = (0..n).map(|l| is_main[l] || tied_tr[l]).collect();
-    // Rotational: a tied secondary node's inertia is its main nodes' unless
-    // only its translation is tied (main nodes without rotations).
+    // Rotational: a tied secondary node's inertia is its main nodes' (or, on
+    // main nodes without rotations, left out of the dynamics: contact::interfaces::type2).
     let inertia_ke: Vec<f64> = (0..n)
         .map(|l| {
             if is_main[l] || tied_rot[l] {
@@ -767,7 +767,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
     let mut wall_work = 0.0f64;
     // Tied secondary nodes start with their main segment's motion.
     if !ties.is_empty() {
-        ties.recover(world, &mut v, &mut vr);
+        ties.recover(world, &x, &mut v, &mut vr, 0.0);
     }
     let stop = compute_all(&mut blocks, &offsets, &x, &v, &vr, 0.0, &mut contrib);
     plan.assemble(world, &contrib, &mut fint);
@@ -893,14 +893,10 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
     // ---- output hooks (src/output): restart, HDF5 run file, time histories, progress ----
     // Contact forces per node and per-interface samples (refreshed every cycle).
     let mut contact_force = fcont.clone();
-    let mut interface_samples: Vec<output::InterfaceSample> = vec![
-        output::InterfaceSample {
-            normal: [0.0; 3],
-            tangential: [0.0; 3],
-            energy: 0.0
-        };
-        contact.sums.len()
-    ];
+    // The interface tables: the contact interfaces, then the tied ones (TYPE2).
+    let n_contact = contact.sums.len();
+    let mut interface_samples: Vec<output::InterfaceSample> =
+        vec![output::InterfaceSample::default(); n_contact + ties.sums.len()];
     let iface_info: Vec<output::InterfaceInfo> = contact
         .setup
         .interfaces
@@ -910,6 +906,11 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
             type_number: i.type_number,
             title: i.title.clone(),
         })
+        .chain(ties.setup.interfaces.iter().map(|i| output::InterfaceInfo {
+            id: i.id,
+            type_number: 2,
+            title: i.title.clone(),
+        }))
         .collect();
     let octx = output::Context {
         world,
@@ -997,7 +998,14 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
                 }
                 f
             };
-            ties.transfer(world, &f_of, &mut ftie);
+            ties.transfer(world, &x, &f_of, &mut ftie);
+            for (smp, su) in interface_samples[n_contact..].iter_mut().zip(&ties.sums) {
+                *smp = output::InterfaceSample {
+                    tied_force: su.force,
+                    tied_moment: su.moment,
+                    ..Default::default()
+                };
+            }
         }
         // Accelerations and velocities at n+½.
         for l in 0..n {
@@ -1167,7 +1175,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
         }
         // Tied secondary nodes follow their main nodes (after every other condition).
         if !ties.is_empty() {
-            ties.recover(world, &mut v, &mut vr);
+            ties.recover(world, &x, &mut v, &mut vr, dt);
         }
         // External work over the step, with the forces at n.
         for l in 0..n {
@@ -1201,6 +1209,10 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
             if let Some(l) = lb.main_local {
                 x[l as usize] = bodies[b].center;
             }
+        }
+        // Tied secondary nodes: at their place on the moved segment.
+        if !ties.is_empty() {
+            ties.place(&mut x);
         }
         t += dt;
         cycle += 1;
@@ -1248,6 +1260,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
                     normal: su.f_normal,
                     tangential: su.f_tangent,
                     energy: su.energy,
+                    ..Default::default()
                 };
             }
         }
