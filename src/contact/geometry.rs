@@ -134,6 +134,27 @@ pub fn segment_area(x: &[V3; 4], tri: bool) -> f64 {
 
 /// Closest point of a segment to node `p` (§8.4.5.1): four-triangle split of a
 /// quadrangle around its centre, one triangle for a 3-node segment.
+/// True when `p` is at least `reach` away from every point of the segment:
+/// the segment lies in the ball around its nodes' mean c whose radius r is the
+/// farthest node, so |p − c| ≥ r + reach is enough. A cheap, exact reject
+/// before `project`.
+pub fn beyond_reach(p: V3, x: &[V3; 4], tri: bool, reach: f64) -> bool {
+    let n = if tri { 3 } else { 4 };
+    let mut c = [0.0; 3];
+    for xi in &x[..n] {
+        c = add(c, *xi);
+    }
+    let c = scale(c, 1.0 / n as f64);
+    let mut r2 = 0.0f64;
+    for xi in &x[..n] {
+        let d = sub(*xi, c);
+        r2 = r2.max(dot(d, d));
+    }
+    let d = sub(p, c);
+    let lim = r2.sqrt() + reach;
+    dot(d, d) >= lim * lim
+}
+
 pub fn project(p: V3, x: &[V3; 4], tri: bool) -> Projection {
     let normal = segment_normal(x, tri);
     let (point, shape) = if tri {
@@ -214,6 +235,39 @@ pub fn min_edge(x: &[V3; 4], tri: bool) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The ball reject never drops a point the projection finds within reach
+    /// (warped quads and triangles, points all around).
+    #[test]
+    fn beyond_reach_only_rejects_points_out_of_reach() {
+        let mut seed = 12345u64;
+        let mut rnd = || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            ((seed >> 11) as f64) / ((1u64 << 53) as f64) * 2.0 - 1.0
+        };
+        let mut rejected = 0;
+        for case in 0..4000 {
+            let mut x = square();
+            for xi in x.iter_mut() {
+                for v in xi.iter_mut() {
+                    *v += 0.3 * rnd();
+                }
+            }
+            let tri = case % 3 == 0;
+            let p = [2.0 * rnd() + 0.5, 2.0 * rnd() + 0.5, rnd()];
+            let reach = 0.05 + 0.5 * (rnd() + 1.0);
+            if beyond_reach(p, &x, tri, reach) {
+                rejected += 1;
+                assert!(project(p, &x, tri).dist >= reach, "case {case}");
+            }
+        }
+        assert!(
+            rejected > 500,
+            "the test must reject some points: {rejected}"
+        );
+    }
 
     fn square() -> [V3; 4] {
         [

@@ -29,6 +29,15 @@ pub struct Pair<'a> {
 /// The pair's force, or `None` when the node is outside the gap (or at the
 /// segment's mid-plane, where it is deactivated, §8.8.11.1).
 pub fn pair(p: &Pair, st: &mut PairState) -> Option<PairForce> {
+    // Most candidates of the sort are out of the gap at a given cycle: a node
+    // farther than the gap from the ball holding the segment's nodes is
+    // farther than the gap from the segment (exact, so the result is the same
+    // as the full projection's).
+    if geo::beyond_reach(p.xs, p.xm, p.tri, p.gap) {
+        st.ft = [0.0; 3];
+        st.ff = [0.0; 3];
+        return None;
+    }
     let pr = geo::project(p.xs, p.xm, p.tri);
     if pr.dist >= p.gap || pr.dist < 1e-10 * p.gap {
         st.ft = [0.0; 3];
@@ -36,11 +45,7 @@ pub fn pair(p: &Pair, st: &mut PairState) -> Option<PairForce> {
         return None;
     }
     let s = geo::dot(geo::sub(p.xs, pr.point), pr.normal);
-    let side = if s >= 0.0 { 1 } else { -1 };
-    if st.side != 0 && st.side != side && std::env::var_os("CRASHSIM_DEBUG_CROSS").is_some() {
-        eprintln!("crossing: dist {} gap {}", pr.dist, p.gap);
-    }
-    st.side = side;
+    st.side = if s >= 0.0 { 1 } else { -1 };
     let pen = p.gap - pr.dist;
     let (f_el, kt) = stiffness::type7_reaction(p.k0, p.gap, pen);
     let vc = geo::interpolate(&pr.shape, p.vm);
