@@ -164,14 +164,12 @@ fn boule1v4_energies_on_1_2_and_4_ranks_follow_openradioss_and_final_state_is_by
     let mut states = Vec::new();
     for np in [0, 2, 4] {
         let dir = run("BOULE1V4", np);
-        // I-ENERGY (without hourglass energy, as the Radioss listing) holds
-        // the 10% of the issue at every printed cycle (worst 3.9%).
-        // K-ENERGY T holds it at every printed cycle but two: t = 0.0063
-        // (10.3%: 15.9 J against 20.1 J while the wall pushes the ball's pole
-        // alone, before any contact) and t = 0.1246, the ball's last rebound,
-        // which comes later here (18.4 J against 34.9 J). It is held to 11% up
-        // to t = 0.12; the last row is not checked. Open in issue 4.
-        for line in check_energies("BOULE1V4", &dir, [(0.1, 1.0), (0.11, 0.12)]) {
+        // I-ENERGY (without the hourglass energy, as the Radioss listing)
+        // and K-ENERGY T at every printed cycle: the issue asks 10% of the
+        // column's largest value; measured 0.4% and 0.8% (the shells'
+        // hourglass with the reference engine's factors), held to 5% here so
+        // that a regression shows long before the 10%.
+        for line in check_energies("BOULE1V4", &dir, [(0.05, 1.0), (0.05, 1.0)]) {
             eprintln!("{np} ranks: {line}");
         }
         states.push(final_state(&dir));

@@ -161,9 +161,9 @@ struct Consts {
     /// Ashear/(3(1+ν)).
     shfpr3: f64,
     /// √(h_m/2), √(h_f·Ashear/(6(1+ν))), √(h_r/2)/(8√3) (Ishell 1, 2, 4).
-    vm: f64,
-    vf: f64,
-    vr: f64,
+    qm: f64,
+    qf: f64,
+    qr: f64,
     /// √h_r/(8√3) (Ishell 3).
     vr3: f64,
     /// The material has a strain-rate term.
@@ -292,9 +292,12 @@ impl ShellSection {
             gs: m.shear_modulus() * self.ashear,
             rc: 0.25 * m.rho_ref() * c,
             shfpr3: self.ashear / (3.0 * (1.0 + nu)),
-            vm: (0.5 * self.hm).sqrt(),
-            vf: (self.hf * self.ashear / (6.0 * (1.0 + nu))).sqrt(),
-            vr: (0.5 * self.hr).sqrt() * INV_8_SQRT3,
+            // Quadratic hourglass viscosities (Ishell 1, 2, 4): ¼ρ·100·½·h
+            // per mode, the flexural one with √(k/(3(1+ν))), the rotational
+            // one with 1/(8√3).
+            qm: 12.5 * m.rho_ref() * self.hm,
+            qf: 12.5 * m.rho_ref() * self.hf * (self.ashear / (3.0 * (1.0 + nu))).sqrt(),
+            qr: 12.5 * m.rho_ref() * self.hr * INV_8_SQRT3,
             vr3: self.hr.sqrt() * INV_8_SQRT3,
             rate: m.is_rate_dependent(),
             thermal: m.is_thermal(),
@@ -915,19 +918,22 @@ pub fn shell4_step(
             mrx = cr * qrx;
             mry = cr * qry;
         } else {
-            let km = 0.25 * sec.hm * e_mod * t;
-            let kf = 0.25 * sec.hf * e_mod * shfpr3 * t * t * t / bsum;
+            // Ishell 1, 2, 4: elastic resultants integrated in time plus a
+            // quadratic viscosity, with the reference engine's global factors
+            // (elastic ½, quadratic viscosity ½, linear viscosity 0).
+            let km = 0.125 * sec.hm * e_mod * t;
+            let kf = 0.125 * sec.hf * e_mod * shfpr3 * t * t * t / bsum;
             hg[0] = h0 + km * qx * dt;
             hg[1] = h1 + km * qy * dt;
             hg[2] += kf * qz * dt;
-            let cm = rc * t * kc.vm * a.sqrt();
-            let cf = rc * t * t * kc.vf;
-            let cr = rc * t * t * a * kc.vr;
-            qmx = hg[0] + cm * qx;
-            qmy = hg[1] + cm * qy;
-            qf = hg[2] + cf * qz;
-            mrx = cr * qrx;
-            mry = cr * qry;
+            let cm = kc.qm * t * a.sqrt();
+            let cf = kc.qf * t * t;
+            let cr = kc.qr * t * t * a;
+            qmx = hg[0] + cm * qx.abs() * qx;
+            qmy = hg[1] + cm * qy.abs() * qy;
+            qf = hg[2] + cf * qz.abs() * qz;
+            mrx = cr * qrx.abs() * qrx;
+            mry = cr * qry.abs() * qry;
         }
         out.d_ehg = dt * (qmx * qx + qmy * qy + qf * qz + mrx * qrx + mry * qry);
         st.ehg += out.d_ehg;
