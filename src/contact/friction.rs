@@ -24,6 +24,9 @@ pub struct FrictionLaw {
     pub iform: i64,
     /// VISF: critical damping of the viscous form.
     pub visf: f64,
+    /// Largest C·Δt/M of the viscous form's damper (see `tangential_force`):
+    /// 2·(1 − s²) with s the /DT scale factor (`with_time_step_scale`).
+    pub damper_cap: f64,
 }
 
 impl FrictionLaw {
@@ -36,7 +39,14 @@ impl FrictionLaw {
             xfreq: 0.0,
             iform: 2,
             visf: 0.0,
+            damper_cap: damper_cap(0.9),
         }
+    }
+
+    /// The law on a run whose time step is `scale` times the critical one.
+    pub fn with_time_step_scale(mut self, scale: f64) -> FrictionLaw {
+        self.damper_cap = damper_cap(scale);
+        self
     }
 
     /// Whether the law can ever give a tangential force.
@@ -97,6 +107,15 @@ pub fn renard(c: &[f64; 6], v: f64) -> f64 {
     }
 }
 
+/// Largest stable C·Δt/M of a damper acting on the previous half-step
+/// velocity of a node that also has a stiffness: the central difference
+/// update of m·ẍ + c·ẋ + k·x = 0 with the damper lagged is stable while
+/// c·Δt/m ≤ 2 − (ωΔt)²/2, and the critical node runs at ωΔt = 2·s (s the
+/// time step scale factor), hence 2·(1 − s²) (0.38 at the default 0.9).
+pub fn damper_cap(scale: f64) -> f64 {
+    (2.0 * (1.0 - scale * scale)).max(0.0)
+}
+
 /// Removes the normal component of a vector.
 pub fn tangential(v: V3, n: V3) -> V3 {
     sub(v, scale(n, dot(v, n)))
@@ -106,7 +125,9 @@ pub fn tangential(v: V3, n: V3) -> V3 {
 ///
 /// - Iform 1, viscous (EQ. 8.8.3.1/4, card eq. (20)–(21)):
 ///   F_t = min(μ·F_n, F_adh), F_adh = C·|V_t|, C = VISF·√(2·K·M), opposed to V_t
-///   (C capped at M/Δt, the largest damper the explicit step keeps stable).
+///   (C capped at `damper_cap`·M/Δt, the largest damper the explicit step
+///   keeps stable on top of the node's own stiffness; M/Δt alone left the
+///   stopped sliding block's nodes in a growing period-2 oscillation).
 /// - Iform 2, incremental (EQ. 8.8.3.2/5, card eq. (22); EQ. 8.5.4.1/4 for
 ///   TYPE3/5 with `k` = K/10): F_adh = F_t_old + ΔF_t, ΔF_t = −K·V_t·dt, with
 ///   the old force turned into the current tangent plane; capped at μ·F_n
@@ -132,12 +153,13 @@ pub fn tangential_force(
             *state = [0.0; 3];
             return [0.0; 3];
         }
-        // The adhesion damper may at most stop the sliding in one step
-        // (C ≤ M/Δt): beyond that the explicit update overshoots and the
-        // friction chatters, feeding energy in instead of taking it out.
+        // The adhesion damper acts on the previous velocity: beyond
+        // C·Δt/M = damper_cap the explicit update (with the elements'
+        // stiffness on the same node) overshoots and the friction chatters,
+        // feeding energy in instead of taking it out.
         let mut c = law.visf * (2.0 * k * mass).sqrt();
         if dt > 0.0 {
-            c = c.min(mass / dt);
+            c = c.min(law.damper_cap * mass / dt);
         }
         let f = limit.min(c * speed);
         let out = scale(vt, -f / speed);
@@ -178,6 +200,7 @@ mod tests {
             xfreq: 0.0,
             iform: 2,
             visf: 1.0,
+            damper_cap: damper_cap(0.9),
         }
     }
 
@@ -275,7 +298,7 @@ mod tests {
         );
         let c = (2.0e6f64).sqrt();
         assert!((f[1] + c * 1e-6).abs() < 1e-12);
-        // A step longer than M/C: the damper is capped at M/Δt.
+        // A step longer than M/C: the damper is capped at damper_cap·M/Δt.
         let f = tangential_force(
             &l,
             0.1,
@@ -287,7 +310,8 @@ mod tests {
             1e-2,
             &mut st,
         );
-        assert!((f[1] + 100.0 * 1e-6).abs() < 1e-12);
+        assert!((f[1] + damper_cap(0.9) * 100.0 * 1e-6).abs() < 1e-12);
+        assert!((damper_cap(0.9) - 0.38).abs() < 1e-12);
     }
 
     #[test]

@@ -174,6 +174,14 @@ pub struct ContactSystem {
 }
 
 impl ContactSystem {
+    /// The friction dampers' stability cap for a run at `scale` times the
+    /// critical time step (the /DT scale factor).
+    pub fn set_time_step_scale(&mut self, scale: f64) {
+        for it in self.setup.interfaces.iter_mut() {
+            it.friction = it.friction.clone().with_time_step_scale(scale);
+        }
+    }
+
     pub fn new(setup: ContactSetup, sd: &Subdomain, node_ids: &[u64]) -> ContactSystem {
         let nc = setup.nodes.len();
         let mut local = vec![NONE; nc];

@@ -6,7 +6,7 @@
 //! Contact nodes are numbered densely in global node order ("cnode"); every
 //! array below speaks in cnodes.
 
-use super::friction::FrictionLaw;
+use super::friction::{self, FrictionLaw};
 use super::gap::{self, GapRule};
 use super::geometry::{self as geo, V3};
 use super::stiffness;
@@ -463,6 +463,7 @@ pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<ContactSetup, String> {
                         xfreq: t.xfreq,
                         iform: if t.iform == 2 { 2 } else { 1 },
                         visf: t.visf,
+                        damper_cap: friction::damper_cap(0.9),
                     },
                     gap_card: t.gapmin,
                     tstart: t.tstart,
@@ -485,6 +486,7 @@ pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<ContactSetup, String> {
                         xfreq: t.xfreq,
                         iform: 2,
                         visf: 0.0,
+                        damper_cap: friction::damper_cap(0.9),
                     },
                     gap_card: t.gap,
                     tstart: t.tstart,
@@ -507,6 +509,7 @@ pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<ContactSetup, String> {
                         xfreq: 0.0,
                         iform: 2,
                         visf: 0.0,
+                        damper_cap: friction::damper_cap(0.9),
                     },
                     gap_card: t.gap,
                     tstart: t.tstart,

@@ -924,20 +924,34 @@ pub fn shell4_step(
             // (elastic ½, quadratic viscosity ½, linear viscosity 0).
             let km = 0.125 * sec.hm * e_mod * t;
             let kf = 0.125 * sec.hf * e_mod * shfpr3 * t * t * t / bsum;
+            let h2 = hg[2];
             hg[0] = h0 + km * qx * dt;
             hg[1] = h1 + km * qy * dt;
             hg[2] += kf * qz * dt;
             let cm = kc.qm * t * a.sqrt();
             let cf = kc.qf * t * t;
             let cr = kc.qr * t * t * a;
-            qmx = hg[0] + cm * qx.abs() * qx;
-            qmy = hg[1] + cm * qy.abs() * qy;
-            qf = hg[2] + cf * qz.abs() * qz;
+            let (dmx, dmy, df) = (cm * qx.abs() * qx, cm * qy.abs() * qy, cf * qz.abs() * qz);
+            qmx = hg[0] + dmx;
+            qmy = hg[1] + dmy;
+            qf = hg[2] + df;
             mrx = cr * qrx.abs() * qrx;
             mry = cr * qry.abs() * qry;
+            // Energy: the elastic resultants' mean over the step (the exact
+            // change of their stored energy, as the internal energy takes the
+            // mean of the old and new resultants) plus the dampers' work.
+            out.d_ehg = dt
+                * ((0.5 * (h0 + hg[0]) + dmx) * qx
+                    + (0.5 * (h1 + hg[1]) + dmy) * qy
+                    + (0.5 * (h2 + hg[2]) + df) * qz
+                    + mrx * qrx
+                    + mry * qry);
+            st.ehg += out.d_ehg;
         }
-        out.d_ehg = dt * (qmx * qx + qmy * qy + qf * qz + mrx * qrx + mry * qry);
-        st.ehg += out.d_ehg;
+        if sec.ishell == 3 {
+            out.d_ehg = dt * (qmx * qx + qmy * qy + qf * qz + mrx * qrx + mry * qry);
+            st.ehg += out.d_ehg;
+        }
     }
 
     // ---- corner forces and moments at x^{n+1}, global frame ---------------------

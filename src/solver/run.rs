@@ -648,6 +648,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
     let mut fext = vec![[0.0f64; SLOT]; n];
     // Contact: forces and stiffness per local node, summed in a fixed global order.
     let mut contact = ContactSystem::new(g.contact.clone(), &sd, &g.node_ids);
+    contact.set_time_step_scale(engine.dt_scale);
     contact.always_sort = std::env::var_os("CRASHSIM_SORT_EVERY_CYCLE").is_some();
     let mut fcont = vec![[0.0f64; 3]; n];
     let mut kcont = vec![0.0f64; n];
