@@ -65,6 +65,61 @@ fn xdmf_points_at_datasets_of_the_declared_shape_and_renders_the_last_state() {
     );
 }
 
+/// ParaView itself opens the XDMF description: Debian's pvpython
+/// (python3-paraview) under xvfb-run, both installed by ci/setup, reads the 11
+/// states with their point and cell arrays, goes to the last one and renders
+/// the deformed box beam coloured by von Mises stress
+/// (tests/py/paraview_render.py; docs/paraview_box1bl.png is one such picture).
+#[test]
+fn paraview_opens_the_xdmf_and_renders_the_last_state() {
+    let dir = box1bl("paraview", 0);
+    let xdmf = dir.join("BOX1BL.xdmf");
+    let png = dir.join("paraview_last_state.png");
+    let script = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/py/paraview_render.py");
+    let out = std::process::Command::new("xvfb-run")
+        .args(["-a", "pvpython"])
+        .arg(&script)
+        .arg(&xdmf)
+        .arg(&png)
+        .output()
+        .expect("xvfb-run and pvpython: ci/setup installs xvfb, xauth and python3-paraview");
+    let text = String::from_utf8_lossy(&out.stdout).to_string();
+    assert!(
+        out.status.success(),
+        "pvpython failed:\n{text}\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let line = |key: &str| -> String {
+        text.lines()
+            .find_map(|l| l.strip_prefix(&format!("{key} ")))
+            .unwrap_or_else(|| panic!("ParaView printed no '{key}':\n{text}"))
+            .to_string()
+    };
+    assert!(line("timesteps").starts_with("11 "), "{text}");
+    assert_eq!(line("points"), "155 cells 140", "{text}");
+    for a in ["contact_force", "displacement", "velocity"] {
+        assert!(
+            line("point_arrays").split(',').any(|x| x == a),
+            "{a}: {text}"
+        );
+    }
+    for a in ["von_mises", "plastic_strain", "thickness", "deleted"] {
+        assert!(
+            line("cell_arrays").split(',').any(|x| x == a),
+            "{a}: {text}"
+        );
+    }
+    let vm: Vec<f64> = line("von_mises_range")
+        .split(' ')
+        .map(|v| v.parse().unwrap())
+        .collect();
+    assert!(vm[1] > vm[0] && vm[0] >= 0.0, "{text}");
+    let covered: f64 = line("covered").parse().unwrap();
+    assert!(covered > 0.05, "the model covers {covered} of the picture");
+    let bytes = std::fs::read(&png).unwrap();
+    assert!(bytes.starts_with(b"\x89PNG"), "a PNG was written");
+}
+
 fn crashsim_in(dir: &Path, args: &[&str]) -> std::process::Output {
     std::process::Command::new(env!("CARGO_BIN_EXE_crashsim"))
         .current_dir(dir)
