@@ -177,13 +177,19 @@ fn check(case: &Case, cycle: u64, from: u32, to: &[u32], full: &[u8], tag: &str)
     }
 }
 
-/// Sliding block (TYPE7, Coulomb with the viscous form: the tangential
-/// force of the last cycle is the pair's memory, 9 pairs in contact from
-/// the first cycle to the end, one sort): stopped mid-slide at 1300 of
-/// 2633 cycles.
+/// Sliding block (TYPE7, Coulomb) with Iform = 2 (incremental: the
+/// tangential force of the last cycle is the pair's memory; with that
+/// memory zeroed at the restart the final state differs), 9 pairs in
+/// contact from the first cycle to the end, one sort: stopped mid-slide at
+/// 1300 of 2633 cycles.
 #[test]
 fn sliding_block_friction_memory_restart_1_2_and_2_to_1() {
-    let case = Case::new(deck("sliding_block"), None);
+    let dir = scratch("crst-slide-deck");
+    // Iform: columns 41-50 of the line below "#    Ifric".
+    let d = variant("sliding_block", &dir, |i, lines| {
+        (i >= 1 && lines[i - 1].starts_with("#    Ifric")).then(|| set_cols(lines[i], 40, 50, 2))
+    });
+    let case = Case::new(d, None);
     let (full, _) = case.reference("crst-slide-full");
     check(&case, 1300, 0, &[0, 2], &full, "crst-slide");
     check(&case, 1300, 2, &[0], &full, "crst-slide");

@@ -21,7 +21,10 @@
 //! (replicated `OutputCounters`), `nodes.x`, `nodes.v`, `nodes.vr` `[N,3]`,
 //! `nodes.fint`, `nodes.fext` `[N,6]`, `elements.KIND` (one `Block::export_state`
 //! record per element), `walls.tied` (keyed: wall index << 32 | global node,
-//! present when tied).
+//! present when tied). Decks with interfaces add `contact`, `contact.pairs`,
+//! `contact.x_sort`, `nodes.fcont`, `nodes.fixed` and `tied`, `tied.d`,
+//! `tied.x_ghost` (`save_interfaces`, `contact::restart`); a deck with
+//! interfaces refuses a file without them.
 //!
 //! **Adding state** (the contact code, for instance per-interface friction
 //! history): write one more section with a new name — `keyed` with keys
