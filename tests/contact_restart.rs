@@ -128,8 +128,16 @@ impl Case {
     /// A run on `np` ranks stopped after `cycle`: its directory.
     fn stop(&self, np: u32, cycle: u64, tag: &str) -> PathBuf {
         let dir = scratch(tag);
-        let out = run(np, &self.deck, &dir, &["--stop-after-cycle", &cycle.to_string()]);
-        ok(&out, &format!("run stopped at cycle {cycle} on {np} rank(s)"));
+        let out = run(
+            np,
+            &self.deck,
+            &dir,
+            &["--stop-after-cycle", &cycle.to_string()],
+        );
+        ok(
+            &out,
+            &format!("run stopped at cycle {cycle} on {np} rank(s)"),
+        );
         assert!(
             String::from_utf8_lossy(&out.stdout).contains(&format!("STOPPED AT CYCLE {cycle}")),
             "no stop at {cycle}"
@@ -206,7 +214,10 @@ fn inacti_5_corrected_gaps_restart_1_to_2() {
             .then(|| set_cols(lines[i], 30, 40, 5))
     });
     let text = std::fs::read_to_string(&d).unwrap();
-    assert!(text.contains("       000                             5"), "Inacti 5 not set");
+    assert!(
+        text.contains("       000                             5"),
+        "Inacti 5 not set"
+    );
     let case = Case::new(d, None);
     let (full, _) = case.reference("crst-inacti5-full");
     // Inacti 5 changes the run (else this would measure nothing new).
@@ -337,10 +348,16 @@ fn restart_files_without_contact_state_or_of_another_deck_are_refused() {
     let moved = copy_run(&stopped, "crst-refuse-other");
     let rst = moved.join("sliding_block_rst.h5");
     let out = run(0, &other, &moved, &["--restart", rst.to_str().unwrap()]);
-    assert_eq!(out.status.code(), Some(2), "restart of another deck accepted");
+    assert_eq!(
+        out.status.code(),
+        Some(2),
+        "restart of another deck accepted"
+    );
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(
-        err.contains("/INTER/TYPE7/1") && err.contains("/INTER/TYPE7/7") && err.contains("expected a restart file of this deck"),
+        err.contains("/INTER/TYPE7/1")
+            && err.contains("/INTER/TYPE7/7")
+            && err.contains("expected a restart file of this deck"),
         "{err}"
     );
 }

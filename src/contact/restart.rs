@@ -267,7 +267,10 @@ impl ContactSystem {
                         )
                     })?;
                     let rec: SecRecord = bincode::deserialize(rec).map_err(|e| {
-                        bad(&format!("secondary node {id} of /INTER/TYPE{}/{}: {e}", it.type_number, it.id))
+                        bad(&format!(
+                            "secondary node {id} of /INTER/TYPE{}/{}: {e}",
+                            it.type_number, it.id
+                        ))
                     })?;
                     let seg_ok = |m: u32| m < nseg;
                     if !rec.cand.iter().all(|&m| seg_ok(m))
@@ -419,7 +422,9 @@ impl TiedSystem {
         }
         let rows = self.ghost_rows();
         if x_ghost.len() != 3 * rows.len() {
-            return Err("tied state: ghost positions of the wrong size (a damaged restart file?)".into());
+            return Err(
+                "tied state: ghost positions of the wrong size (a damaged restart file?)".into(),
+            );
         }
         for (i, &q) in rows.iter().enumerate() {
             self.tx[q as usize] = [x_ghost[3 * i], x_ghost[3 * i + 1], x_ghost[3 * i + 2]];

@@ -561,7 +561,13 @@ fn restore_interfaces(
             ));
         }
     } else {
-        for sec in ["contact", "contact.pairs", "contact.x_sort", "nodes.fcont", "nodes.fixed"] {
+        for sec in [
+            "contact",
+            "contact.pairs",
+            "contact.x_sort",
+            "nodes.fcont",
+            "nodes.fixed",
+        ] {
             if !r.has(sec) {
                 return Err(old("contact interfaces", sec));
             }
@@ -579,7 +585,11 @@ fn restore_interfaces(
         s.contact
             .import(ctx.world, &sc, &records, &x_sort)
             .map_err(|m| r.err(m))?;
-        *s.e_contact = if ctx.world.rank() == 0 { sc.e_contact } else { 0.0 };
+        *s.e_contact = if ctx.world.rank() == 0 {
+            sc.e_contact
+        } else {
+            0.0
+        };
         unpack(r, "nodes.fcont", all, n, s.fcont)?;
         let mut fixed: Vec<(u64, u8)> = r
             .keyed("nodes.fixed")?
@@ -620,9 +630,7 @@ fn restore_interfaces(
                 s.ties.node_count()
             )));
         }
-        s.ties
-            .import(&shape, &offsets, &xg)
-            .map_err(|m| r.err(m))?;
+        s.ties.import(&shape, &offsets, &xg).map_err(|m| r.err(m))?;
     }
     Ok(())
 }
