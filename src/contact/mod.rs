@@ -15,6 +15,7 @@ pub mod friction;
 pub mod gap;
 pub mod geometry;
 pub mod interfaces;
+pub mod restart;
 pub mod search;
 pub mod setup;
 pub mod stiffness;
@@ -30,7 +31,7 @@ use search::{Aabb, Candidates};
 use setup::{ContactSetup, Law, NONE};
 
 /// Per secondary node memory (owned secondary nodes of a pass).
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug, Default, serde::Serialize, serde::Deserialize)]
 struct NodeState {
     /// Removed from the interface (Inacti = 1, Fpenmax, dtmin with ITIED = 0).
     off: bool,
@@ -46,7 +47,7 @@ struct NodeState {
 /// Idel on one pass, replicated on every rank (every rank learns the same
 /// deleted elements at the same cycle, so every rank removes the same
 /// segments and nodes at the same cycle).
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
 struct Removal {
     /// Associated elements still alive, per main segment / secondary node.
     seg_alive: Vec<u32>,

@@ -322,24 +322,27 @@ pub struct TiedSums {
 pub struct TiedSystem {
     pub setup: TiedSetup,
     /// Local index of each tnode (NONE: not on this rank).
-    local: Vec<u32>,
-    owned: Vec<bool>,
+    pub(super) local: Vec<u32>,
+    pub(super) owned: Vec<bool>,
     /// Velocity plan: ranks, tnodes sent to each (owned here), tnodes received.
     ranks: Vec<u32>,
     send: Vec<Vec<u32>>,
-    recv: Vec<Vec<u32>>,
+    pub(super) recv: Vec<Vec<u32>>,
     /// Main-node velocity and rotational velocity per tnode (held or received).
     tv: Vec<V3>,
     tw: Vec<V3>,
     /// Positions of the received (ghost) tnodes at the current cycle's start
     /// (local tnodes are read from x).
-    tx: Vec<V3>,
+    pub(super) tx: Vec<V3>,
+    /// Per owned tnode, the position the ranks receiving it as a ghost
+    /// hold for it (x + Δt v at the last `recover`): the restart file's.
+    pub(super) x_ghost: Vec<V3>,
     /// Offsets d⃗ of the ties (per interface, per tie) at the cycle's start,
     /// and after the step's rotation (`recover` → `place`).
-    d: Vec<Vec<V3>>,
-    d_next: Vec<Vec<V3>>,
+    pub(super) d: Vec<Vec<V3>>,
+    pub(super) d_next: Vec<Vec<V3>>,
     /// The ghost positions have been received once.
-    started: bool,
+    pub(super) started: bool,
     pub sums: Vec<TiedSums>,
 }
 
@@ -405,6 +408,7 @@ impl TiedSystem {
             tv: vec![[0.0; 3]; nt],
             tw: vec![[0.0; 3]; nt],
             tx: vec![[0.0; 3]; nt],
+            x_ghost: vec![[0.0; 3]; nt],
             d_next: d.clone(),
             d,
             started: false,
@@ -564,6 +568,14 @@ impl TiedSystem {
             if l != NONE {
                 self.tv[t] = v[l as usize];
                 self.tw[t] = vr[l as usize];
+                if self.owned[t] {
+                    // What a ghost of this node receives below.
+                    let mut xn = x[l as usize];
+                    for k in 0..3 {
+                        xn[k] += dt * v[l as usize][k];
+                    }
+                    self.x_ghost[t] = xn;
+                }
             }
         }
         // Ghost positions after the step, x + Δt v (as the owner updates them).

@@ -112,11 +112,20 @@ pub struct LoopState<'a> {
     /// The `--history` CSV schedule and samples.
     pub next_th: &'a mut f64,
     pub history: &'a mut Vec<(f64, Vec<[f64; 3]>)>,
-    /// Inputs (not saved): fixed degrees of freedom, the kinetic energy at
+    /// Contact and tied interfaces (their state is saved when the deck has
+    /// some: `restart`), the contact forces of the last cycle per local
+    /// node (they enter the next cycle's velocities), this rank's partial
+    /// contact energy, and the fixed degrees of freedom (an impact releases
+    /// some: IBC).
+    pub contact: &'a mut crate::contact::ContactSystem,
+    pub ties: &'a mut crate::contact::tied::TiedSystem,
+    pub fcont: &'a mut [[f64; 3]],
+    pub e_contact: &'a mut f64,
+    pub fixed: &'a mut [[bool; 6]],
+    /// Inputs (not saved): the kinetic energy at
     /// t = 0 (energy error), this rank's partial wall forces of the last
     /// cycle, contact forces per local node and this rank's interface
     /// samples (zeros / empty until contact lands).
-    pub fixed: &'a [[bool; 6]],
     pub e0: f64,
     pub wall_force: &'a [[f64; 3]],
     pub contact_force: &'a [[f64; 3]],

@@ -21,7 +21,10 @@
 //! (replicated `OutputCounters`), `nodes.x`, `nodes.v`, `nodes.vr` `[N,3]`,
 //! `nodes.fint`, `nodes.fext` `[N,6]`, `elements.KIND` (one `Block::export_state`
 //! record per element), `walls.tied` (keyed: wall index << 32 | global node,
-//! present when tied).
+//! present when tied). Decks with interfaces add `contact`, `contact.pairs`,
+//! `contact.x_sort`, `nodes.fcont`, `nodes.fixed` and `tied`, `tied.d`,
+//! `tied.x_ghost` (`save_interfaces`, `contact::restart`); a deck with
+//! interfaces refuses a file without them.
 //!
 //! **Adding state** (the contact code, for instance per-interface friction
 //! history): write one more section with a new name — `keyed` with keys
@@ -473,7 +476,163 @@ pub fn save(
         }
     }
     w.keyed("walls.tied", &tied)?;
+    save_interfaces(ctx, &mut w, s, &rows, &local)?;
     w.finish()
+}
+
+/// A node's fixed degrees of freedom as a bit mask (bit k: DOF k).
+fn fixed_mask(f: &[bool; 6]) -> u8 {
+    f.iter()
+        .enumerate()
+        .fold(0u8, |m, (k, &b)| m | (u8::from(b) << k))
+}
+
+/// The contact and tied interfaces' sections (module `contact::restart`),
+/// present when the deck has such interfaces:
+///
+/// - `contact` (replicated `ContactScalars`), `contact.pairs` (keyed:
+///   interface << 40 | pass << 32 | secondary global node → the node's
+///   memory, candidates and pair memory), `contact.x_sort` `[C,3]` (rows by
+///   contact node: positions at the last sort), `nodes.fcont` `[N,3]` (the
+///   last cycle's contact forces), `nodes.fixed` (keyed: global node → mask
+///   of fixed DOFs, IBC releases some);
+/// - `tied` (replicated: (id, ties) per interface), `tied.d` (keyed:
+///   interface << 32 | secondary global node → offset), `tied.x_ghost`
+///   `[T,3]` (rows by tied node: the position ghosts hold).
+fn save_interfaces(
+    ctx: &Context,
+    w: &mut RestartWriter,
+    s: &LoopState,
+    rows: &Rows,
+    local: &[usize],
+) -> Result<(), String> {
+    let n = ctx.g.node_ids.len();
+    if !s.contact.is_empty() {
+        let ex = s.contact.export(ctx.world, *s.e_contact)?;
+        w.replicated("contact", &ex.scalars)?;
+        w.keyed("contact.pairs", &ex.records)?;
+        w.dense_f64(
+            "contact.x_sort",
+            s.contact.node_count(),
+            3,
+            &Rows::from_sorted(ex.sort_rows.iter().copied()),
+            &ex.x_sort,
+        )?;
+        w.dense_f64("nodes.fcont", n, 3, rows, &pack(local, s.fcont))?;
+        let fixed: Vec<(u64, Vec<u8>)> = local
+            .iter()
+            .filter(|&&l| s.fixed[l].iter().any(|&b| b))
+            .map(|&l| (ctx.sd.node_global[l] as u64, vec![fixed_mask(&s.fixed[l])]))
+            .collect();
+        w.keyed("nodes.fixed", &fixed)?;
+    }
+    if !s.ties.is_empty() {
+        let ex = s.ties.export();
+        w.replicated("tied", &ex.shape)?;
+        w.keyed("tied.d", &ex.offsets)?;
+        w.dense_f64(
+            "tied.x_ghost",
+            s.ties.node_count(),
+            3,
+            &Rows::from_sorted(ex.ghost_rows.iter().copied()),
+            &ex.x_ghost,
+        )?;
+    }
+    Ok(())
+}
+
+/// Reads the interfaces' sections back (see `save_interfaces`).
+fn restore_interfaces(
+    ctx: &Context,
+    r: &RestartReader,
+    s: &mut LoopState,
+    all: &Rows,
+) -> Result<(), String> {
+    let n = ctx.g.node_ids.len();
+    let old = |what: &str, sec: &str| {
+        r.err(format!(
+            "no section '{sec}': the deck has {what} but the restart file holds no state for them (written by a crashsim that did not save it, or for another deck): expected a restart file written by this version for this deck"
+        ))
+    };
+    if s.contact.is_empty() {
+        if r.has("contact") {
+            return Err(r.err(
+                "the restart file holds contact interfaces, this deck has none: expected a restart file of this deck",
+            ));
+        }
+    } else {
+        for sec in [
+            "contact",
+            "contact.pairs",
+            "contact.x_sort",
+            "nodes.fcont",
+            "nodes.fixed",
+        ] {
+            if !r.has(sec) {
+                return Err(old("contact interfaces", sec));
+            }
+        }
+        let sc: crate::contact::restart::ContactScalars = r.replicated("contact")?;
+        let records = r.keyed("contact.pairs")?;
+        let rows = Rows::from_sorted(s.contact.held_rows());
+        let (total, width, x_sort) = r.dense_f64("contact.x_sort", &rows)?;
+        if total != s.contact.node_count() || width != 3 {
+            return Err(r.err(format!(
+                "section 'contact.x_sort' is {total}×{width}, expected {}×3 (a restart file of another deck?)",
+                s.contact.node_count()
+            )));
+        }
+        s.contact
+            .import(ctx.world, &sc, &records, &x_sort)
+            .map_err(|m| r.err(m))?;
+        *s.e_contact = if ctx.world.rank() == 0 {
+            sc.e_contact
+        } else {
+            0.0
+        };
+        unpack(r, "nodes.fcont", all, n, s.fcont)?;
+        let mut fixed: Vec<(u64, u8)> = r
+            .keyed("nodes.fixed")?
+            .into_iter()
+            .map(|(k, b)| (k, b.first().copied().unwrap_or(0)))
+            .collect();
+        fixed.sort_unstable();
+        for (l, f) in s.fixed.iter_mut().enumerate() {
+            let gn = ctx.sd.node_global[l] as u64;
+            let mask = match fixed.binary_search_by_key(&gn, |e| e.0) {
+                Ok(i) => fixed[i].1,
+                Err(_) => 0,
+            };
+            for (k, b) in f.iter_mut().enumerate() {
+                *b = mask >> k & 1 == 1;
+            }
+        }
+    }
+    if s.ties.is_empty() {
+        if r.has("tied") {
+            return Err(r.err(
+                "the restart file holds tied interfaces (TYPE2), this deck has none: expected a restart file of this deck",
+            ));
+        }
+    } else {
+        for sec in ["tied", "tied.d", "tied.x_ghost"] {
+            if !r.has(sec) {
+                return Err(old("tied interfaces (TYPE2)", sec));
+            }
+        }
+        let shape: Vec<(u64, u64)> = r.replicated("tied")?;
+        let offsets = r.keyed("tied.d")?;
+        let rows = Rows::from_sorted(s.ties.ghost_rows());
+        let (total, width, xg) = r.dense_f64("tied.x_ghost", &rows)?;
+        if total != s.ties.node_count() || width != 3 {
+            return Err(r.err(format!(
+                "section 'tied.x_ghost' is {total}×{width}, expected {}×3 (a restart file of another deck?)",
+                s.ties.node_count()
+            )));
+        }
+        s.ties.import(&shape, &offsets, &xg).map_err(|m| r.err(m))?;
+    }
+    Ok(())
 }
 
 /// Each wall's secondary nodes held here, as local indices, in the order
@@ -560,6 +719,7 @@ pub fn restore(ctx: &Context, path: &Path, s: &mut LoopState) -> Result<OutputCo
             s.tied[wi][i] = tied.binary_search(&key).is_ok();
         }
     }
+    restore_interfaces(ctx, &r, s, &all)?;
     *s.t = sc.t;
     *s.cycle = sc.cycle;
     *s.dt = sc.dt;

@@ -88,15 +88,6 @@ fn prepare(opts: &RunOptions, nranks: usize) -> Result<Prepared, String> {
         ));
     }
     check_supported(&m)?;
-    if let (Some(rst), Some(i)) = (&opts.output.restart, m.interfaces.first()) {
-        return Err(format!(
-            "{}: --restart with contact interfaces is not supported yet: their pair memory (friction, corrected gaps, ties) is not in the restart file ({} has /INTER/TYPE{}/{})",
-            rst.display(),
-            starter,
-            i.card.type_number(),
-            i.card.id
-        ));
-    }
     let (p, _) =
         domain::partition(&m, nranks).map_err(|e| format!("{starter}: cannot partition: {e}"))?;
     let sds = domain::split(&m, &p.part, nranks);
@@ -689,8 +680,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
     };
     let mut e_contact = 0.0f64;
     // Idel: which of this rank's elements were alive at the last look (all
-    // at the start, so that elements a restart brings back deleted are
-    // reported at the first cycle).
+    // at the start; after a restart, those the restart file brings back).
     let mut was_alive: Vec<Vec<bool>> = blocks
         .iter()
         .map(|b| vec![true; b.local().global.len()])
@@ -958,7 +948,11 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
                 wall_work: &mut wall_work,
                 next_th: &mut next_th,
                 history: &mut history,
-                fixed: &fixed,
+                contact: &mut contact,
+                ties: &mut ties,
+                fcont: &mut fcont,
+                e_contact: &mut e_contact,
+                fixed: &mut fixed,
                 e0,
                 wall_force: &wall_force,
                 contact_force: &contact_force,
@@ -968,6 +962,12 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
         };
     }
     let mut out = output::Output::start(&octx, &mut loop_state!())?;
+    if opts.output.restart.is_some() {
+        // The interfaces' Idel state came with the restart file: the
+        // elements it brings back deleted are known to them already.
+        let _ = newly_deleted(&blocks, &contact);
+        contact_force.clone_from(&fcont);
+    }
     if let (Some(l), Some(p)) = (&mut listing, &opts.output.restart) {
         l.line(&format!(
             " restarted from {} at cycle {cycle}, time {t:e}",

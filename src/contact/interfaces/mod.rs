@@ -30,7 +30,7 @@ pub struct PairForce {
 }
 
 /// Friction and tie memory of one node–segment pair.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct PairState {
     /// Tangential force of the last cycle (incremental form).
     pub ft: V3,
