@@ -117,49 +117,56 @@ pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<TiedSetup, String> {
         bool,
         f64,
     )> = Vec::new();
-    // Every node constrained by some other condition, for the conflict checks.
-    let mut bc_of: std::collections::HashMap<u32, String> = Default::default();
+    // Every node constrained by some other condition, for the conflict checks:
+    // the first card that holds it, by kind.
+    type Holder = std::collections::HashMap<u32, String>;
+    fn mark<'a>(map: &mut Holder, nodes: impl IntoIterator<Item = &'a u32>, card: String) {
+        for &n in nodes {
+            map.entry(n).or_insert_with(|| card.clone());
+        }
+    }
+    let mut bc_of: Holder = Default::default();
     for c in &m.bcs {
         if c.card.fixed.iter().any(|&f| f) {
-            for &n in &c.nodes {
-                bc_of
-                    .entry(n)
-                    .or_insert(format!("{}: /BCS/{}", c.card.loc, c.card.id));
-            }
+            mark(
+                &mut bc_of,
+                &c.nodes,
+                format!("{}: /BCS/{}", c.card.loc, c.card.id),
+            );
         }
     }
     for c in &m.imposed_velocities {
-        for &n in &c.nodes {
-            bc_of
-                .entry(n)
-                .or_insert(format!("{}: /IMPVEL/{}", c.card.loc, c.card.id));
-        }
+        mark(
+            &mut bc_of,
+            &c.nodes,
+            format!("{}: /IMPVEL/{}", c.card.loc, c.card.id),
+        );
     }
     for c in &m.imposed_displacements {
-        for &n in &c.nodes {
-            bc_of
-                .entry(n)
-                .or_insert(format!("{}: /IMPDISP/{}", c.card.loc, c.card.id));
-        }
+        mark(
+            &mut bc_of,
+            &c.nodes,
+            format!("{}: /IMPDISP/{}", c.card.loc, c.card.id),
+        );
     }
-    let mut rb_of: std::collections::HashMap<u32, String> = Default::default();
+    let mut rb_of: Holder = Default::default();
     for r in &m.rigid_bodies {
-        for &n in r
+        let nodes = r
             .secondary_nodes
             .iter()
-            .chain(std::iter::once(&r.main_node))
-        {
-            rb_of
-                .entry(n)
-                .or_insert(format!("{}: /RBODY/{}", r.card.loc, r.card.id));
-        }
+            .chain(std::iter::once(&r.main_node));
+        mark(
+            &mut rb_of,
+            nodes,
+            format!("{}: /RBODY/{}", r.card.loc, r.card.id),
+        );
     }
     for w in &m.rigid_walls {
-        for &n in &w.secondary_nodes {
-            rb_of
-                .entry(n)
-                .or_insert(format!("{}: /RWALL/{}", w.card.loc, w.card.id));
-        }
+        mark(
+            &mut rb_of,
+            &w.secondary_nodes,
+            format!("{}: /RWALL/{}", w.card.loc, w.card.id),
+        );
     }
     // Secondary nodes over all TYPE2 (tied twice) and main nodes (chains).
     let mut tied_by: std::collections::HashMap<u32, u64> = Default::default();

@@ -133,8 +133,13 @@ impl World {
         self.comm.barrier();
     }
 
-    /// Every rank's bytes, in rank order, on every rank.
-    pub fn allgather_bytes(&self, mine: &[u8]) -> Vec<Vec<u8>> {
+    /// Every rank's values concatenated in rank order, on every rank (an
+    /// MPI_Allgatherv after an MPI_Allgather of the counts), with each rank's
+    /// count and offset.
+    fn allgather_var<T: mpi::datatype::Equivalence + Default + Clone>(
+        &self,
+        mine: &[T],
+    ) -> (Vec<T>, Vec<i32>, Vec<i32>) {
         use mpi::datatype::PartitionMut;
         let n = self.size() as usize;
         let len = mine.len() as i32;
@@ -149,41 +154,27 @@ impl World {
             })
             .collect();
         let total: i32 = lens.iter().sum();
-        let mut buf = vec![0u8; total as usize];
+        let mut buf = vec![T::default(); total as usize];
         {
             let mut part = PartitionMut::new(&mut buf[..], &lens[..], &displs[..]);
             self.comm.all_gather_varcount_into(mine, &mut part);
         }
-        (0..n)
+        (buf, lens, displs)
+    }
+
+    /// Every rank's bytes, in rank order, on every rank.
+    pub fn allgather_bytes(&self, mine: &[u8]) -> Vec<Vec<u8>> {
+        let (buf, lens, displs) = self.allgather_var(mine);
+        (0..lens.len())
             .map(|r| buf[displs[r] as usize..(displs[r] + lens[r]) as usize].to_vec())
             .collect()
     }
 
-    /// Every rank's u64 values concatenated in rank order, on every rank (an
-    /// MPI_Allgatherv after an MPI_Allgather of the counts). Contact's Idel
-    /// uses it for the element ids deleted in a cycle, only at the cycles
-    /// where some rank deleted one.
+    /// Every rank's u64 values concatenated in rank order, on every rank.
+    /// Contact's Idel uses it for the element ids deleted in a cycle, only at
+    /// the cycles where some rank deleted one.
     pub fn allgather_u64(&self, mine: &[u64]) -> Vec<u64> {
-        use mpi::datatype::PartitionMut;
-        let n = self.size() as usize;
-        let len = mine.len() as i32;
-        let mut lens = vec![0i32; n];
-        self.comm.all_gather_into(&len, &mut lens[..]);
-        let displs: Vec<i32> = lens
-            .iter()
-            .scan(0, |acc, &l| {
-                let d = *acc;
-                *acc += l;
-                Some(d)
-            })
-            .collect();
-        let total: i32 = lens.iter().sum();
-        let mut buf = vec![0u64; total as usize];
-        {
-            let mut part = PartitionMut::new(&mut buf[..], &lens[..], &displs[..]);
-            self.comm.all_gather_varcount_into(mine, &mut part);
-        }
-        buf
+        self.allgather_var(mine).0
     }
 
     /// Every rank's values, in rank order, on every rank (a typed allgather).
