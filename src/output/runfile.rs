@@ -146,7 +146,9 @@ pub struct RunFile {
 
 impl RunFile {
     /// Creates `path` (collective) and writes the attributes, `/mesh` and
-    /// the empty `/th` datasets.
+    /// the empty `/th` datasets. Not yet complete on disk: the caller
+    /// writes the initial state at once (its checkpoint covers the header)
+    /// or calls `checkpoint`.
     pub fn create(
         ctx: &Context,
         path: &std::path::Path,
@@ -167,7 +169,6 @@ impl RunFile {
             .map_err(|e| err(path, format!("cannot create the HDF5 file: {e}")))?;
         let mut rf = RunFile::new(ctx, file, path, blocks, th)?;
         rf.write_header(ctx, blocks)?;
-        rf.checkpoint()?;
         Ok(rf)
     }
 

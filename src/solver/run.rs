@@ -1490,7 +1490,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
             ));
         }
         l.line(&format!("     ELAPSED TIME            : {elapsed:>10.3} s   (set-up {:.3} s, cycles {looped:.3} s)", elapsed - looped));
-        l.line(&format!("     OUTPUT TIME             : {:>10.3} s   (HDF5 run file, time histories, restart files; rank 0)", out.seconds()));
+        l.line(&format!("     OUTPUT TIME             : {:>10.3} s   (HDF5 run file, time histories, restart files; rank 0; CPU {:.4} s)", out.seconds(), out.cpu_seconds()));
         let elems = g.element_ids.iter().map(|e| e.len()).sum::<usize>().max(1);
         l.line(&format!(
             "     TIME PER CYCLE          : {:>10.3} µs   ({:.4} µs per element-cycle)",
