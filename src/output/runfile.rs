@@ -85,14 +85,6 @@ fn err(path: &std::path::Path, e: impl std::fmt::Display) -> String {
     format!("{}: {e}", path.display())
 }
 
-/// Creates a fixed-size dataset `name` in `loc`.
-fn dataset<T: H5Type>(loc: &Group, name: &str, shape: &[usize]) -> Result<Dataset, String> {
-    loc.new_dataset::<T>()
-        .shape(shape)
-        .create(name)
-        .map_err(|e| format!("HDF5: cannot create {name}: {e}"))
-}
-
 /// An extendible dataset `[0, rest...]` (time histories), chunked along time.
 fn growing<T: H5Type>(loc: &Group, name: &str, rest: &[usize]) -> Result<Dataset, String> {
     let mut dims = vec![0usize];
@@ -133,6 +125,8 @@ pub struct RunFile {
     xfer: Xfer,
     /// Rank 0's transfers of replicated rows.
     solo: Xfer,
+    /// How fixed-size datasets are created.
+    dcpl: h5::FixedDcpl,
     rank: u32,
     /// Owned nodes (global indices, ascending) and their local indices.
     node_rows: Rows,
@@ -238,6 +232,7 @@ impl RunFile {
             path: path.to_path_buf(),
             xfer: Xfer::collective()?,
             solo: Xfer::independent()?,
+            dcpl: h5::FixedDcpl::new()?,
             rank: ctx.world.rank(),
             node_rows,
             node_local,
@@ -293,13 +288,13 @@ impl RunFile {
         } else {
             vec![self.n_nodes, W]
         };
-        let ds = dataset::<f64>(g, name, &shape)?;
+        let ds = self.dcpl.create::<f64>(g, name, &shape)?;
         h5::write_rows(&ds, &self.node_rows, &self.node_values(f), &self.xfer)
     }
 
     /// Replicated values: every rank creates the dataset, rank 0 writes it.
     fn write_table<T: H5Type>(&self, g: &Group, name: &str, values: &[T]) -> Result<(), String> {
-        let ds = dataset::<T>(g, name, &[values.len()])?;
+        let ds = self.dcpl.create::<T>(g, name, &[values.len()])?;
         if self.rank == 0 && !values.is_empty() {
             h5::write_rows(
                 &ds,
@@ -333,7 +328,9 @@ impl RunFile {
             .iter()
             .map(|&l| g.node_ids[sd.node_global[l] as usize])
             .collect();
-        let ds = dataset::<u64>(&mesh, "node_ids", &[self.n_nodes])?;
+        let ds = self
+            .dcpl
+            .create::<u64>(&mesh, "node_ids", &[self.n_nodes])?;
         h5::write_rows(&ds, &self.node_rows, &ids, &self.xfer)?;
         self.write_node_array(&mesh, "coordinates", |l| sd.x[l])?;
         for kr in &self.kinds {
@@ -357,11 +354,13 @@ impl RunFile {
                     pids.push(g.parts[le.part[e] as usize].id);
                 }
             }
-            let ds = dataset::<i64>(&grp, "connectivity", &[kr.total, nn])?;
+            let ds = self
+                .dcpl
+                .create::<i64>(&grp, "connectivity", &[kr.total, nn])?;
             h5::write_rows(&ds, &kr.rows, &conn, &self.xfer)?;
-            let ds = dataset::<u64>(&grp, "ids", &[kr.total])?;
+            let ds = self.dcpl.create::<u64>(&grp, "ids", &[kr.total])?;
             h5::write_rows(&ds, &kr.rows, &eids, &self.xfer)?;
-            let ds = dataset::<u64>(&grp, "part_ids", &[kr.total])?;
+            let ds = self.dcpl.create::<u64>(&grp, "part_ids", &[kr.total])?;
             h5::write_rows(&ds, &kr.rows, &pids, &self.xfer)?;
         }
         // Tables (replicated: rank 0 writes).
@@ -469,7 +468,7 @@ impl RunFile {
             let outs: Vec<ElemOut> = kr.block.map(|b| s.blocks[b].outputs()).unwrap_or_default();
             let col = |f: fn(&ElemOut) -> f64| -> Vec<f64> { outs.iter().map(f).collect() };
             let write = |name: &str, vals: Vec<f64>| -> Result<(), String> {
-                let ds = dataset::<f64>(&sub, name, &[kr.total])?;
+                let ds = self.dcpl.create::<f64>(&sub, name, &[kr.total])?;
                 h5::write_rows(&ds, &kr.rows, &vals, &self.xfer)
             };
             write("von_mises", col(|o| o.von_mises))?;
@@ -479,7 +478,7 @@ impl RunFile {
             }
             write("internal_energy", col(|o| o.eint))?;
             let del: Vec<u8> = outs.iter().map(|o| o.deleted as u8).collect();
-            let ds = dataset::<u8>(&sub, "deleted", &[kr.total])?;
+            let ds = self.dcpl.create::<u8>(&sub, "deleted", &[kr.total])?;
             h5::write_rows(&ds, &kr.rows, &del, &self.xfer)?;
         }
         Ok(())
