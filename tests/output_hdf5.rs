@@ -142,7 +142,7 @@ fn info_and_plot_read_the_run_file() {
         "155 nodes",
         "140 shell4",
         "states: 11",
-        "/states/0010   t = 1.000318e-1 s",
+        "/states/0010   t = 1.000559e-1 s",
         "time histories: 101 samples",
         "/th/nodes/values [T, 14, 9]: 14 nodes",
     ] {
