@@ -1471,6 +1471,19 @@ fn bumult_changes_the_sorts_not_the_result() {
 /// node 2 0.3 beyond the plate's edge x = 20 and 0.2 above it (distance 0.36
 /// to the edge, P 0.64), nodes 3 and 4 at 1.5 (out of the gap).
 fn inacti3_run(tag: &str, inacti: i64, tend: f64, print: i64, ranks: u32) -> Run {
+    inacti3_run_with(
+        tag,
+        &T7 {
+            inacti,
+            ..T7::default()
+        },
+        tend,
+        print,
+        ranks,
+    )
+}
+
+fn inacti3_run_with(tag: &str, t7: &T7, tend: f64, print: i64, ranks: u32) -> Run {
     let dir = scratch(&format!("opt-inacti3-{tag}"));
     let mut k = Deck::new("inacti3");
     main_plate(&mut k, 1.0, -20.0, 40.0, 40.0, 1);
@@ -1485,15 +1498,7 @@ fn inacti3_run(tag: &str, inacti: i64, tend: f64, print: i64, ranks: u32) -> Run
     ]);
     k.shells(2, &[(1, [1, 2, 3, 4])]);
     k.grnod(1, &[1, 2, 3, 4]);
-    k.inter(
-        1,
-        1,
-        1001,
-        &T7 {
-            inacti,
-            ..T7::default()
-        },
-    );
+    k.inter(1, 1, 1001, t7);
     let deck = k.write(&dir.join("deck"), "inacti3", tend, print, 0.9);
     let r = run(
         &deck,
@@ -1612,4 +1617,100 @@ fn inacti_3_moves_the_penetrated_nodes_to_the_gap() {
         "Inacti 3: 1 and 2 ranks differ"
     );
     assert!(r3b.listing.text.contains("2 secondary nodes moved"));
+}
+
+/// Inacti 3 with Fpenmax 0.55: node 1 (P 0.5 < 0.55·Gap) is moved, node 2
+/// (P 0.64) is not — its stiffness is deactivated whatever Inacti (card
+/// comment 13) — and nothing pushes either.
+#[test]
+fn inacti_3_leaves_fpenmax_nodes_to_the_deactivation() {
+    let t7 = T7 {
+        inacti: 3,
+        fpenmax: 0.55,
+        ..T7::default()
+    };
+    let r = inacti3_run_with("fpen", &t7, 0.05, 1, 1);
+    let s = r.final_state();
+    let note = r
+        .listing
+        .text
+        .lines()
+        .find(|l| l.contains("Inacti = 3"))
+        .expect("an Inacti = 3 note");
+    eprintln!("{note}");
+    assert!(note.contains("1 secondary nodes moved"), "{note}");
+    assert!(note.contains("moved: 1;"), "{note}");
+    assert!(note.contains("Fpenmax*Gap not moved (their stiffness is deactivated): 2"), "{note}");
+    assert!((s[&1][2] - 1.0).abs() < 1e-9, "node 1 z {}", s[&1][2]);
+    assert!((s[&2][0] - 20.3).abs() < 1e-9 && (s[&2][2] - 0.2).abs() < 1e-9);
+    let f = r
+        .listing
+        .of(1)
+        .iter()
+        .map(|l| norm(l.normal))
+        .fold(0.0, f64::max);
+    assert!(f < 1e-9, "no force: {f}");
+}
+
+/// Inacti 3 in a concave corner (floor z = 0 and wall x = 0, gap 1): the node
+/// at (0.5, 0, 0.3) is first moved out of the floor (the deeper, P 0.7) to
+/// z = 1, which leaves it in the wall's gap; the next pass moves it to x = 1:
+/// it ends at (1, 0, 1), at the gap of both.
+#[test]
+fn inacti_3_frees_a_node_from_two_segments() {
+    let dir = scratch("opt-inacti3-corner");
+    let mut k = Deck::new("corner");
+    k.law1(1, RHO, 210.0, 0.3);
+    k.shell_prop(1, 1.0);
+    k.part(1, 1, 1);
+    k.nodes(&[
+        (1001, [0.0, -5.0, 0.0]),
+        (1002, [10.0, -5.0, 0.0]),
+        (1003, [10.0, 5.0, 0.0]),
+        (1004, [0.0, 5.0, 0.0]),
+        (1005, [0.0, 5.0, 10.0]),
+        (1006, [0.0, -5.0, 10.0]),
+        (1, [0.5, 0.0, 0.3]),
+    ]);
+    k.shells(1, &[(1001, [1001, 1002, 1003, 1004]), (1002, [1001, 1004, 1005, 1006])]);
+    k.grnod_part(1001, 1);
+    k.surf_part(1001, 1);
+    k.bcs(1001, "111 111", 1001);
+    k.grnod(1, &[1]);
+    k.admas(1, 1.0, 1);
+    k.inter(
+        1,
+        1,
+        1001,
+        &T7 {
+            inacti: 3,
+            gapmin: 1.0,
+            ..T7::default()
+        },
+    );
+    let deck = k.write(&dir.join("deck"), "corner", 0.05, 1, 0.9);
+    let r = run(&deck, &dir, &RunArgs::default());
+    assert!(r.listing.normal_termination());
+    let s = r.final_state()[&1];
+    eprintln!("corner node at ({}, {}, {})", s[0], s[1], s[2]);
+    assert!((s[0] - 1.0).abs() < 1e-12 && s[1] == 0.0 && (s[2] - 1.0).abs() < 1e-12);
+    let note = r
+        .listing
+        .text
+        .lines()
+        .find(|l| l.contains("Inacti = 3"))
+        .unwrap();
+    let want = (0.5f64 * 0.5 + 0.7 * 0.7).sqrt();
+    assert!(
+        note.contains(&format!("largest move {want:.6e} (node 1)")),
+        "{note}"
+    );
+    assert!(!note.contains("still penetrated"), "{note}");
+    let f = r
+        .listing
+        .of(1)
+        .iter()
+        .map(|l| norm(l.normal))
+        .fold(0.0, f64::max);
+    assert!(f < 1e-9, "no force: {f}");
 }
