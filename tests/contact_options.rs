@@ -1544,7 +1544,10 @@ fn inacti_3_moves_the_penetrated_nodes_to_the_gap() {
     let d2 = (0.3f64 * 0.3 + 0.2 * 0.2).sqrt();
     let want2 = [20.0 + 0.3 / d2, -5.0, 0.2 / d2];
     let x2 = x(&s0, 2);
-    assert!(norm(sub(x2, want2)) < 1e-12, "node 2 at {x2:?}, expected {want2:?}");
+    assert!(
+        norm(sub(x2, want2)) < 1e-12,
+        "node 2 at {x2:?}, expected {want2:?}"
+    );
     // Nodes out of the gap and the main plate's nodes untouched (bitwise).
     assert_eq!(x(&s0, 3), [20.3, 5.0, 1.5]);
     assert_eq!(x(&s0, 4), [15.0, 5.0, 1.5]);
@@ -1640,7 +1643,10 @@ fn inacti_3_leaves_fpenmax_nodes_to_the_deactivation() {
     eprintln!("{note}");
     assert!(note.contains("1 secondary nodes moved"), "{note}");
     assert!(note.contains("moved: 1;"), "{note}");
-    assert!(note.contains("Fpenmax*Gap not moved (their stiffness is deactivated): 2"), "{note}");
+    assert!(
+        note.contains("Fpenmax*Gap not moved (their stiffness is deactivated): 2"),
+        "{note}"
+    );
     assert!((s[&1][2] - 1.0).abs() < 1e-9, "node 1 z {}", s[&1][2]);
     assert!((s[&2][0] - 20.3).abs() < 1e-9 && (s[&2][2] - 0.2).abs() < 1e-9);
     let f = r
@@ -1672,7 +1678,13 @@ fn inacti_3_frees_a_node_from_two_segments() {
         (1006, [0.0, -5.0, 10.0]),
         (1, [0.5, 0.0, 0.3]),
     ]);
-    k.shells(1, &[(1001, [1001, 1002, 1003, 1004]), (1002, [1001, 1004, 1005, 1006])]);
+    k.shells(
+        1,
+        &[
+            (1001, [1001, 1002, 1003, 1004]),
+            (1002, [1001, 1004, 1005, 1006]),
+        ],
+    );
     k.grnod_part(1001, 1);
     k.surf_part(1001, 1);
     k.bcs(1001, "111 111", 1001);

@@ -77,10 +77,7 @@ impl Report {
             }
             s.join(", ")
         };
-        let mut s = format!(
-            "{loc}: /INTER/TYPE7/{}: Inacti = 3: ",
-            self.interface_id
-        );
+        let mut s = format!("{loc}: /INTER/TYPE7/{}: Inacti = 3: ", self.interface_id);
         match self.largest() {
             Some((id, l)) => {
                 let moved: Vec<u64> = self.moved.iter().map(|m| m.0).collect();
@@ -119,7 +116,6 @@ pub fn wanted(m: &Model) -> bool {
 
 /// The deepest penetrated segment of secondary `k` of pass `p` at coordinates
 /// `x` (cnode order), among `cands`: (P, gap, direction), P > tolerance.
-#[allow(clippy::too_many_arguments)]
 fn deepest(
     it: &setup::Interface,
     p: &setup::Pass,
@@ -165,11 +161,14 @@ fn deepest(
     best
 }
 
+/// New coordinates of every model node (when any moved) and the reports.
+pub type Depenetrated = (Option<Vec<[f64; 3]>>, Vec<Report>);
+
 /// Moves the secondary nodes of every TYPE7 interface with Inacti = 3 out of
 /// their initial penetrations. Returns the new coordinates of every model
 /// node (model order) when any node moved, and one report per such interface
 /// (deck order).
-pub fn depenetrate(m: &Model) -> Result<(Option<Vec<[f64; 3]>>, Vec<Report>), String> {
+pub fn depenetrate(m: &Model) -> Result<Depenetrated, String> {
     if !wanted(m) {
         return Ok((None, Vec::new()));
     }
@@ -196,16 +195,15 @@ pub fn depenetrate(m: &Model) -> Result<(Option<Vec<[f64; 3]>>, Vec<Report>), St
                     .map(|s| Aabb::of_points(&s.map(|c| x[c as usize])))
                     .collect();
                 let pts: Vec<V3> = p.sec.iter().map(|&s| x[s as usize]).collect();
-                let cand =
-                    search::candidates(&pts, it.max_gap, &boxes, search::choose(&boxes));
-                for k in 0..p.sec.len() {
+                let cand = search::candidates(&pts, it.max_gap, &boxes, search::choose(&boxes));
+                for (k, sk) in skip.iter_mut().enumerate() {
                     let c = &cand.segs[cand.ptr[k]..cand.ptr[k + 1]];
                     for &mi in c {
                         if let Some((pen, g, _)) =
                             deepest(it, p, k, std::slice::from_ref(&mi), &x, &x0)
                         {
                             if pen >= it.fpenmax * g {
-                                skip[k] = true;
+                                *sk = true;
                                 fpen.insert(p.sec[k]);
                                 break;
                             }
@@ -221,8 +219,7 @@ pub fn depenetrate(m: &Model) -> Result<(Option<Vec<[f64; 3]>>, Vec<Report>), St
                     .map(|s| Aabb::of_points(&s.map(|c| x[c as usize])))
                     .collect();
                 let pts: Vec<V3> = p.sec.iter().map(|&s| x[s as usize]).collect();
-                let cand =
-                    search::candidates(&pts, it.max_gap, &boxes, search::choose(&boxes));
+                let cand = search::candidates(&pts, it.max_gap, &boxes, search::choose(&boxes));
                 let moves: Vec<(u32, V3)> = (0..p.sec.len())
                     .filter(|&k| !skip[k])
                     .filter_map(|k| {
