@@ -1465,3 +1465,264 @@ fn bumult_changes_the_sorts_not_the_result() {
     );
     assert!(sorts[2] >= 1);
 }
+
+/// Inacti 3 deck: the fixed 40 x 40 main plate (gap 1) and a free secondary
+/// shell (E 70, t 0.5, nodes 1-4) whose node 1 is 0.5 above the plate (P 0.5),
+/// node 2 0.3 beyond the plate's edge x = 20 and 0.2 above it (distance 0.36
+/// to the edge, P 0.64), nodes 3 and 4 at 1.5 (out of the gap).
+fn inacti3_run(tag: &str, inacti: i64, tend: f64, print: i64, ranks: u32) -> Run {
+    inacti3_run_with(
+        tag,
+        &T7 {
+            inacti,
+            ..T7::default()
+        },
+        tend,
+        print,
+        ranks,
+    )
+}
+
+fn inacti3_run_with(tag: &str, t7: &T7, tend: f64, print: i64, ranks: u32) -> Run {
+    let dir = scratch(&format!("opt-inacti3-{tag}"));
+    let mut k = Deck::new("inacti3");
+    main_plate(&mut k, 1.0, -20.0, 40.0, 40.0, 1);
+    k.law1(2, RHO, 70.0, 0.3);
+    k.shell_prop(2, 0.5);
+    k.part(2, 2, 2);
+    k.nodes(&[
+        (1, [15.0, -5.0, 0.5]),
+        (2, [20.3, -5.0, 0.2]),
+        (3, [20.3, 5.0, 1.5]),
+        (4, [15.0, 5.0, 1.5]),
+    ]);
+    k.shells(2, &[(1, [1, 2, 3, 4])]);
+    k.grnod(1, &[1, 2, 3, 4]);
+    k.inter(1, 1, 1001, t7);
+    let deck = k.write(&dir.join("deck"), "inacti3", tend, print, 0.9);
+    let r = run(
+        &deck,
+        &dir,
+        &RunArgs {
+            ranks,
+            ..RunArgs::default()
+        },
+    );
+    assert!(r.listing.normal_termination(), "{tag}: run failed");
+    r
+}
+
+/// Distance from a point to the main plate [−20, 20]² at z = 0.
+fn plate_distance(x: [f64; 3]) -> f64 {
+    let c = [x[0].clamp(-20.0, 20.0), x[1].clamp(-20.0, 20.0), 0.0];
+    norm(sub(x, c))
+}
+
+/// Inacti 3: the starter step moves the penetrated secondary nodes out to the
+/// gap along the contact direction — node 1 along the plate normal to z = 1,
+/// node 2 radially from the plate's edge to distance 1 — and leaves the
+/// others; the listing says which and how far. The run then starts at rest:
+/// no contact force, no motion (the moved shell is the reference geometry),
+/// where Inacti 0 kicks the nodes out and Inacti 5 keeps them in place with
+/// reduced gaps. Same bytes on 1 and 2 ranks.
+#[test]
+fn inacti_3_moves_the_penetrated_nodes_to_the_gap() {
+    // Initial state: a run of one tiny step.
+    let r0 = inacti3_run("t0", 3, 1e-9, 1, 1);
+    let s0 = r0.final_state();
+    let x = |s: &std::collections::BTreeMap<u64, [f64; 6]>, id: u64| {
+        let v = s[&id];
+        [v[0], v[1], v[2]]
+    };
+    // Node 1 straight up to the gap.
+    let x1 = x(&s0, 1);
+    assert!(
+        (x1[0] - 15.0).abs() < 1e-12 && (x1[1] + 5.0).abs() < 1e-12 && (x1[2] - 1.0).abs() < 1e-12,
+        "node 1 at {x1:?}"
+    );
+    // Node 2 radially from the edge (20, −5, 0): along (0.3, 0, 0.2)/0.36.
+    let d2 = (0.3f64 * 0.3 + 0.2 * 0.2).sqrt();
+    let want2 = [20.0 + 0.3 / d2, -5.0, 0.2 / d2];
+    let x2 = x(&s0, 2);
+    assert!(
+        norm(sub(x2, want2)) < 1e-12,
+        "node 2 at {x2:?}, expected {want2:?}"
+    );
+    // Nodes out of the gap and the main plate's nodes untouched (bitwise).
+    assert_eq!(x(&s0, 3), [20.3, 5.0, 1.5]);
+    assert_eq!(x(&s0, 4), [15.0, 5.0, 1.5]);
+    assert_eq!(x(&s0, 1001), [-20.0, -20.0, 0.0]);
+    assert_eq!(x(&s0, 1004), [20.0, 20.0, 0.0]);
+    for id in 1..=4 {
+        let d = plate_distance(x(&s0, id));
+        eprintln!("node {id}: distance {d:.15} to the main plate");
+        assert!(d >= 1.0 - 1e-12, "node {id} still in the gap: {d}");
+    }
+    // The listing note: 2 nodes, largest move 1 − 0.36 at node 2.
+    let note = r0
+        .listing
+        .text
+        .lines()
+        .find(|l| l.contains("Inacti = 3"))
+        .expect("an Inacti = 3 note");
+    eprintln!("{note}");
+    assert!(note.contains("/INTER/TYPE7/1"), "{note}");
+    assert!(note.contains("2 secondary nodes moved"), "{note}");
+    assert!(note.contains("moved: 1, 2"), "{note}");
+    assert!(
+        note.contains(&format!("largest move {:.6e} (node 2)", 1.0 - d2)),
+        "{note}"
+    );
+
+    // The first cycles: no force, no motion with Inacti 3.
+    let r3 = inacti3_run("run3", 3, 0.05, 1, 1);
+    let f3 = r3
+        .listing
+        .of(1)
+        .iter()
+        .map(|l| norm(l.normal))
+        .fold(0.0, f64::max);
+    let s3 = r3.final_state();
+    let v3 = (1..=4)
+        .map(|id| norm([s3[&id][3], s3[&id][4], s3[&id][5]]))
+        .fold(0.0, f64::max);
+    // Inacti 0: the full reaction throws the nodes out.
+    let r0 = inacti3_run("run0", 0, 0.05, 1, 1);
+    let f0 = norm(r0.listing.of(1)[0].normal);
+    let s0r = r0.final_state();
+    let v0 = (1..=4)
+        .map(|id| norm([s0r[&id][3], s0r[&id][4], s0r[&id][5]]))
+        .fold(0.0, f64::max);
+    // Inacti 5: no force either, the nodes stay where they were.
+    let r5 = inacti3_run("run5", 5, 0.05, 1, 1);
+    let f5 = r5
+        .listing
+        .of(1)
+        .iter()
+        .map(|l| norm(l.normal))
+        .fold(0.0, f64::max);
+    let s5 = r5.final_state();
+    eprintln!(
+        "Inacti 3: max |F| {f3:e}, max |v| {v3:e}; Inacti 0: first |F| {f0:.4}, max |v| {v0:.4}; Inacti 5: max |F| {f5:e}, node 1 z {}",
+        s5[&1][2]
+    );
+    assert!(f0 > 1.0 && v0 > 1e-2, "Inacti 0 pushes the nodes out");
+    assert!(f3 <= 1e-9 * f0, "Inacti 3: contact force {f3}");
+    assert!(v3 <= 1e-9 * v0, "Inacti 3: the nodes move ({v3})");
+    assert!(f5 <= 1e-9 * f0);
+    assert_eq!(s5[&1][2], 0.5, "Inacti 5 leaves the node in place");
+
+    // 1 and 2 ranks: the same bytes.
+    let r3b = inacti3_run("run3-np2", 3, 0.05, 1, 2);
+    assert_eq!(
+        r3.final_state_bytes(),
+        r3b.final_state_bytes(),
+        "Inacti 3: 1 and 2 ranks differ"
+    );
+    assert!(r3b.listing.text.contains("2 secondary nodes moved"));
+}
+
+/// Inacti 3 with Fpenmax 0.55: node 1 (P 0.5 < 0.55·Gap) is moved, node 2
+/// (P 0.64) is not — its stiffness is deactivated whatever Inacti (card
+/// comment 13) — and nothing pushes either.
+#[test]
+fn inacti_3_leaves_fpenmax_nodes_to_the_deactivation() {
+    let t7 = T7 {
+        inacti: 3,
+        fpenmax: 0.55,
+        ..T7::default()
+    };
+    let r = inacti3_run_with("fpen", &t7, 0.05, 1, 1);
+    let s = r.final_state();
+    let note = r
+        .listing
+        .text
+        .lines()
+        .find(|l| l.contains("Inacti = 3"))
+        .expect("an Inacti = 3 note");
+    eprintln!("{note}");
+    assert!(note.contains("1 secondary nodes moved"), "{note}");
+    assert!(note.contains("moved: 1;"), "{note}");
+    assert!(
+        note.contains("Fpenmax*Gap not moved (their stiffness is deactivated): 2"),
+        "{note}"
+    );
+    assert!((s[&1][2] - 1.0).abs() < 1e-9, "node 1 z {}", s[&1][2]);
+    assert!((s[&2][0] - 20.3).abs() < 1e-9 && (s[&2][2] - 0.2).abs() < 1e-9);
+    let f = r
+        .listing
+        .of(1)
+        .iter()
+        .map(|l| norm(l.normal))
+        .fold(0.0, f64::max);
+    assert!(f < 1e-9, "no force: {f}");
+}
+
+/// Inacti 3 in a concave corner (floor z = 0 and wall x = 0, gap 1): the node
+/// at (0.5, 0, 0.3) is first moved out of the floor (the deeper, P 0.7) to
+/// z = 1, which leaves it in the wall's gap; the next pass moves it to x = 1:
+/// it ends at (1, 0, 1), at the gap of both.
+#[test]
+fn inacti_3_frees_a_node_from_two_segments() {
+    let dir = scratch("opt-inacti3-corner");
+    let mut k = Deck::new("corner");
+    k.law1(1, RHO, 210.0, 0.3);
+    k.shell_prop(1, 1.0);
+    k.part(1, 1, 1);
+    k.nodes(&[
+        (1001, [0.0, -5.0, 0.0]),
+        (1002, [10.0, -5.0, 0.0]),
+        (1003, [10.0, 5.0, 0.0]),
+        (1004, [0.0, 5.0, 0.0]),
+        (1005, [0.0, 5.0, 10.0]),
+        (1006, [0.0, -5.0, 10.0]),
+        (1, [0.5, 0.0, 0.3]),
+    ]);
+    k.shells(
+        1,
+        &[
+            (1001, [1001, 1002, 1003, 1004]),
+            (1002, [1001, 1004, 1005, 1006]),
+        ],
+    );
+    k.grnod_part(1001, 1);
+    k.surf_part(1001, 1);
+    k.bcs(1001, "111 111", 1001);
+    k.grnod(1, &[1]);
+    k.admas(1, 1.0, 1);
+    k.inter(
+        1,
+        1,
+        1001,
+        &T7 {
+            inacti: 3,
+            gapmin: 1.0,
+            ..T7::default()
+        },
+    );
+    let deck = k.write(&dir.join("deck"), "corner", 0.05, 1, 0.9);
+    let r = run(&deck, &dir, &RunArgs::default());
+    assert!(r.listing.normal_termination());
+    let s = r.final_state()[&1];
+    eprintln!("corner node at ({}, {}, {})", s[0], s[1], s[2]);
+    assert!((s[0] - 1.0).abs() < 1e-12 && s[1] == 0.0 && (s[2] - 1.0).abs() < 1e-12);
+    let note = r
+        .listing
+        .text
+        .lines()
+        .find(|l| l.contains("Inacti = 3"))
+        .unwrap();
+    let want = (0.5f64 * 0.5 + 0.7 * 0.7).sqrt();
+    assert!(
+        note.contains(&format!("largest move {want:.6e} (node 1)")),
+        "{note}"
+    );
+    assert!(!note.contains("still penetrated"), "{note}");
+    let f = r
+        .listing
+        .of(1)
+        .iter()
+        .map(|l| norm(l.normal))
+        .fold(0.0, f64::max);
+    assert!(f < 1e-9, "no force: {f}");
+}

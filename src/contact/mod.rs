@@ -14,6 +14,7 @@ pub mod exchange;
 pub mod friction;
 pub mod gap;
 pub mod geometry;
+pub mod inacti3;
 pub mod interfaces;
 pub mod restart;
 pub mod search;

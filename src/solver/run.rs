@@ -88,6 +88,22 @@ fn prepare(opts: &RunOptions, nranks: usize) -> Result<Prepared, String> {
         ));
     }
     check_supported(&m)?;
+    // /INTER/TYPE7 Inacti = 3: a starter step — the penetrated secondary nodes
+    // get new coordinates, and the model is built again from them so that
+    // every rank's elements, masses, gaps and the output mesh start there.
+    let (moved, inacti3) = crate::contact::inacti3::depenetrate(&m)?;
+    let m = match moved {
+        Some(x) => {
+            let mut d2 = d.clone();
+            for nc in d2.nodes.iter_mut() {
+                if let Ok(i) = m.nodes.ids.binary_search(&nc.id) {
+                    nc.x = x[i];
+                }
+            }
+            model::build(&d2).map_err(|e| e.to_string())?
+        }
+        None => m,
+    };
     let (p, _) =
         domain::partition(&m, nranks).map_err(|e| format!("{starter}: cannot partition: {e}"))?;
     let sds = domain::split(&m, &p.part, nranks);
@@ -115,6 +131,15 @@ fn prepare(opts: &RunOptions, nranks: usize) -> Result<Prepared, String> {
     }
     // Where the engine computes a card's option another way, the listing says so.
     let mut notes = Vec::new();
+    for r in &inacti3 {
+        if let Some(i) = m
+            .interfaces
+            .iter()
+            .find(|i| i.card.id == r.interface_id && i.card.type_number() == 7)
+        {
+            notes.push(r.note(&i.card.loc.to_string()));
+        }
+    }
     for p in &m.properties {
         if let Some(s) = &p.shell {
             if s.ismstr == 1 {
@@ -366,9 +391,6 @@ fn check_interface(c: &deck::InterfaceCard) -> Result<(), String> {
             }
             if t.ibag == 1 {
                 return no("airbag vent closure (Ibag = 1)");
-            }
-            if t.inacti == 3 {
-                return no("Inacti = 3 (moving nodes out of initial penetrations)");
             }
             if t.ifric == 4 {
                 return no("Ifric = 4 (exponential decay law)");
