@@ -775,7 +775,6 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
     // ---- cycle 0: forces and time step at t = 0 -------------------------
     let mut t = 0.0f64;
     let mut cycle: u64 = 0;
-    let mut e_int = 0.0f64;
     let mut w_ext = 0.0f64;
     let mut wall_work = 0.0f64;
     // Tied secondary nodes start with their main segment's motion.
@@ -1314,12 +1313,15 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
                 step.what, step.id, engine.dt_min
             )));
         }
-        if opts.energies.is_some() {
+        // The global energies (one all-reduce), at the cycles the --energies
+        // CSV or the listing wants them.
+        let print_now = cycle % print_every == 0 || t >= tstop;
+        let energies_now = (opts.energies.is_some() || print_now).then(|| {
             let mut e = [
                 blocks.iter().map(|b| b.energy()).sum::<f64>(),
+                blocks.iter().map(|b| b.energy_parts().0).sum::<f64>(),
                 w_ext,
                 e_contact,
-                blocks.iter().map(|b| b.energy_parts().0).sum::<f64>(),
             ];
             world.sum_f64(&mut e);
             let (ke, ker) = kinetic(
@@ -1333,40 +1335,24 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
                 &bodies,
                 &local_bodies,
             );
-            energy_rows.push([t, cycle as f64, dt, e[0] - e[3], ke, ker, e[1], e[2], e[3]]);
+            (e, ke, ker)
+        });
+        if let (Some(_), Some((e, ke, ker))) = (&opts.energies, energies_now) {
+            energy_rows.push([t, cycle as f64, dt, e[0] - e[1], ke, ker, e[2], e[3], e[1]]);
         }
-        if cycle % print_every == 0 || t >= tstop {
-            let mut ie = [
-                blocks.iter().map(|b| b.energy()).sum::<f64>(),
-                blocks.iter().map(|b| b.energy_parts().0).sum::<f64>(),
-            ];
-            world.sum_f64(&mut ie);
-            e_int = ie[0];
-            let mut w = [w_ext, e_contact];
-            world.sum_f64(&mut w);
-            let (ke, ker) = kinetic(
-                world,
-                &v,
-                &vr,
-                &mass,
-                &inertia_ke,
-                &owned,
-                &ke_skip,
-                &bodies,
-                &local_bodies,
-            );
+        if let (true, Some((e, ke, ker))) = (print_now, energies_now) {
             emit(
                 &mut listing,
                 cycle,
                 t,
                 dt,
                 &step,
-                ie[0] - ie[1],
-                ie[1],
+                e[0] - e[1],
+                e[1],
                 ke,
                 ker,
-                w[0],
-                w[1],
+                e[2],
+                e[3],
             );
             // Contact force resultants per interface (secondary side).
             if !contact.is_empty() {
@@ -1398,7 +1384,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
             }
         }
         // Tied interfaces: what the secondary nodes passed to their main nodes.
-        if !ties.is_empty() && (cycle % print_every == 0 || t >= tstop) {
+        if !ties.is_empty() && print_now {
             let mut r: Vec<f64> = ties
                 .sums
                 .iter()
@@ -1562,7 +1548,6 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
             RunError::Input(format!("{}: cannot write the history: {e}", path.display()))
         })?;
     }
-    let _ = e_int;
     result
 }
 
