@@ -483,18 +483,7 @@ fn ball_drop_conserves_energy_and_bounces() {
     eprintln!("ball_drop: mean velocity at the end {v:?}");
     assert!(v[2] > 0.5 * 3.0, "no rebound: vz = {}", v[2]);
     // 2 ranks: the same bytes.
-    let r2 = run(
-        &d,
-        &scratch("ball_drop_np2"),
-        &RunArgs {
-            ranks: 2,
-            ..Default::default()
-        },
-    );
-    assert!(
-        r.final_state_bytes() == r2.final_state_bytes(),
-        "ball_drop: the final state on 2 ranks differs from 1 rank"
-    );
+    assert_same_final_state_on_2_ranks(&d, "ball_drop_np2", &r);
 }
 
 /// Two equal elastic bars (ν = 0) at ±2 mm/ms meet end to end through a TYPE7:
@@ -538,18 +527,7 @@ fn bars_head_on_exchange_velocities() {
         assert!(p[k].abs() < 1e-12 * m * v0, "momentum {p:?}");
     }
     assert!(scale > 0.9 * m * v0);
-    let r2 = run(
-        &d,
-        &scratch("bars_head_on_np2"),
-        &RunArgs {
-            ranks: 2,
-            ..Default::default()
-        },
-    );
-    assert!(
-        r.final_state_bytes() == r2.final_state_bytes(),
-        "bars_head_on: the final state on 2 ranks differs from 1 rank"
-    );
+    assert_same_final_state_on_2_ranks(&d, "bars_head_on_np2", &r);
 }
 
 /// A copy of decks/NAME with `edit` applied to the starter's text, in `dir`.

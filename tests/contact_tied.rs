@@ -414,18 +414,7 @@ fn a_shell_plate_tied_onto_a_brick_block_flies_with_its_momentum_and_energy() {
     eprintln!("plate on block: energy balance {bal:.3e} of the external work");
     assert!(bal.abs() < 2e-3, "{bal}");
     // Secondary (plate) and main (block) nodes partly on different ranks.
-    let r2 = run(
-        &d,
-        &scratch("tied-pb2"),
-        &RunArgs {
-            ranks: 2,
-            ..Default::default()
-        },
-    );
-    assert!(
-        r2.final_state_bytes() == r1.final_state_bytes(),
-        "2 ranks differ from 1"
-    );
+    assert_same_final_state_on_2_ranks(&d, "tied-pb2", &r1);
 }
 
 type V3 = [f64; 3];
@@ -644,18 +633,7 @@ fn a_spinning_offset_tie_turns_with_its_segment_and_keeps_angular_momentum() {
     assert!(eh < 1e-6, "angular momentum error {eh}");
     assert!(eb.abs() < 1e-5, "energy balance {eb}");
     // The turned offsets are state: the same bytes on 2 ranks.
-    let r2 = run(
-        &d,
-        &scratch("tied-spin2"),
-        &RunArgs {
-            ranks: 2,
-            ..Default::default()
-        },
-    );
-    assert!(
-        r2.final_state_bytes() == r1.final_state_bytes(),
-        "2 ranks differ from 1"
-    );
+    assert_same_final_state_on_2_ranks(&d, "tied-spin2", &r1);
 }
 
 /// The plate nodes of tied_spin_block, (2.5 i, 2.5 j, 5.5), on the block's top
@@ -738,18 +716,7 @@ fn a_plate_tied_with_an_offset_onto_a_spinning_brick_block_keeps_angular_momentu
     eprintln!("spin on block: H0 {h0:?}, H {h1:?}, error {eh:.2e}; energy balance {eb:.2e}");
     assert!(eh < 1e-6, "angular momentum error {eh}");
     assert!(eb.abs() < 1e-4, "energy balance {eb}");
-    let r2 = run(
-        &d,
-        &scratch("tied-spinb2"),
-        &RunArgs {
-            ranks: 2,
-            ..Default::default()
-        },
-    );
-    assert!(
-        r2.final_state_bytes() == r1.final_state_bytes(),
-        "2 ranks differ from 1"
-    );
+    assert_same_final_state_on_2_ranks(&d, "tied-spinb2", &r1);
 }
 
 #[test]

@@ -9,6 +9,24 @@ use std::process::Output;
 
 pub type V3 = [f64; 3];
 
+/// Runs `deck` again on 2 ranks (in scratch `tag`) and asserts that its final
+/// state is byte-identical to `one`'s.
+pub fn assert_same_final_state_on_2_ranks(deck: &Path, tag: &str, one: &Run) {
+    let two = run(
+        deck,
+        &scratch(tag),
+        &RunArgs {
+            ranks: 2,
+            ..Default::default()
+        },
+    );
+    assert!(
+        two.final_state_bytes() == one.final_state_bytes(),
+        "{}: the final state on 2 ranks differs from 1 rank",
+        deck.display()
+    );
+}
+
 /// A fresh scratch directory for one test.
 pub fn scratch(tag: &str) -> PathBuf {
     let d = std::env::temp_dir().join(format!("crashsim-contact-{tag}-{}", std::process::id()));
