@@ -137,10 +137,8 @@ fn a_tied_bent_strip_deflects_as_the_continuous_one_not_as_a_hinge() {
         .read_raw::<u64>()
         .unwrap();
     assert_eq!((ty, id), (vec![2], vec![1]));
-    let ds = f.dataset("th/interfaces/values").unwrap();
-    let sh = ds.shape();
+    let (sh, v) = crashsim::output::runfile::read_th(&f, "interfaces").unwrap();
     assert_eq!(sh[1..], [1, 13]);
-    let v = ds.read_raw::<f64>().unwrap();
     let last = &v[13 * (sh[0] - 1)..13 * sh[0]];
     let line = r
         .listing

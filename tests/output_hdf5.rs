@@ -144,16 +144,15 @@ fn info_and_plot_read_the_run_file() {
         "states: 11",
         "/states/0010   t = 1.000559e-1 s",
         "time histories: 101 samples",
-        "/th/nodes/values [T, 14, 9]: 14 nodes",
+        "nodes [14, 9]: 14 nodes",
     ] {
         assert!(text.contains(want), "info lacks '{want}':\n{text}");
     }
     // Part histories at t = 0: the starter listing's PART MASS table
     // (element mass 4.0950001470000E-02, kinetic energy 1.310400047040).
     let f = hdf5::File::open(&h5).unwrap();
-    let parts = f.dataset("th/parts/values").unwrap();
-    assert_eq!(parts.shape()[1..], [1, 3]);
-    let v = parts.read_raw::<f64>().unwrap();
+    let (shape, v) = crashsim::output::runfile::read_th(&f, "parts").unwrap();
+    assert_eq!(shape, [101, 1, 3]);
     assert!(
         (v[2] - 4.0950001470000e-2).abs() <= 1e-12 * 4.1e-2,
         "part mass {}",

@@ -161,8 +161,10 @@ for s in states:
     for k in ("coordinates", "displacement", "velocity", "contact_force"):
         assert g[k].shape == (155, 3) and np.isfinite(g[k][()]).all(), (s, k)
     assert g["shell4/von_mises"].shape == (140,)
-assert f["th/time"].shape[0] >= 50 and f["th/global"].shape == (f["th/time"].shape[0], 10)
-print("readable:", len(states), "states,", f["th/time"].shape[0], "history rows")
+th = f["th/rows"][()]
+assert th.shape[0] >= 50 and th["global"].shape == (th.shape[0], 10), th.shape
+assert np.isfinite(th["global"]).all() and (np.diff(th["time"]) > 0).all()
+print("readable:", len(states), "states,", th.shape[0], "history rows")
 "#;
     let py = dir.join("read.py");
     std::fs::write(&py, script).unwrap();

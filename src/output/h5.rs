@@ -28,7 +28,7 @@
 use hdf5::{Dataset, Datatype, H5Type};
 use hdf5_sys::h5::hsize_t;
 use hdf5_sys::h5i::hid_t;
-use hdf5_sys::{h5d, h5p, h5s};
+use hdf5_sys::{h5d, h5p, h5s, h5t};
 
 /// Rows of a dataset's first dimension that this rank writes or reads:
 /// ascending, as (first row, number of rows) runs.
@@ -337,4 +337,219 @@ pub fn text(s: &str) -> Text {
         end -= 1;
     }
     s[..end].parse().unwrap_or_default()
+}
+
+/// A datatype id made here (closed on drop).
+pub struct TypeId(hid_t);
+
+impl TypeId {
+    pub fn id(&self) -> hid_t {
+        self.0
+    }
+    /// Size of one value of the type in bytes.
+    pub fn size(&self) -> usize {
+        unsafe { h5t::H5Tget_size(self.0) }
+    }
+}
+
+impl Drop for TypeId {
+    fn drop(&mut self) {
+        unsafe {
+            h5t::H5Tclose(self.0);
+        }
+    }
+}
+
+/// A member of a record type: one f64 or u64, or an array of f64 with the
+/// given dimensions (every one at least 1).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Member {
+    F64,
+    U64,
+    F64Array(Vec<usize>),
+}
+
+impl Member {
+    /// The native type of the member (a new id).
+    fn native(&self) -> Result<TypeId, String> {
+        let id = unsafe {
+            match self {
+                Member::F64 => h5t::H5Tcopy(*h5t::H5T_NATIVE_DOUBLE),
+                Member::U64 => h5t::H5Tcopy(*h5t::H5T_NATIVE_UINT64),
+                Member::F64Array(dims) => {
+                    let d: Vec<hsize_t> = dims.iter().map(|&n| n as hsize_t).collect();
+                    h5t::H5Tarray_create2(*h5t::H5T_NATIVE_DOUBLE, d.len() as u32, d.as_ptr())
+                }
+            }
+        };
+        if id < 0 {
+            return Err(format!("HDF5: cannot make the type of a {self:?} member"));
+        }
+        Ok(TypeId(id))
+    }
+    /// Size in bytes.
+    pub fn size(&self) -> usize {
+        match self {
+            Member::F64 | Member::U64 => 8,
+            Member::F64Array(dims) => 8 * dims.iter().product::<usize>(),
+        }
+    }
+}
+
+/// The packed record (compound) type of `members`, in order: one row of a
+/// table whose fields h5py and numpy read by name.
+pub fn record_type(members: &[(&str, Member)]) -> Result<TypeId, String> {
+    let size: usize = members.iter().map(|(_, m)| m.size()).sum();
+    let ty = TypeId(unsafe { h5t::H5Tcreate(h5t::H5T_class_t::H5T_COMPOUND, size) });
+    if ty.0 < 0 {
+        return Err("HDF5: cannot create a record type".into());
+    }
+    let mut offset = 0;
+    for (name, m) in members {
+        let mt = m.native()?;
+        let cname = std::ffi::CString::new(*name).map_err(|e| e.to_string())?;
+        if unsafe { h5t::H5Tinsert(ty.0, cname.as_ptr(), offset, mt.0) } < 0 {
+            return Err(format!(
+                "HDF5: cannot add the member {name} to a record type"
+            ));
+        }
+        offset += m.size();
+    }
+    Ok(ty)
+}
+
+/// Creates the extendible 1-D dataset `name` of records `ty` in `loc`, with
+/// no rows yet, chunked by `chunk` rows, without fill values (every row is
+/// written; in parallel a fill costs a collective write of each new chunk)
+/// or modification times. Collective.
+pub fn create_record_table(
+    loc: &hdf5::Location,
+    name: &str,
+    ty: &TypeId,
+    chunk: usize,
+) -> Result<Dataset, String> {
+    let dims = [0 as hsize_t];
+    let maxdims = [h5s::H5S_UNLIMITED];
+    let space = Space(unsafe { h5s::H5Screate_simple(1, dims.as_ptr(), maxdims.as_ptr()) });
+    if space.0 < 0 {
+        return Err(format!("HDF5: cannot create the dataspace of {name}"));
+    }
+    let dcpl = FixedDcpl::new()?;
+    let chunk = [chunk.max(1) as hsize_t];
+    unsafe {
+        if h5p::H5Pset_chunk(dcpl.0, 1, chunk.as_ptr()) < 0
+            || h5p::H5Pset_fill_time(dcpl.0, h5d::H5D_fill_time_t::H5D_FILL_TIME_NEVER) < 0
+        {
+            return Err(format!("HDF5: cannot set the layout of {name}"));
+        }
+    }
+    let cname = std::ffi::CString::new(name).map_err(|e| e.to_string())?;
+    let id = unsafe {
+        h5d::H5Dcreate2(
+            loc.id(),
+            cname.as_ptr(),
+            ty.0,
+            space.0,
+            h5p::H5P_DEFAULT,
+            dcpl.0,
+            h5p::H5P_DEFAULT,
+        )
+    };
+    if id < 0 {
+        return Err(format!("HDF5: cannot create {name}"));
+    }
+    // SAFETY: `id` is a new dataset id; the handle takes its reference.
+    unsafe { hdf5::from_id::<Dataset>(id) }.map_err(|e| e.to_string())
+}
+
+/// Writes this rank's `rows` of the 1-D record dataset `ds`: `bytes` holds
+/// the records of `ty`, packed in `rows` order.
+pub fn write_records(
+    ds: &Dataset,
+    rows: &Rows,
+    bytes: &[u8],
+    ty: &TypeId,
+    xfer: &Xfer,
+) -> Result<(), String> {
+    let (fspace, _) = file_selection(ds, rows)?;
+    if bytes.len() != rows.len() * ty.size() {
+        return Err(format!(
+            "HDF5: {} bytes for {} records of {}",
+            bytes.len(),
+            rows.len(),
+            ty.size()
+        ));
+    }
+    let mspace = memory_space(rows.len())?;
+    let rc = unsafe {
+        h5d::H5Dwrite(
+            ds.id(),
+            ty.0,
+            mspace.0,
+            fspace.0,
+            xfer.0,
+            bytes.as_ptr().cast(),
+        )
+    };
+    if rc < 0 {
+        return Err(format!("HDF5: writing {} failed", ds.name()));
+    }
+    Ok(())
+}
+
+/// The member `name` of every record of the 1-D record dataset `ds` (serial
+/// read), as its dimensions (empty for a scalar) and the values, record
+/// after record. `None` when the records have no such member.
+pub fn read_member<T: H5Type + Default + Clone>(
+    ds: &Dataset,
+    name: &str,
+) -> Result<Option<(Vec<usize>, Vec<T>)>, String> {
+    let cname = std::ffi::CString::new(name).map_err(|e| e.to_string())?;
+    let ftype = TypeId(unsafe { h5d::H5Dget_type(ds.id()) });
+    if ftype.0 < 0 {
+        return Err(format!("HDF5: cannot get the type of {}", ds.name()));
+    }
+    let k = unsafe { h5t::H5Tget_member_index(ftype.0, cname.as_ptr()) };
+    if k < 0 {
+        return Ok(None);
+    }
+    let mtype = TypeId(unsafe { h5t::H5Tget_member_type(ftype.0, k as u32) });
+    let mut dims: Vec<usize> = Vec::new();
+    if unsafe { h5t::H5Tget_class(mtype.0) } == h5t::H5T_class_t::H5T_ARRAY {
+        let nd = unsafe { h5t::H5Tget_array_ndims(mtype.0) };
+        let mut d = vec![0 as hsize_t; nd.max(0) as usize];
+        unsafe { h5t::H5Tget_array_dims2(mtype.0, d.as_mut_ptr()) };
+        dims = d.into_iter().map(|n| n as usize).collect();
+    }
+    let per: usize = dims.iter().product();
+    let base = Datatype::from_type::<T>().map_err(|e| e.to_string())?;
+    let elem = if dims.is_empty() {
+        TypeId(unsafe { h5t::H5Tcopy(base.id()) })
+    } else {
+        let d: Vec<hsize_t> = dims.iter().map(|&n| n as hsize_t).collect();
+        TypeId(unsafe { h5t::H5Tarray_create2(base.id(), d.len() as u32, d.as_ptr()) })
+    };
+    let size = std::mem::size_of::<T>() * per;
+    let mem = TypeId(unsafe { h5t::H5Tcreate(h5t::H5T_class_t::H5T_COMPOUND, size) });
+    if elem.0 < 0 || mem.0 < 0 || unsafe { h5t::H5Tinsert(mem.0, cname.as_ptr(), 0, elem.0) } < 0 {
+        return Err(format!("HDF5: cannot make the type to read {name}"));
+    }
+    let n = ds.shape().first().copied().unwrap_or(0);
+    let mut out = vec![T::default(); n * per];
+    if n > 0 {
+        let rc = unsafe {
+            h5d::H5Dread(
+                ds.id(),
+                mem.0,
+                h5s::H5S_ALL,
+                h5s::H5S_ALL,
+                h5p::H5P_DEFAULT,
+                out.as_mut_ptr().cast(),
+            )
+        };
+        if rc < 0 {
+            return Err(format!("HDF5: reading {name} of {} failed", ds.name()));
+        }
+    }
+    Ok(Some((dims, out)))
 }

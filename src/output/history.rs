@@ -1,44 +1,50 @@
 //! Time histories (`/th` in the run file), sampled every /TFILE period.
 //!
 //! One row per sample, the same on every rank (partial sums are added with
-//! one all-reduce). Each table is one extendible dataset whose last
-//! dimension is named by its `columns` attribute (comma-separated), so that
-//! appending rows costs a few collective operations, not one per quantity:
+//! one all-reduce). All of a sample is one record of the extendible table
+//! `/th/rows [T]`, whose members h5py and numpy read by name
+//! (`f["th/rows"]["parts"]` is a `[T, P, 3]` array), so that appending the
+//! rows gathered since the last state is one extension and one write, not
+//! one per quantity. The columns of each member are named by the attribute
+//! of `/th/rows` with the member's name (comma-separated); the ids of the
+//! objects of a per-object member are in `/th/<member>/id`. A member whose
+//! table has no objects (no interfaces, say) is left out of the record.
 //!
-//! - `/th/time [T]`, `/th/cycle [T]`;
-//! - `/th/global [T, 10]`: the time step, the listing's columns — internal
+//! - `time`, `cycle`;
+//! - `global [10]`: the time step, the listing's columns — internal
 //!   energy (without the hourglass energy, as Radioss lists it), translational and rotational kinetic energy,
 //!   external work and the energy error in % (as the listing computes
 //!   them) — and the hourglass energy, plastic work, rigid-wall work and
 //!   contact energy (`GLOBAL_COLUMNS`);
-//! - `/th/parts/values [T, P, 3]` (ids in `/th/parts/id`): per part, its
+//! - `parts [P, 3]` (ids in `/th/parts/id`): per part, its
 //!   elements' internal energy (without hourglass); kinetic energy Σ_e Σ_corners ½·(m_e/n)·|v|²
 //!   and mass Σ m_e over its elements not deleted, with the element mass
 //!   m_e = ρ·t·A (shells), ρ·V (solids), the property mass (springs) taken
 //!   on the initial geometry, as the starter's part masses;
-//! - `/th/interfaces/values [T, I, 13]`: normal and tangential force
+//! - `interfaces [I, 13]`: normal and tangential force
 //!   resultants (x, y, z) and contact energy, as the contact code passes
 //!   them in (`InterfaceSample`), then for the tied interfaces (/INTER/TYPE2,
 //!   after the contact interfaces) the resultants of the forces and of the
 //!   moments their secondary nodes passed to the main nodes in the sampled
 //!   cycle, Σ F_s and Σ M_s (0 for the other types; the contact columns are 0
 //!   for TYPE2, whose energy is 0: the tie does no work);
-//! - `/th/rigid_walls/values [T, W, 3]`: the force the nodes put on each
+//! - `rigid_walls [W, 3]`: the force the nodes put on each
 //!   wall in the sampled cycle;
-//! - `/th/nodes/values [T, M, 9]` for the /TH/NODE nodes: displacement
+//! - `nodes [M, 9]` for the /TH/NODE nodes: displacement
 //!   u = x − x0, velocity at the half step, acceleration (f_ext − f_int)/m
 //!   at the sample (0 on a fixed degree of freedom).
 //!
 //! Rows are kept in memory and appended to the file at each state (and at
 //! the end), so the file is written a few times per run, not at every sample.
 
+use super::h5::Member;
 use super::{Context, LoopState};
 use crate::deck::{ElementKind, PropertyKind};
 use crate::model::geometry::{hexa_volume, quad_area, tetra_volume, triangle_area};
 use crate::solver::blocks::Block;
 use serde::{Deserialize, Serialize};
 
-/// Columns of `/th/global`.
+/// Columns of the `global` member of `/th/rows`.
 pub const GLOBAL_COLUMNS: [&str; 10] = [
     "time_step",
     "internal_energy",
@@ -51,9 +57,9 @@ pub const GLOBAL_COLUMNS: [&str; 10] = [
     "rigid_wall_work",
     "contact_energy",
 ];
-/// Columns of `/th/parts/values`.
+/// Columns of the `parts` member.
 pub const PART_COLUMNS: [&str; 3] = ["internal_energy", "kinetic_energy", "mass"];
-/// Columns of `/th/interfaces/values`.
+/// Columns of the `interfaces` member.
 pub const INTERFACE_COLUMNS: [&str; 13] = [
     "normal_force_x",
     "normal_force_y",
@@ -71,9 +77,9 @@ pub const INTERFACE_COLUMNS: [&str; 13] = [
 ];
 /// Values per interface and sample (`INTERFACE_COLUMNS`).
 pub const IW: usize = INTERFACE_COLUMNS.len();
-/// Columns of `/th/rigid_walls/values`.
+/// Columns of the `rigid_walls` member.
 pub const WALL_COLUMNS: [&str; 3] = ["force_x", "force_y", "force_z"];
-/// Columns of `/th/nodes/values`.
+/// Columns of the `nodes` member.
 pub const NODE_COLUMNS: [&str; 9] = [
     "displacement_x",
     "displacement_y",
@@ -104,6 +110,33 @@ impl ThLayout {
             + IW * self.interfaces
             + 3 * self.walls
             + 9 * self.nodes
+    }
+
+    /// The per-object members of a row: (name, number of objects, their
+    /// columns), in the order of the values.
+    pub fn tables(&self) -> [(&'static str, usize, &'static [&'static str]); 4] {
+        [
+            ("parts", self.parts, &PART_COLUMNS),
+            ("interfaces", self.interfaces, &INTERFACE_COLUMNS),
+            ("rigid_walls", self.walls, &WALL_COLUMNS),
+            ("nodes", self.nodes, &NODE_COLUMNS),
+        ]
+    }
+
+    /// The members of a `/th/rows` record, in the order of the values (the
+    /// cycle second): tables without objects are left out.
+    pub fn members(&self) -> Vec<(&'static str, Member)> {
+        let mut m = vec![
+            ("time", Member::F64),
+            ("cycle", Member::U64),
+            ("global", Member::F64Array(vec![GLOBAL_COLUMNS.len()])),
+        ];
+        for (name, n, cols) in self.tables() {
+            if n > 0 {
+                m.push((name, Member::F64Array(vec![n, cols.len()])));
+            }
+        }
+        m
     }
 }
 

@@ -21,7 +21,14 @@ pub fn open(path: &Path) -> Result<(File, String), String> {
         )
     })?;
     let fmt = attr(&f, "format");
-    if fmt != "crashsim-run 1" && fmt != super::restart::FORMAT {
+    if fmt == "crashsim-run 1" {
+        return Err(format!(
+            "{}: a run file of format 'crashsim-run 1', written by an older crashsim: expected format '{}' (run the deck again)",
+            path.display(),
+            super::runfile::FORMAT
+        ));
+    }
+    if fmt != super::runfile::FORMAT && fmt != super::restart::FORMAT {
         return Err(format!(
             "{}: an HDF5 file without crashsim's 'format' attribute (found '{fmt}'): expected a run file DIR/NAME.h5 written by crashsim run",
             path.display()
@@ -147,9 +154,8 @@ pub fn report(path: &Path) -> Result<String, String> {
     for (n, t, c) in &states {
         let _ = writeln!(s, "  /states/{n}   t = {t:.6e} {ut}   cycle {c}");
     }
-    let times = f
-        .dataset("th/time")
-        .and_then(|d| d.read_raw::<f64>())
+    let times = super::runfile::read_th(&f, "time")
+        .map(|(_, v)| v)
         .unwrap_or_default();
     match (times.first(), times.last()) {
         (Some(a), Some(b)) => {
@@ -166,9 +172,11 @@ pub fn report(path: &Path) -> Result<String, String> {
     use super::history::{
         GLOBAL_COLUMNS, INTERFACE_COLUMNS, NODE_COLUMNS, PART_COLUMNS, WALL_COLUMNS,
     };
+    let _ = writeln!(s, "  /th/rows [T] records, member by member:");
+    let _ = writeln!(s, "    time, cycle");
     let _ = writeln!(
         s,
-        "  /th/global [T, {}]: {}",
+        "    global [{}]: {}",
         GLOBAL_COLUMNS.len(),
         GLOBAL_COLUMNS.join(", ")
     );
@@ -179,9 +187,13 @@ pub fn report(path: &Path) -> Result<String, String> {
         ("nodes", "nodes", &NODE_COLUMNS[..]),
     ] {
         let id = ids(&f, &format!("th/{name}/id"));
+        if id.is_empty() {
+            let _ = writeln!(s, "    {name}: none (no {what})");
+            continue;
+        }
         let _ = writeln!(
             s,
-            "  /th/{name}/values [T, {}, {}]: {} {what}{} — {}",
+            "    {name} [{}, {}]: {} {what}{} — {}",
             id.len(),
             cols.len(),
             id.len(),

@@ -158,6 +158,8 @@ pub struct Output {
     /// CPU time of the calling thread in the hooks (seconds): on a loaded
     /// machine a steadier measure of what output costs than wall time.
     cpu: f64,
+    /// In `finish`: the last state is followed by the close.
+    finishing: bool,
 }
 
 /// CPU time of the calling thread, in seconds.
@@ -224,6 +226,7 @@ impl Output {
             vote: world.stop_vote(),
             spent: std::time::Duration::ZERO,
             cpu: 0.0,
+            finishing: false,
         };
         if !ctx.opts.no_run_file {
             // Continue the run file of the run being restarted when it is there.
@@ -314,6 +317,11 @@ impl Output {
         self.pending.clear();
         f.write_state(ctx, self.states.len(), s, s.contact_force)
             .map_err(input)?;
+        // The file is complete on disk after each state; at the end the
+        // close that follows does it.
+        if !self.finishing {
+            f.checkpoint().map_err(input)?;
+        }
         self.states.push((*s.t, *s.cycle));
         if self.rank == 0 {
             let list: Vec<(usize, f64)> = self.states.iter().map(|st| st.0).enumerate().collect();
@@ -398,6 +406,7 @@ impl Output {
         let cpu_before = self.cpu;
         self.vote.complete();
         self.progress.finish();
+        self.finishing = true;
         self.outputs(ctx, s, true)?;
         if let Some(f) = &mut self.file {
             f.append_th(&self.pending).map_err(input)?;

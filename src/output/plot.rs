@@ -80,17 +80,9 @@ struct Panel {
     curves: Vec<Curve>,
 }
 
-fn read(f: &File, path: &str, file: &Path) -> Result<(Vec<usize>, Vec<f64>), String> {
-    let d = f.dataset(path).map_err(|_| {
-        format!(
-            "{}: no dataset {path}: expected a run file with time histories",
-            file.display()
-        )
-    })?;
-    let v = d
-        .read_raw::<f64>()
-        .map_err(|e| format!("{}: {path}: {e}", file.display()))?;
-    Ok((d.shape(), v))
+/// Member `name` of the run file's `/th/rows`, as `[T, dims...]` and values.
+fn read(f: &File, name: &str, file: &Path) -> Result<(Vec<usize>, Vec<f64>), String> {
+    super::runfile::read_th(f, name).map_err(|e| format!("{}: {name}: {e}", file.display()))
 }
 
 fn ids(f: &File, path: &str) -> Vec<u64> {
@@ -120,12 +112,12 @@ fn column(shape: &[usize], v: &[f64], c: usize, cols: std::ops::Range<usize>) ->
         .collect()
 }
 
-/// Column `name` of `/th/global`.
+/// Column `name` of the `global` member of `/th/rows`.
 fn global(shape: &[usize], v: &[f64], name: &str) -> Vec<f64> {
     let k = super::history::GLOBAL_COLUMNS
         .iter()
         .position(|&c| c == name)
-        .expect("a /th/global column");
+        .expect("a global time-history column");
     let w = shape.get(1).copied().unwrap_or(0);
     (0..shape[0])
         .map(|i| {
@@ -141,7 +133,7 @@ fn global(shape: &[usize], v: &[f64], name: &str) -> Vec<f64> {
 /// Draws `what` from `input` into `out` (PNG).
 pub fn plot(input: &Path, out: &Path, what: &What) -> Result<(), String> {
     let (f, fmt) = open(input)?;
-    if fmt != "crashsim-run 1" {
+    if fmt != super::runfile::FORMAT {
         return Err(format!(
             "{}: a restart file: expected a run file DIR/NAME.h5 (the one beside NAME.xdmf)",
             input.display()
@@ -154,7 +146,7 @@ pub fn plot(input: &Path, out: &Path, what: &What) -> Result<(), String> {
     );
     let energy = format!("energy [{um}·{ul}²/{ut}²]");
     let force = format!("force [{um}·{ul}/{ut}²]");
-    let (_, time) = read(&f, "th/time", input)?;
+    let (_, time) = read(&f, "time", input)?;
     if time.is_empty() {
         return Err(format!(
             "{}: no time-history samples to plot",
@@ -165,7 +157,7 @@ pub fn plot(input: &Path, out: &Path, what: &What) -> Result<(), String> {
     let mut panels = Vec::new();
     match what {
         What::Energies => {
-            let (gs, gv) = read(&f, "th/global", input)?;
+            let (gs, gv) = read(&f, "global", input)?;
             let mut curves = Vec::new();
             for (name, label) in [
                 ("internal_energy", "internal"),
@@ -210,7 +202,7 @@ pub fn plot(input: &Path, out: &Path, what: &What) -> Result<(), String> {
         }
         What::Parts => {
             let pid = ids(&f, "th/parts/id");
-            let (shape, v) = read(&f, "th/parts/values", input)?;
+            let (shape, v) = read(&f, "parts", input)?;
             for (k, label) in [(0, "internal energy"), (1, "kinetic energy")] {
                 let curves = (0..pid.len())
                     .map(|p| Curve {
@@ -227,7 +219,7 @@ pub fn plot(input: &Path, out: &Path, what: &What) -> Result<(), String> {
         }
         What::Interfaces => {
             let iid = ids(&f, "th/interfaces/id");
-            let (sh, vals) = read(&f, "th/interfaces/values", input)?;
+            let (sh, vals) = read(&f, "interfaces", input)?;
             let mut curves = Vec::new();
             for (i, id) in iid.iter().enumerate() {
                 curves.push(Curve {
@@ -281,7 +273,7 @@ pub fn plot(input: &Path, out: &Path, what: &What) -> Result<(), String> {
                     }
                 ));
             };
-            let (shape, v) = read(&f, "th/nodes/values", input)?;
+            let (shape, v) = read(&f, "nodes", input)?;
             for (o, label, unit) in [
                 (0, "displacement", ul.clone()),
                 (3, "velocity", format!("{ul}/{ut}")),

@@ -3,7 +3,7 @@
 //!
 //! ```text
 //! /                      attributes: deck, title, units_mass, units_length, units_time,
-//!                        crashsim_version, ranks, format ("crashsim-run 1")
+//!                        crashsim_version, ranks, format (`FORMAT`)
 //! /mesh/node_ids         [N]      u64   node ids, global (id) order
 //! /mesh/coordinates      [N,3]    f64   initial coordinates
 //! /mesh/<kind>/          one group per element kind present (shell4, shell3, brick8, tetra4, spring)
@@ -17,9 +17,10 @@
 //! /states/NNNN/          at t = 0, every /ANIM/DT time and the last cycle; attributes time, cycle
 //!     coordinates, displacement, velocity, contact_force   [N,3] f64
 //!     <kind>/von_mises, plastic_strain, thickness (shells) [E] f64, deleted [E] u8
-//! /th/                   time histories: time, cycle, global [T,10], parts/values [T,P,3],
-//!                        interfaces/values [T,I,13], rigid_walls/values [T,W,3],
-//!                        nodes/values [T,M,9] (see `history`; a `columns` attribute names the last axis)
+//! /th/rows               [T] records: time, cycle, global [10], parts [P,3], interfaces [I,13],
+//!                        rigid_walls [W,3], nodes [M,9] (see `history`; the attribute named
+//!                        after a member names its columns)
+//! /th/<table>/id         ids of the parts, interfaces, rigid walls and /TH/NODE nodes
 //! ```
 //!
 //! Rows are in global order whatever the partition: the file is the same
@@ -36,7 +37,36 @@ use crate::deck::{ElementKind, Elements, MaterialLaw};
 use crate::model::NO_NODE;
 use crate::solver::blocks::ElemOut;
 use hdf5::types::VarLenUnicode;
-use hdf5::{Dataset, File, Group, H5Type, SimpleExtents};
+use hdf5::{Dataset, File, Group, H5Type};
+
+/// The `format` attribute of a run file. Format 1 (before November 2026)
+/// had one `/th` dataset per table.
+pub const FORMAT: &str = "crashsim-run 2";
+
+/// The time-history member `name` of a run file's `/th/rows` (`time`,
+/// `global`, `parts`, ...) as `[T, dims...]` and its values, row after row;
+/// `[T, 0]` and no values when the records have no such member (a table
+/// without objects).
+pub fn read_th(f: &File, name: &str) -> Result<(Vec<usize>, Vec<f64>), String> {
+    let ds = f
+        .dataset("th/rows")
+        .map_err(|_| "no dataset /th/rows: expected a run file with time histories".to_string())?;
+    let t = ds.shape().first().copied().unwrap_or(0);
+    let read = if name == "cycle" {
+        h5::read_member::<u64>(&ds, name)?
+            .map(|(d, v)| (d, v.into_iter().map(|c| c as f64).collect()))
+    } else {
+        h5::read_member::<f64>(&ds, name)?
+    };
+    Ok(match read {
+        Some((dims, v)) => {
+            let mut shape = vec![t];
+            shape.extend(dims);
+            (shape, v)
+        }
+        None => (vec![t, 0], Vec::new()),
+    })
+}
 
 /// The name of an element kind's group.
 pub fn kind_name(k: ElementKind) -> &'static str {
@@ -85,20 +115,22 @@ fn err(path: &std::path::Path, e: impl std::fmt::Display) -> String {
     format!("{}: {e}", path.display())
 }
 
-/// An extendible dataset `[0, rest...]` (time histories), chunked along time.
-fn growing<T: H5Type>(loc: &Group, name: &str, rest: &[usize]) -> Result<Dataset, String> {
-    let mut dims = vec![0usize];
-    dims.extend_from_slice(rest);
-    let mut chunk = vec![256usize];
-    chunk.extend(rest.iter().map(|&d| d.max(1)));
-    loc.new_dataset::<T>()
-        .shape(SimpleExtents::resizable(dims))
-        .chunk(chunk)
-        // Every row is written: no fill values (in parallel they cost a
-        // collective write of each new chunk).
-        .fill_time(hdf5::dataset::FillTime::Never)
-        .create(name)
-        .map_err(|e| format!("HDF5: cannot create {name}: {e}"))
+/// Opens `path` for writing with the access property list `fapl` as it is.
+/// (The `hdf5` crate's builder reads every property of a list and sets it
+/// again on a new one, duplicating the MPI communicator each time: most of
+/// what reopening the file after each state cost.)
+fn open_rw(path: &std::path::Path, fapl: &hdf5::plist::FileAccess) -> Result<File, String> {
+    let name = path
+        .to_str()
+        .and_then(|p| std::ffi::CString::new(p).ok())
+        .ok_or_else(|| err(path, "a path that is not UTF-8 text"))?;
+    let id =
+        unsafe { hdf5_sys::h5f::H5Fopen(name.as_ptr(), hdf5_sys::h5f::H5F_ACC_RDWR, fapl.id()) };
+    if id < 0 {
+        return Err(err(path, "cannot reopen the run file"));
+    }
+    // SAFETY: `id` is a new file id; the handle takes its reference.
+    unsafe { hdf5::from_id::<File>(id) }.map_err(|e| err(path, e))
 }
 
 fn attr_str(loc: &hdf5::Location, name: &str, value: &str) -> Result<(), String> {
@@ -134,7 +166,9 @@ pub struct RunFile {
     n_nodes: usize,
     kinds: Vec<KindRows>,
     th: ThLayout,
-    /// Rows already in the /th datasets.
+    /// The record type of `/th/rows`.
+    th_type: h5::TypeId,
+    /// Rows already in `/th/rows`.
     pub th_rows: usize,
 }
 
@@ -183,6 +217,13 @@ impl RunFile {
             .map_err(|e| err(path, e))?
             .open_rw(path)
             .map_err(|e| err(path, format!("cannot reopen the run file: {e}")))?;
+        let fmt = super::info::attr(&file, "format");
+        if fmt != FORMAT {
+            return Err(err(
+                path,
+                format!("format '{fmt}': expected a run file of format '{FORMAT}' (written by an older crashsim: run the deck from its start)"),
+            ));
+        }
         let n = file
             .dataset("mesh/node_ids")
             .map(|d| d.shape())
@@ -238,6 +279,7 @@ impl RunFile {
             node_local,
             n_nodes: ctx.g.node_ids.len(),
             kinds: kind_rows(ctx, blocks),
+            th_type: h5::record_type(&th.members())?,
             th,
             th_rows: 0,
         })
@@ -259,12 +301,7 @@ impl RunFile {
         if let Some(f) = self.file.take() {
             f.close().map_err(|e| err(&self.path, e))?;
         }
-        let f = File::with_options()
-            .set_access_plist(&self.fapl)
-            .map_err(|e| err(&self.path, e))?
-            .open_rw(&self.path)
-            .map_err(|e| err(&self.path, format!("cannot reopen the run file: {e}")))?;
-        self.file = Some(f);
+        self.file = Some(open_rw(&self.path, &self.fapl)?);
         Ok(())
     }
 
@@ -313,7 +350,7 @@ impl RunFile {
     ) -> Result<(), String> {
         let g = ctx.g;
         let root: &hdf5::Location = self.f();
-        attr_str(root, "format", "crashsim-run 1")?;
+        attr_str(root, "format", FORMAT)?;
         attr_str(root, "deck", &g.name)?;
         attr_str(root, "title", &g.title)?;
         attr_str(root, "units_mass", &g.units.mass)?;
@@ -426,7 +463,9 @@ impl RunFile {
         Ok(())
     }
 
-    /// Writes `/states/NNNN` (collective) and makes the file complete on disk.
+    /// Writes `/states/NNNN` (collective); `checkpoint` or the close makes
+    /// it complete on disk. Every handle into the file is closed when this
+    /// returns.
     pub fn write_state(
         &mut self,
         ctx: &Context,
@@ -434,22 +473,10 @@ impl RunFile {
         s: &LoopState,
         contact_force: &[[f64; 3]],
     ) -> Result<(), String> {
-        // Every handle into the file is closed when this returns.
-        self.write_state_data(ctx, index, s, contact_force)?;
-        self.checkpoint()
-    }
-
-    fn write_state_data(
-        &mut self,
-        ctx: &Context,
-        index: usize,
-        s: &LoopState,
-        contact_force: &[[f64; 3]],
-    ) -> Result<(), String> {
         let sd = ctx.sd;
-        let states = self.f().group("states").map_err(|e| e.to_string())?;
-        let grp = states
-            .create_group(&format!("{index:04}"))
+        let grp = self
+            .f()
+            .create_group(&format!("states/{index:04}"))
             .map_err(|e| format!("HDF5: state {index}: {e}"))?;
         attr_num(&grp, "time", *s.t)?;
         attr_num(&grp, "cycle", *s.cycle)?;
@@ -485,80 +512,41 @@ impl RunFile {
     }
 
     fn create_th(&self, ctx: &Context) -> Result<(), String> {
-        use super::history::{
-            GLOBAL_COLUMNS, INTERFACE_COLUMNS, NODE_COLUMNS, PART_COLUMNS, WALL_COLUMNS,
-        };
+        use super::history::GLOBAL_COLUMNS;
         let th = self.f().create_group("th").map_err(|e| e.to_string())?;
-        growing::<f64>(&th, "time", &[])?;
-        growing::<u64>(&th, "cycle", &[])?;
-        let ds = growing::<f64>(&th, "global", &[GLOBAL_COLUMNS.len()])?;
-        attr_str(&ds, "columns", &GLOBAL_COLUMNS.join(","))?;
+        // 256 rows per chunk: a few kilobytes for small models, and few
+        // chunks (each one a B-tree entry) for long runs.
+        let ds = h5::create_record_table(&th, "rows", &self.th_type, 256)?;
+        attr_str(&ds, "global", &GLOBAL_COLUMNS.join(","))?;
         let g = ctx.g;
-        let tables: [(&str, Vec<u64>, &[&str]); 4] = [
-            (
-                "parts",
-                g.parts.iter().map(|p| p.id).collect(),
-                &PART_COLUMNS,
-            ),
-            (
-                "interfaces",
-                ctx.interfaces.iter().map(|i| i.id).collect(),
-                &INTERFACE_COLUMNS,
-            ),
-            (
-                "rigid_walls",
-                g.rigid_walls.iter().map(|w| w.card.id).collect(),
-                &WALL_COLUMNS,
-            ),
-            (
-                "nodes",
-                g.th_nodes.iter().map(|&n| g.node_ids[n as usize]).collect(),
-                &NODE_COLUMNS,
-            ),
+        let ids: [Vec<u64>; 4] = [
+            g.parts.iter().map(|p| p.id).collect(),
+            ctx.interfaces.iter().map(|i| i.id).collect(),
+            g.rigid_walls.iter().map(|w| w.card.id).collect(),
+            g.th_nodes.iter().map(|&n| g.node_ids[n as usize]).collect(),
         ];
-        for (name, ids, cols) in tables {
+        for ((name, _, cols), ids) in self.th.tables().into_iter().zip(ids) {
+            attr_str(&ds, name, &cols.join(","))?;
             let grp = th.create_group(name).map_err(|e| e.to_string())?;
             self.write_table(&grp, "id", &ids)?;
-            let ds = growing::<f64>(&grp, "values", &[ids.len(), cols.len()])?;
-            attr_str(&ds, "columns", &cols.join(","))?;
         }
         Ok(())
     }
 
-    /// The /th datasets with, for each, the values one row holds (the
-    /// cycle, second, is written apart).
-    fn th_datasets(&self) -> Result<Vec<(Dataset, usize)>, String> {
-        let l = &self.th;
-        let names: [(&str, usize); 7] = [
-            ("th/time", 1),
-            ("th/cycle", 1),
-            ("th/global", super::history::GLOBAL_COLUMNS.len()),
-            ("th/parts/values", 3 * l.parts),
-            ("th/interfaces/values", super::history::IW * l.interfaces),
-            ("th/rigid_walls/values", 3 * l.walls),
-            ("th/nodes/values", 9 * l.nodes),
-        ];
-        names
-            .into_iter()
-            .map(|(n, w)| {
-                self.f()
-                    .dataset(n)
-                    .map(|d| (d, w))
-                    .map_err(|e| err(&self.path, format!("{n}: {e}")))
-            })
-            .collect()
+    fn th_table(&self) -> Result<Dataset, String> {
+        self.f()
+            .dataset("th/rows")
+            .map_err(|e| err(&self.path, format!("th/rows: {e}")))
     }
 
     fn truncate_th(&self, rows: usize) -> Result<(), String> {
-        for (ds, _) in self.th_datasets()? {
-            let mut shape = ds.shape();
-            shape[0] = rows;
-            ds.resize(shape).map_err(|e| err(&self.path, e))?;
-        }
-        Ok(())
+        self.th_table()?
+            .resize([rows])
+            .map_err(|e| err(&self.path, e))
     }
 
-    /// Appends time-history rows (replicated on every rank; rank 0 writes).
+    /// Appends time-history rows (replicated on every rank): every rank
+    /// extends `/th/rows` (collective), rank 0 alone writes the records.
     pub fn append_th(&mut self, rows: &[ThRow]) -> Result<(), String> {
         let n_new = rows.len();
         // Every rank learns the count the same way: rows are replicated.
@@ -566,31 +554,21 @@ impl RunFile {
             return Ok(());
         }
         let first = self.th_rows;
-        let sel = Rows::range(first as u64, n_new as u64);
-        let root = self.rank == 0;
-        // Values of one row are laid out dataset after dataset (see
-        // `ThRow`), the cycle apart. Every rank extends each dataset
-        // (collective); rank 0 alone writes the rows.
-        let mut off = 0usize;
-        for (i, (ds, w)) in self.th_datasets()?.into_iter().enumerate() {
-            let mut shape = ds.shape();
-            shape[0] = first + n_new;
-            ds.resize(shape).map_err(|e| err(&self.path, e))?;
-            if i == 1 {
-                if root {
-                    let data: Vec<u64> = rows.iter().map(|r| r.cycle).collect();
-                    h5::write_rows(&ds, &sel, &data, &self.solo)?;
+        let ds = self.th_table()?;
+        ds.resize([first + n_new]).map_err(|e| err(&self.path, e))?;
+        if self.rank == 0 {
+            // A record is the time, the cycle, then the other values in the
+            // order of the members (`ThLayout::members`).
+            let mut bytes = Vec::with_capacity(n_new * self.th_type.size());
+            for r in rows {
+                bytes.extend_from_slice(&r.values[0].to_ne_bytes());
+                bytes.extend_from_slice(&r.cycle.to_ne_bytes());
+                for v in &r.values[1..] {
+                    bytes.extend_from_slice(&v.to_ne_bytes());
                 }
-                continue;
             }
-            if root && w > 0 {
-                let data: Vec<f64> = rows
-                    .iter()
-                    .flat_map(|r| r.values[off..off + w].iter().copied())
-                    .collect();
-                h5::write_rows(&ds, &sel, &data, &self.solo)?;
-            }
-            off += w;
+            let sel = Rows::range(first as u64, n_new as u64);
+            h5::write_records(&ds, &sel, &bytes, &self.th_type, &self.solo)?;
         }
         self.th_rows = first + n_new;
         Ok(())
