@@ -12,16 +12,6 @@ use common::*;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-fn ok(out: &Output, what: &str) {
-    assert!(
-        out.status.success(),
-        "{what} failed ({:?}):\n{}\n{}",
-        out.status.code(),
-        String::from_utf8_lossy(&out.stdout),
-        String::from_utf8_lossy(&out.stderr)
-    );
-}
-
 /// decks/NAME/NAME_0000.rad.
 fn deck(name: &str) -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
@@ -72,16 +62,6 @@ fn run(np: u32, deck: &Path, dir: &Path, extra: &[&str]) -> Output {
     ];
     args.extend_from_slice(extra);
     run_env(np, &args, &[])
-}
-
-/// Copies the files of a stopped run into a fresh directory.
-fn copy_run(from: &Path, tag: &str) -> PathBuf {
-    let to = scratch(tag);
-    for e in std::fs::read_dir(from).unwrap() {
-        let p = e.unwrap().path();
-        std::fs::copy(&p, to.join(p.file_name().unwrap())).unwrap();
-    }
-    to
 }
 
 struct Case {

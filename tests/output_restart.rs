@@ -9,16 +9,6 @@ use common::*;
 use std::path::{Path, PathBuf};
 use std::process::Output;
 
-fn ok(out: &Output, what: &str) {
-    assert!(
-        out.status.success(),
-        "{what} failed ({:?}):\n{}\n{}",
-        out.status.code(),
-        String::from_utf8_lossy(&out.stdout),
-        String::from_utf8_lossy(&out.stderr)
-    );
-}
-
 /// `crashsim run BOX1BL` on `np` ranks into `dir` with `extra` arguments and environment.
 fn run(np: u32, dir: &Path, extra: &[&str], env: &[(&str, &str)]) -> Output {
     let deck = qa_deck("BOX1BL");
@@ -41,16 +31,6 @@ fn reference(tag: &str) -> (Vec<u8>, PathBuf) {
         "reference run",
     );
     (std::fs::read(fs).unwrap(), dir)
-}
-
-/// Copies the files of a stopped run into a fresh directory.
-fn copy_run(from: &Path, tag: &str) -> PathBuf {
-    let to = scratch(tag);
-    for e in std::fs::read_dir(from).unwrap() {
-        let p = e.unwrap().path();
-        std::fs::copy(&p, to.join(p.file_name().unwrap())).unwrap();
-    }
-    to
 }
 
 /// Restarts from DIR/BOX1BL_rst.h5 on `np` ranks; returns the final state.

@@ -1,7 +1,7 @@
 //! Helpers shared by the integration tests.
 #![allow(dead_code)]
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
 /// `../shared` beside the checkout (CI puts it there), or $CRASHSIM_SHARED.
@@ -107,6 +107,28 @@ pub fn python_check(script: &str, args: &[&std::ffi::OsStr]) -> String {
         String::from_utf8_lossy(&out.stderr)
     );
     String::from_utf8_lossy(&out.stdout).into_owned()
+}
+
+/// Asserts that the command `what` succeeded, showing its output otherwise.
+pub fn ok(out: &Output, what: &str) {
+    assert!(
+        out.status.success(),
+        "{what} failed ({:?}):\n{}\n{}",
+        out.status.code(),
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+/// Copies the files of a (stopped) run's directory into a fresh scratch
+/// directory `tag`.
+pub fn copy_run(from: &Path, tag: &str) -> PathBuf {
+    let to = scratch(tag);
+    for e in std::fs::read_dir(from).unwrap() {
+        let p = e.unwrap().path();
+        std::fs::copy(&p, to.join(p.file_name().unwrap())).unwrap();
+    }
+    to
 }
 
 /// A fresh scratch directory under the system temp dir.
