@@ -138,7 +138,8 @@ pub struct Output {
     rank: u32,
     file: Option<RunFile>,
     h5_path: PathBuf,
-    xdmf_path: PathBuf,
+    /// The XDMF description (written by rank 0).
+    xdmf_file: xdmf::XdmfFile,
     rst_path: PathBuf,
     history: History,
     pending: Vec<ThRow>,
@@ -205,7 +206,7 @@ impl Output {
             rank: world.rank(),
             file: None,
             h5_path: h5_path.clone(),
-            xdmf_path,
+            xdmf_file: xdmf::XdmfFile::new(&xdmf_path),
             rst_path,
             history: History::new(ctx, &[], 0),
             pending: Vec::new(),
@@ -325,7 +326,7 @@ impl Output {
         self.states.push((*s.t, *s.cycle));
         if self.rank == 0 {
             let list: Vec<(usize, f64)> = self.states.iter().map(|st| st.0).enumerate().collect();
-            xdmf::write(&self.xdmf_path, &self.xdmf, &list).map_err(input)?;
+            self.xdmf_file.update(&self.xdmf, &list).map_err(input)?;
         }
         Ok(())
     }

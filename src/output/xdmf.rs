@@ -10,8 +10,10 @@
 //! one element kind a state is a spatial collection of one grid per kind
 //! sharing the same geometry. Paths point into `NAME.h5` beside it.
 //!
-//! Rank 0 rewrites the whole file in place after each state (a few
-//! kilobytes; see `write` for why not through a rename or a truncation).
+//! Rank 0 appends each state's grid as it is written (`XdmfFile`): the
+//! closing tags are overwritten by the new grid and written again after it,
+//! so the file is complete after every state and a state costs the same
+//! whatever the number of states before it.
 
 use crate::deck::ElementKind;
 use std::fmt::Write as _;
@@ -69,10 +71,11 @@ fn attribute(
     let _ = writeln!(out, "{indent}</Attribute>");
 }
 
-/// The XDMF text for the states `(index, time)`.
-pub fn render(m: &XdmfModel, states: &[(usize, f64)]) -> String {
-    let h5 = &m.h5_name;
-    let n = m.n_nodes;
+/// The closing tags of the temporal collection and of the document.
+const TAIL: &str = "    </Grid>\n  </Domain>\n</Xdmf>\n";
+
+/// The document up to the temporal collection's first grid.
+fn head(m: &XdmfModel) -> String {
     let mut s = String::new();
     s.push_str("<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n  <Domain>\n");
     let _ = writeln!(
@@ -80,8 +83,16 @@ pub fn render(m: &XdmfModel, states: &[(usize, f64)]) -> String {
         "    <Grid Name=\"{}\" GridType=\"Collection\" CollectionType=\"Temporal\">",
         xml(&m.name)
     );
+    s
+}
+
+/// The grid of state `idx` at `time`.
+fn grid(m: &XdmfModel, idx: usize, time: f64) -> String {
+    let h5 = &m.h5_name;
+    let n = m.n_nodes;
+    let mut s = String::new();
     let spatial = m.kinds.len() > 1;
-    for &(idx, time) in states {
+    {
         let st = format!("/states/{idx:04}");
         let mut ind = "      ".to_string();
         if spatial {
@@ -205,7 +216,6 @@ pub fn render(m: &XdmfModel, states: &[(usize, f64)]) -> String {
             let _ = writeln!(s, "      </Grid>");
         }
     }
-    s.push_str("    </Grid>\n  </Domain>\n</Xdmf>\n");
     s
 }
 
@@ -216,20 +226,68 @@ fn xml(s: &str) -> String {
         .replace('"', "&quot;")
 }
 
-/// Writes the description (rank 0 only). The file is overwritten from its
-/// start and then cut to length, not truncated first: ext4 flushes a file
-/// that was truncated to zero and rewritten when it is closed (its
-/// `auto_da_alloc` safeguard), half a millisecond per state here.
-pub fn write(path: &Path, m: &XdmfModel, states: &[(usize, f64)]) -> Result<(), String> {
-    use std::io::Write;
-    let text = render(m, states);
-    let e = |e: std::io::Error| format!("{}: cannot write the XDMF file: {e}", path.display());
-    let mut f = std::fs::OpenOptions::new()
-        .write(true)
-        .create(true)
-        .truncate(false)
-        .open(path)
-        .map_err(e)?;
-    f.write_all(text.as_bytes()).map_err(e)?;
-    f.set_len(text.len() as u64).map_err(e)
+/// The description on disk (rank 0 only), brought up to date state by
+/// state. It is written in place, never truncated to zero first: ext4
+/// flushes a file that was truncated and rewritten when it is closed (its
+/// `auto_da_alloc` safeguard).
+pub struct XdmfFile {
+    path: std::path::PathBuf,
+    file: Option<std::fs::File>,
+    /// Where the closing tags start.
+    end: u64,
+    /// States in the file.
+    states: usize,
+}
+
+impl XdmfFile {
+    pub fn new(path: &Path) -> XdmfFile {
+        XdmfFile {
+            path: path.to_path_buf(),
+            file: None,
+            end: 0,
+            states: 0,
+        }
+    }
+
+    /// Makes the file describe `states`: the first call writes the whole
+    /// document (a restarted run lists the states it keeps), later ones
+    /// append the states that are new.
+    pub fn update(&mut self, m: &XdmfModel, states: &[(usize, f64)]) -> Result<(), String> {
+        use std::io::{Seek, SeekFrom, Write};
+        let e =
+            |e: std::io::Error| format!("{}: cannot write the XDMF file: {e}", self.path.display());
+        let (text, at) = match &self.file {
+            Some(_) if states.len() >= self.states => {
+                let mut t = String::new();
+                for &(idx, time) in &states[self.states..] {
+                    t.push_str(&grid(m, idx, time));
+                }
+                (t, self.end)
+            }
+            _ => {
+                let f = std::fs::OpenOptions::new()
+                    .write(true)
+                    .create(true)
+                    .truncate(false)
+                    .open(&self.path)
+                    .map_err(e)?;
+                self.file = Some(f);
+                let mut t = head(m);
+                for &(idx, time) in states {
+                    t.push_str(&grid(m, idx, time));
+                }
+                (t, 0)
+            }
+        };
+        let f = self.file.as_mut().expect("opened above");
+        f.seek(SeekFrom::Start(at)).map_err(e)?;
+        f.write_all(text.as_bytes()).map_err(e)?;
+        f.write_all(TAIL.as_bytes()).map_err(e)?;
+        self.end = at + text.len() as u64;
+        if at == 0 {
+            f.set_len(self.end + TAIL.len() as u64).map_err(e)?;
+        }
+        self.states = states.len();
+        Ok(())
+    }
 }
