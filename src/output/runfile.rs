@@ -117,8 +117,8 @@ fn err(path: &std::path::Path, e: impl std::fmt::Display) -> String {
 
 /// Opens `path` for writing with the access property list `fapl` as it is.
 /// (The `hdf5` crate's builder reads every property of a list and sets it
-/// again on a new one, duplicating the MPI communicator each time: most of
-/// what reopening the file after each state cost.)
+/// again on a new one, duplicating the MPI communicator, a collective, at
+/// each of the reopenings after a state.)
 fn open_rw(path: &std::path::Path, fapl: &hdf5::plist::FileAccess) -> Result<File, String> {
     let name = path
         .to_str()
@@ -211,12 +211,7 @@ impl RunFile {
         n_states: usize,
         th_rows: usize,
     ) -> Result<RunFile, String> {
-        let fapl = ctx.world.hdf5_mpio_access()?;
-        let file = File::with_options()
-            .set_access_plist(&fapl)
-            .map_err(|e| err(path, e))?
-            .open_rw(path)
-            .map_err(|e| err(path, format!("cannot reopen the run file: {e}")))?;
+        let file = open_rw(path, &ctx.world.hdf5_mpio_access()?)?;
         let fmt = super::info::attr(&file, "format");
         if fmt != FORMAT {
             return Err(err(
