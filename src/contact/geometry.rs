@@ -196,6 +196,109 @@ pub fn project(p: V3, x: &[V3; 4], tri: bool) -> Projection {
     }
 }
 
+/// A node within the gap of a segment, as the TYPE7 node-to-segment
+/// penalty sees it (§8.4.5.1, §8.8.10): every one of the quadrangle's four
+/// triangles within the gap contributes, weighted by its own penetration.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Blend {
+    /// Penetration: the largest of the triangles' P_i = Gap − d_i.
+    pub pen: f64,
+    /// Unit direction the normal force pushes the node: Σ P_i·u_i normalised,
+    /// u_i the unit vector from triangle i's closest point to the node.
+    pub dir: V3,
+    /// Shape functions on the segment's nodes: the triangles' barycentric
+    /// weights averaged with weights P_i, the centre's share spread equally
+    /// over the four nodes. They sum to one; Σ N_k·x_k is the P-weighted mean
+    /// of the triangles' closest points.
+    pub shape: [f64; 4],
+    /// Σ N_k·x_k.
+    pub point: V3,
+    /// Unit normal of the segment.
+    pub normal: V3,
+}
+
+/// The node's contact with a segment within `gap` (None when no point of the
+/// segment is closer than the gap, or when the node lies on the segment,
+/// where it is deactivated, §8.8.11.1).
+///
+/// A 3-node segment is one triangle. A quadrangle is split around its centre
+/// into four triangles (§8.4.5.1); each triangle i within the gap gives
+/// P_i = Gap − d_i, with d_i the node's distance to it. The penetration is
+/// max P_i, the force direction Σ P_i·u_i (normalised) and the shape
+/// functions the P-weighted mean of the triangles'. On a flat segment away
+/// from its diagonals this is the closest triangle's projection; near a
+/// diagonal or the centre the neighbouring triangles' edges tilt the force,
+/// so that the reaction varies continuously as the node slides across them.
+pub fn blend(p: V3, x: &[V3; 4], tri: bool, gap: f64) -> Option<Blend> {
+    let normal = segment_normal(x, tri);
+    let eps = 1e-10 * gap;
+    if tri {
+        let pr = project(p, x, true);
+        if pr.dist >= gap || pr.dist < eps {
+            return None;
+        }
+        return Some(Blend {
+            pen: gap - pr.dist,
+            dir: pr.dir,
+            shape: pr.shape,
+            point: pr.point,
+            normal,
+        });
+    }
+    let c = scale(add(add(x[0], x[1]), add(x[2], x[3])), 0.25);
+    let mut pen = 0.0f64;
+    let mut sum_p = 0.0;
+    let mut n = [0.0; 3];
+    let mut h = [0.0; 4];
+    let mut hc = 0.0;
+    let mut closest: Option<(f64, V3)> = None;
+    for i in 0..4 {
+        let j = (i + 1) % 4;
+        let l = closest_on_triangle(p, c, x[i], x[j]);
+        let q = add(add(scale(c, l[0]), scale(x[i], l[1])), scale(x[j], l[2]));
+        let d = sub(p, q);
+        let di = norm(d);
+        if di < eps {
+            return None;
+        }
+        if closest.as_ref().is_none_or(|b| di < b.0) {
+            closest = Some((di, d));
+        }
+        let pi = gap - di;
+        if pi <= 0.0 {
+            continue;
+        }
+        pen = pen.max(pi);
+        sum_p += pi;
+        n = add(n, scale(d, pi / di));
+        hc += pi * l[0];
+        h[i] += pi * l[1];
+        h[j] += pi * l[2];
+    }
+    if sum_p <= 0.0 {
+        return None;
+    }
+    let ln = norm(n);
+    let dir = if ln > 1e-12 * sum_p {
+        scale(n, 1.0 / ln)
+    } else {
+        // The triangles' pushes cancel (a node exactly between two folded
+        // halves): the closest triangle's direction.
+        let (di, d) = closest.expect("four triangles");
+        scale(d, 1.0 / di)
+    };
+    let inv = 1.0 / sum_p;
+    let shape = [0, 1, 2, 3].map(|k| (0.25 * hc + h[k]) * inv);
+    let point = interpolate(&shape, x);
+    Some(Blend {
+        pen,
+        dir,
+        shape,
+        point,
+        normal,
+    })
+}
+
 /// Six times the signed volume of tetrahedron (a, b, c, p): positive when p is
 /// on the side the normal (b − a) × (c − a) points to (§8.6.6.3).
 pub fn tetra_volume6(a: V3, b: V3, c: V3, p: V3) -> f64 {
@@ -309,6 +412,48 @@ mod tests {
         let c = project([-0.3, -0.4, 0.0], &x, false);
         assert!((c.dist - 0.5).abs() < 1e-14);
         assert!((c.shape[0] - 1.0).abs() < 1e-15);
+    }
+
+    /// Away from the diagonals of a flat quadrangle the blend is the closest
+    /// point's projection; above the centre, offset along x, the
+    /// neighbouring triangles' edges tilt the push towards +x.
+    #[test]
+    fn blend_is_the_projection_inside_a_triangle_and_tilts_near_the_centre() {
+        let x = [
+            [-1.0, -1.0, 0.0],
+            [1.0, -1.0, 0.0],
+            [1.0, 1.0, 0.0],
+            [-1.0, 1.0, 0.0],
+        ];
+        let gap = 0.1;
+        let p = [0.6, 0.1, 0.05];
+        let b = blend(p, &x, false, gap).unwrap();
+        let q = project(p, &x, false);
+        assert!((b.pen - (gap - q.dist)).abs() < 1e-15);
+        for k in 0..3 {
+            assert!((b.dir[k] - q.dir[k]).abs() < 1e-15);
+            assert!((b.point[k] - q.point[k]).abs() < 1e-15);
+        }
+        for k in 0..4 {
+            assert!((b.shape[k] - q.shape[k]).abs() < 1e-15);
+        }
+        // Above the centre, 0.02 along +x, 0.05 up: the triangle below gives
+        // P = 0.05, its two neighbours (edges at 0.02/√2) and the opposite one
+        // (the centre, at 0.02) less, all pushing towards +x.
+        let p = [0.02, 0.0, 0.05];
+        let b = blend(p, &x, false, gap).unwrap();
+        assert!((b.pen - 0.05).abs() < 1e-15);
+        assert!(b.dir[0] > 0.05 && b.dir[1].abs() < 1e-15 && b.dir[2] > 0.9);
+        let s: f64 = b.shape.iter().sum();
+        assert!((s - 1.0).abs() < 1e-15);
+        assert!(b.shape.iter().all(|&h| h >= 0.0));
+        let q = interpolate(&b.shape, &x);
+        for k in 0..3 {
+            assert!((q[k] - b.point[k]).abs() < 1e-15);
+        }
+        // Out of the gap, or on the segment: nothing.
+        assert!(blend([0.0, 0.0, 0.2], &x, false, gap).is_none());
+        assert!(blend([0.3, 0.2, 0.0], &x, false, gap).is_none());
     }
 
     #[test]
