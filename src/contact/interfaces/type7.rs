@@ -52,14 +52,15 @@ pub fn pair(p: &Pair, st: &mut PairState) -> Option<PairForce> {
         st.ff = [0.0; 3];
         return None;
     }
-    let Some(pr) = geo::blend(p.xs, p.xm, p.tri, p.gap) else {
+    let pr = geo::project(p.xs, p.xm, p.tri);
+    if pr.dist >= p.gap || pr.dist < 1e-10 * p.gap {
         st.ft = [0.0; 3];
         st.ff = [0.0; 3];
         return None;
-    };
+    }
     let s = geo::dot(geo::sub(p.xs, pr.point), pr.normal);
     st.side = if s >= 0.0 { 1 } else { -1 };
-    let pen = pr.pen;
+    let pen = p.gap - pr.dist;
     let (f_el, kt) = stiffness::type7_reaction(p.k0, p.gap, pen);
     let vc = geo::interpolate(&pr.shape, p.vm);
     let vrel = geo::sub(p.vs, vc);
@@ -90,7 +91,7 @@ pub fn pair(p: &Pair, st: &mut PairState) -> Option<PairForce> {
     }
     let fs = geo::add(geo::scale(pr.dir, f_n), f_t);
     let dt_kin = if dpdt > 0.0 {
-        0.5 * (p.gap - pen) / dpdt
+        0.5 * pr.dist / dpdt
     } else {
         f64::INFINITY
     };
@@ -103,7 +104,7 @@ pub fn pair(p: &Pair, st: &mut PairState) -> Option<PairForce> {
     };
     Some(PairForce {
         fs,
-        shape: without_hourglass(pr.shape, p.tri),
+        shape: pr.shape,
         kt: k_step,
         dt_kin,
         f_n,
@@ -112,28 +113,6 @@ pub fn pair(p: &Pair, st: &mut PairState) -> Option<PairForce> {
         dir: pr.dir,
         point: pr.point,
     })
-}
-
-/// The shape functions the segment nodes take the reaction with: the
-/// contact point's, less their hourglass part (1, −1, 1, −1) as far as no
-/// share turns negative. On a parallelogram the hourglass vector puts no
-/// weight on the point (x1 − x2 + x3 − x4 = 0), so the point and the moment
-/// balance are kept; the reaction no longer excites the segment's hourglass
-/// mode.
-pub fn without_hourglass(mut h: [f64; 4], tri: bool) -> [f64; 4] {
-    if tri {
-        return h;
-    }
-    let h0 = (-0.25 * (h[0] - h[1] + h[2] - h[3]))
-        .min(h[1])
-        .min(h[3])
-        .max(-h[0])
-        .max(-h[2]);
-    h[0] += h0;
-    h[1] -= h0;
-    h[2] += h0;
-    h[3] -= h0;
-    h
 }
 
 /// Coefficient of the normal damper at penetration `pen` (≥ 0) and
