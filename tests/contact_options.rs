@@ -794,9 +794,11 @@ fn node_run(tag: &str, c: &NodeCase, t7: &T7) -> (Run, [f64; 6]) {
 
 /// VISs: critical damping of the contact spring. A 1 kg node dropped at 0.5
 /// mm/ms on the plate (K0 = 105, P ≪ gap: a linear spring) bounces back with
-/// e = exp(−πξ/√(1 − ξ²)), ξ = VISs/√2 (C = VISs·√(2KM)): no damping, e = 1;
-/// VISs 0.05 (default), e = 0.895; more damping, less rebound (the damper
-/// cannot pull, so e stays above the linear value at large VISs).
+/// e = exp(−πξ/√(1 − ξ²)), ξ = VISs/√2 (C = VISs·√(2KM)), less about 1% for
+/// the quadratic damper 0.4²·2M·(dP/dt)/(Gap − P) that acts whatever VISs
+/// while the node closes in: no damping, e ≈ 0.99; VISs 0.05 (default),
+/// e ≈ 0.887; the damper also pulls on the way out, so e follows the linear
+/// value up to critical damping.
 #[test]
 fn viss_damps_the_rebound() {
     let c = NodeCase {
@@ -805,11 +807,11 @@ fn viss_damps_the_rebound() {
     };
     let mut last = f64::INFINITY;
     for (viss, lo, hi) in [
-        (1e-30, 0.999, 1.0001),
-        (0.0, 0.885, 0.905), // the default, 0.05
-        (0.2, 0.6, 0.7),
-        (0.5, 0.3, 0.45),
-        (1.0, 0.1, 0.3),
+        (1e-30, 0.98, 0.995),
+        (0.0, 0.875, 0.895), // the default, 0.05
+        (0.2, 0.6, 0.66),
+        (0.5, 0.28, 0.33),
+        (1.0, 0.02, 0.06),
     ] {
         let (_, s) = node_run(
             &format!("viss{viss}"),
@@ -826,9 +828,7 @@ fn viss_damps_the_rebound() {
         eprintln!("VISs {v}: restitution {e:.5} (linear spring-damper {lin:.5})");
         assert!(e > lo && e < hi, "VISs {v}: e = {e}");
         assert!(e < last, "VISs {v}: more damping, less rebound");
-        if v <= 0.05 {
-            assert!((e - lin).abs() < 0.01, "VISs {v}: e = {e}, linear {lin}");
-        }
+        assert!((e - lin).abs() < 0.015, "VISs {v}: e = {e}, linear {lin}");
         last = e;
     }
 }
@@ -1277,7 +1277,9 @@ fn inacti_5_6_reduce_the_gap() {
     assert!(s5[5] == 0.0 && s5[2] == 0.8 && s6[5] == 0.0 && s6[2] == 0.8);
     // Driven down at 0.1 mm/ms for 1 ms (to z = 0.7), then up at 0.5 for 1 ms
     // (to z = 1.2, out of the nominal gap), then down at 0.5 for 1 ms (to 0.7).
-    // No damping (VISs ~ 0): the force is the elastic reaction alone.
+    // No linear damping (VISs ~ 0): the force is the elastic reaction and,
+    // while the node closes in at v, the quadratic damper 0.4²·2·M·v²/(Gap − P)
+    // (1 kg node: 0.11 at 0.5 mm/ms and 0.7 mm off the plate).
     let driven = NodeCase {
         x0: [0.0, 0.0, 0.8],
         v0: [0.0, 0.0, -0.1],
@@ -1339,7 +1341,7 @@ fn inacti_5_6_reduce_the_gap() {
         // Back at z = 0.7 after leaving the gap: the nominal gap's force.
         assert!((s[2] - 0.7).abs() < 0.01, "z = {}", s[2]);
         let end = r.listing.last(1);
-        let nominal = KM * (1.0 - s[2]) / s[2];
+        let nominal = KM * (1.0 - s[2]) / s[2] + 0.16 * 2.0 * 0.5 * 0.5 / s[2];
         assert!(
             rel(end.normal[2], nominal) < 1e-3,
             "Inacti {inacti}: at the end F = {} expected {nominal}",

@@ -1,6 +1,20 @@
 //! TYPE7 node-to-segment penalty contact (theory manual §8.8): both sides,
-//! edges and corners; F = K0·P·Gap/(Gap − P) + C·dP/dt with C = VISs·√(2·Kt·M)
-//! (EQ. 8.8.9.1, 8.8.3.3); friction by Ifric/Iform/Ifiltr (EQ. 8.8.3.4–5).
+//! edges and corners; F = Ks·P + C·dP/dt with Ks = K0·Gap/(Gap − P) and
+//! C = VISs·√(2·Ks·M) (EQ. 8.8.9.1, 8.8.3.3); friction by Ifric/Iform/Ifiltr
+//! (EQ. 8.8.3.4–5).
+//!
+//! Details as the reference engine applies them (its listing prints them as
+//! "QUADRATIC DAMPING FLAG 0" and "FRICTION CRITICAL DAMPING FACTOR"):
+//! - while the node closes in, the damper works on the tangent stiffness
+//!   Kt = Ks·Gap/(Gap − P) (EQ. 8.8.9.2) rather than Ks, and a quadratic term
+//!   0.4²·2·M·(dP/dt)/(Gap − P) is added to C, so that a fast impact is
+//!   braked before the node reaches the mid-plane;
+//! - the reaction is not cut at zero: on the way out the damper may pull
+//!   (EQ. 8.8.9.1 as written), which takes out the energy the damper of the
+//!   way in did not;
+//! - the friction damper VISF·√(2·K·M) enters the stiffness the nodal time
+//!   step sees as VISF·√(2·K·M)/Δt (with Δt the last step): a node sliding
+//!   under friction is integrated with a step at which that damper is stable.
 
 use super::{PairForce, PairState};
 use crate::contact::friction::{self, FrictionLaw};
@@ -52,16 +66,25 @@ pub fn pair(p: &Pair, st: &mut PairState) -> Option<PairForce> {
     let vrel = geo::sub(p.vs, vc);
     // Penetration rate: the node closing on the contact point.
     let dpdt = -geo::dot(vrel, pr.dir);
-    let c = p.viss * (2.0 * kt * p.ms).sqrt();
-    let f_n = (f_el + c * dpdt).max(0.0);
+    let c = damping(p.viss, p.k0, p.gap, pen, p.ms, dpdt);
+    // Signed: the damper may pull while the node leaves (EQ. 8.8.9.1).
+    let f_n = f_el + c * dpdt;
+    // The stiffness the dampers see: Kt closing in, Ks going out.
+    let kd = if dpdt > 0.0 {
+        kt
+    } else {
+        p.k0 * p.gap / (p.gap - pen)
+    };
     let mut f_t = [0.0; 3];
-    if p.friction.active() && f_n > 0.0 {
+    if p.friction.active() && f_n != 0.0 {
         let vt = friction::tangential(vrel, pr.dir);
-        let pressure = if p.area > 0.0 { f_n / p.area } else { 0.0 };
+        let f_abs = f_n.abs();
+        let pressure = if p.area > 0.0 { f_abs / p.area } else { 0.0 };
         let mu = p.friction.mu(pressure, geo::norm(vt));
-        let k = if p.friction.iform == 1 { kt } else { p.k0 };
-        let raw =
-            friction::tangential_force(p.friction, mu, f_n, vt, pr.dir, k, p.ms, p.dt, &mut st.ft);
+        let k = if p.friction.iform == 1 { kd } else { p.k0 };
+        let raw = friction::tangential_force(
+            p.friction, mu, f_abs, vt, pr.dir, k, p.ms, p.dt, &mut st.ft,
+        );
         let a = p.friction.filter_alpha(p.dt);
         st.ff = geo::add(geo::scale(raw, a), geo::scale(st.ff, 1.0 - a));
         f_t = st.ff;
@@ -72,10 +95,17 @@ pub fn pair(p: &Pair, st: &mut PairState) -> Option<PairForce> {
     } else {
         f64::INFINITY
     };
+    // The stiffness of the nodal time step: Kt, or the friction damper over
+    // the last step where that is stiffer.
+    let k_step = if p.friction.active() && p.dt > 0.0 {
+        kt.max(p.friction.visf * (2.0 * kd * p.ms).sqrt() / p.dt)
+    } else {
+        kt
+    };
     Some(PairForce {
         fs,
         shape: pr.shape,
-        kt,
+        kt: k_step,
         dt_kin,
         f_n,
         f_t,
@@ -84,6 +114,24 @@ pub fn pair(p: &Pair, st: &mut PairState) -> Option<PairForce> {
         point: pr.point,
     })
 }
+
+/// Coefficient of the normal damper at penetration `pen` (≥ 0) and
+/// penetration rate `dpdt` (> 0 closing): C = VISs·√(2·K·M) with K = Kt while
+/// closing and Ks while opening (EQ. 8.8.9.1–2), plus, while closing, the
+/// quadratic term 0.4²·2·M·(dP/dt)/(Gap − P).
+pub fn damping(viss: f64, k0: f64, gap: f64, pen: f64, m: f64, dpdt: f64) -> f64 {
+    let ks = k0 * gap / (gap - pen);
+    if dpdt > 0.0 {
+        let kt = ks * gap / (gap - pen);
+        viss * (2.0 * kt * m).sqrt() + QUAD_DAMPING * QUAD_DAMPING * 2.0 * m * dpdt / (gap - pen)
+    } else {
+        viss * (2.0 * ks * m).sqrt()
+    }
+}
+
+/// Coefficient of the quadratic damper (the reference engine's default,
+/// "QUADRATIC DAMPING FLAG 0").
+const QUAD_DAMPING: f64 = 0.4;
 
 /// A tied pair (ITIED 1, 2): a spring K0 with critical damping VISs holds the
 /// node at the point of the segment where it was tied. With ITIED = 1 the tie
@@ -197,10 +245,55 @@ mod tests {
         let f = pair(&inp, &mut st).unwrap();
         let kt = 1000.0 * 4.0;
         assert!((f.kt - kt).abs() < 1e-9);
-        let expect = 100.0 + 0.05 * (2.0f64 * kt).sqrt() * 2.0;
+        // Closing at 2: C = VISs·√(2·Kt·M) + 0.4²·2·M·2/(Gap − P).
+        let c = 0.05 * (2.0f64 * kt).sqrt() + 0.16 * 2.0 * 2.0 / 0.05;
+        let expect = 100.0 + c * 2.0;
         assert!((f.fs[2] - expect).abs() < 1e-9);
         // EQ. 8.8.5.1: 0.5·(Gap − P)/(dP/dt) = 0.5·0.05/2.
         assert!((f.dt_kin - 0.0125).abs() < 1e-15);
+    }
+
+    #[test]
+    fn opening_damper_works_on_the_secant_stiffness_and_may_pull() {
+        let xm = plate();
+        let vm = [[0.0; 3]; 4];
+        let law = FrictionLaw::none();
+        let mut st = PairState::default();
+        // Leaving at 2: C = VISs·√(2·Ks·M), Ks = K0·Gap/(Gap − P) = 2000.
+        let mut inp = input([0.5, 0.5, 0.05], [0.0, 0.0, 2.0], &xm, &vm, &law);
+        inp.viss = 0.05;
+        let f = pair(&inp, &mut st).unwrap();
+        let expect = 100.0 - 0.05 * (2.0f64 * 2000.0).sqrt() * 2.0;
+        assert!((f.fs[2] - expect).abs() < 1e-9);
+        // A node leaving fast from a shallow penetration is pulled back.
+        let mut inp = input([0.5, 0.5, 0.0999], [0.0, 0.0, 50.0], &xm, &vm, &law);
+        inp.viss = 0.05;
+        let f = pair(&inp, &mut st).unwrap();
+        assert!(f.fs[2] < 0.0 && f.f_n < 0.0, "{:?}", f.fs);
+    }
+
+    #[test]
+    fn friction_damper_stiffens_the_nodal_step() {
+        let xm = plate();
+        let vm = [[0.0; 3]; 4];
+        let law = FrictionLaw {
+            fric: 0.3,
+            iform: 1,
+            visf: 1.0,
+            ..FrictionLaw::none()
+        };
+        let mut st = PairState::default();
+        let mut inp = input([0.5, 0.5, 0.05], [1.0, 0.0, 0.0], &xm, &vm, &law);
+        inp.dt = 1e-4;
+        let f = pair(&inp, &mut st).unwrap();
+        // Not moving along the normal: Ks = 2000; √(2·2000·1)/1e-4 > Kt = 4000.
+        let k = (2.0f64 * 2000.0).sqrt() / 1e-4;
+        assert!((f.kt - k).abs() < 1e-6 * k);
+        // Without friction the step sees Kt only.
+        let none = FrictionLaw::none();
+        let mut inp = input([0.5, 0.5, 0.05], [1.0, 0.0, 0.0], &xm, &vm, &none);
+        inp.dt = 1e-4;
+        assert!((pair(&inp, &mut st).unwrap().kt - 4000.0).abs() < 1e-9);
     }
 
     #[test]
