@@ -30,6 +30,8 @@ pub struct FrictionLaw {
 }
 
 impl FrictionLaw {
+    /// No friction; the fields a card leaves out (Iform 2, no filter, the
+    /// damper cap of the default /DT scale 0.9 until `with_time_step_scale`).
     pub fn none() -> FrictionLaw {
         FrictionLaw {
             ifric: 0,

@@ -6,7 +6,7 @@
 //! Contact nodes are numbered densely in global node order ("cnode"); every
 //! array below speaks in cnodes.
 
-use super::friction::{self, FrictionLaw};
+use super::friction::FrictionLaw;
 use super::gap::{self, GapRule};
 use super::geometry::{self as geo, V3};
 use super::stiffness;
@@ -463,7 +463,7 @@ pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<ContactSetup, String> {
                         xfreq: t.xfreq,
                         iform: if t.iform == 2 { 2 } else { 1 },
                         visf: t.visf,
-                        damper_cap: friction::damper_cap(0.9),
+                        ..FrictionLaw::none()
                     },
                     gap_card: t.gapmin,
                     tstart: t.tstart,
@@ -484,9 +484,7 @@ pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<ContactSetup, String> {
                         c: t.fric_coefs.unwrap_or([0.0; 6]),
                         ifiltr: t.ifiltr,
                         xfreq: t.xfreq,
-                        iform: 2,
-                        visf: 0.0,
-                        damper_cap: friction::damper_cap(0.9),
+                        ..FrictionLaw::none()
                     },
                     gap_card: t.gap,
                     tstart: t.tstart,
@@ -502,14 +500,8 @@ pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<ContactSetup, String> {
                     law: Law::Type5,
                     stfac: t.stfac,
                     fric: FrictionLaw {
-                        ifric: 0,
                         fric: t.fric,
-                        c: [0.0; 6],
-                        ifiltr: 0,
-                        xfreq: 0.0,
-                        iform: 2,
-                        visf: 0.0,
-                        damper_cap: friction::damper_cap(0.9),
+                        ..FrictionLaw::none()
                     },
                     gap_card: t.gap,
                     tstart: t.tstart,
