@@ -21,6 +21,7 @@ mod cc;
 mod common;
 
 use cc::*;
+use common::{deck_variant, inter_line, set_cols};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
@@ -31,31 +32,9 @@ const BAND: [u64; 8] = [104, 105, 112, 113, 120, 121, 128, 129];
 
 /// decks/NAME with the Idel column (71-80) of every /INTER/TYPE7 and TYPE5 set to `idel`.
 fn variant(name: &str, idel: i64, dir: &Path) -> PathBuf {
-    let src = deck(name);
-    let text = std::fs::read_to_string(&src).unwrap();
-    let lines: Vec<&str> = text.lines().collect();
-    let mut out = Vec::new();
-    let mut card_at = None;
-    for (i, l) in lines.iter().enumerate() {
-        if l.starts_with("/INTER/TYPE7/") || l.starts_with("/INTER/TYPE5/") {
-            card_at = Some(i + 3);
-        }
-        if card_at == Some(i) {
-            assert!(l.len() >= 80, "first card of the interface: {l}");
-            out.push(format!("{}{:>10}{}", &l[..70], idel, &l[80..]));
-        } else {
-            out.push(l.to_string());
-        }
-    }
-    std::fs::create_dir_all(dir).unwrap();
-    let d = dir.join(format!("{name}_0000.rad"));
-    std::fs::write(&d, out.join("\n") + "\n").unwrap();
-    std::fs::copy(
-        src.with_file_name(format!("{name}_0001.rad")),
-        dir.join(format!("{name}_0001.rad")),
-    )
-    .unwrap();
-    d
+    deck_variant(name, dir, |i, lines| {
+        inter_line(i, lines, 3).then(|| set_cols(lines[i], 70, 80, idel))
+    })
 }
 
 /// One listing IDEL line: (interface, segments, nodes, total segments, total nodes).
@@ -272,7 +251,7 @@ fn deletion_is_bitwise_identical_on_1_2_4_ranks_and_any_thread_count() {
             ],
             &[("RAYON_NUM_THREADS", "1")],
         );
-        assert_ok(&out, "one thread");
+        ok(&out, "one thread");
         assert!(
             std::fs::read(&fs).unwrap() == reference,
             "Idel = {idel}: 1 thread"

@@ -12,46 +12,6 @@ use common::*;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-/// decks/NAME/NAME_0000.rad.
-fn deck(name: &str) -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("decks")
-        .join(name)
-        .join(format!("{name}_0000.rad"))
-}
-
-/// A copy of decks/NAME in `dir` with `edit` applied to the starter's lines.
-fn variant(name: &str, dir: &Path, edit: impl Fn(usize, &[&str]) -> Option<String>) -> PathBuf {
-    let src = deck(name);
-    let text = std::fs::read_to_string(&src).unwrap();
-    let lines: Vec<&str> = text.lines().collect();
-    let out: Vec<String> = (0..lines.len())
-        .map(|i| edit(i, &lines).unwrap_or_else(|| lines[i].to_string()))
-        .collect();
-    std::fs::create_dir_all(dir).unwrap();
-    let d = dir.join(format!("{name}_0000.rad"));
-    std::fs::write(&d, out.join("\n") + "\n").unwrap();
-    std::fs::copy(
-        src.with_file_name(format!("{name}_0001.rad")),
-        dir.join(format!("{name}_0001.rad")),
-    )
-    .unwrap();
-    d
-}
-
-/// The line `k` data lines below an /INTER/TYPE7 or TYPE5 header (comments
-/// and the title counted as in the decks: title, then comment/data pairs).
-fn inter_line(i: usize, lines: &[&str], k: usize) -> bool {
-    i >= k
-        && (lines[i - k].starts_with("/INTER/TYPE7/") || lines[i - k].starts_with("/INTER/TYPE5/"))
-}
-
-/// Replaces columns [a, b) (0-based) of a line by `v` right-aligned.
-fn set_cols(l: &str, a: usize, b: usize, v: i64) -> String {
-    assert!(l.len() >= b, "short card line: {l}");
-    format!("{}{:>w$}{}", &l[..a], v, &l[b..], w = b - a)
-}
-
 fn run(np: u32, deck: &Path, dir: &Path, extra: &[&str]) -> Output {
     let mut args = vec![
         "run",
@@ -174,7 +134,7 @@ fn check(case: &Case, cycle: u64, from: u32, to: &[u32], full: &[u8], tag: &str)
 fn sliding_block_friction_memory_restart_1_2_and_2_to_1() {
     let dir = scratch("crst-slide-deck");
     // Iform: columns 41-50 of the line below "#    Ifric".
-    let d = variant("sliding_block", &dir, |i, lines| {
+    let d = deck_variant("sliding_block", &dir, |i, lines| {
         (i >= 1 && lines[i - 1].starts_with("#    Ifric")).then(|| set_cols(lines[i], 40, 50, 2))
     });
     let case = Case::new(d, None);
@@ -189,7 +149,7 @@ fn sliding_block_friction_memory_restart_1_2_and_2_to_1() {
 fn inacti_5_corrected_gaps_restart_1_to_2() {
     let dir = scratch("crst-inacti5-deck");
     // Inacti: columns 31-40 of the line below "#      IBC ... Inacti".
-    let d = variant("sliding_block", &dir, |i, lines| {
+    let d = deck_variant("sliding_block", &dir, |i, lines| {
         (i >= 1 && lines[i - 1].starts_with("#      IBC") && lines[i - 1].contains("Inacti"))
             .then(|| set_cols(lines[i], 30, 40, 5))
     });
@@ -250,7 +210,7 @@ fn idel_after(listing: &str, cycle: u64) -> Vec<String> {
 fn idel_restart_mid_deletion_and_mid_impact() {
     let dir = scratch("crst-idel-deck");
     // Idel: columns 71-80 of the first data line of every interface.
-    let d = variant("idel_gap", &dir, |i, lines| {
+    let d = deck_variant("idel_gap", &dir, |i, lines| {
         inter_line(i, lines, 3).then(|| set_cols(lines[i], 70, 80, -1))
     });
     let case = Case::new(d, None);
@@ -320,7 +280,7 @@ fn restart_files_without_contact_state_or_of_another_deck_are_refused() {
     );
     // Another deck of the same name and size: the interface id differs.
     let dir = scratch("crst-refuse-deck");
-    let other = variant("sliding_block", &dir, |i, lines| {
+    let other = deck_variant("sliding_block", &dir, |i, lines| {
         lines[i]
             .starts_with("/INTER/TYPE7/1")
             .then(|| "/INTER/TYPE7/7".to_string())

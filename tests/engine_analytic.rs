@@ -13,25 +13,13 @@
 //!   state E/(1−ν²)·ε, ν·σxx, 0.
 
 mod common;
+use common::{deck, read_csv, scratch};
 
 use std::collections::HashMap;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 const E: f64 = 210.0;
 const RHO: f64 = 7.85e-6;
-
-fn deck(name: &str) -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("decks")
-        .join(name)
-        .join(format!("{name}_0000.rad"))
-}
-
-fn scratch(tag: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("crashsim-analytic-{tag}-{}", std::process::id()));
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
 
 /// Nodes (id → initial x, y, z) and 4-node shells (id → node ids) of a starter
 /// deck in the fixed format (ids 10 wide, reals 20 wide).
@@ -79,23 +67,6 @@ fn end_time(engine: &Path) -> f64 {
         }
     }
     panic!("no /RUN in {}", engine.display())
-}
-
-/// CSV rows as numbers (a non-numeric column such as `kind` reads as NaN), with the header.
-fn read_csv(path: &Path) -> (Vec<String>, Vec<Vec<f64>>) {
-    let text = std::fs::read_to_string(path)
-        .unwrap_or_else(|e| panic!("cannot read {}: {e}", path.display()));
-    let mut lines = text.lines();
-    let header = lines.next().unwrap().split(',').map(String::from).collect();
-    let rows = lines
-        .filter(|l| !l.is_empty())
-        .map(|l| {
-            l.split(',')
-                .map(|s| s.parse().unwrap_or(f64::NAN))
-                .collect()
-        })
-        .collect();
-    (header, rows)
 }
 
 struct Results {

@@ -166,3 +166,65 @@ pub fn run_env(np: u32, args: &[&str], env: &[(&str, &str)]) -> Output {
     }
     c.output().expect("crashsim runs")
 }
+
+/// decks/NAME/NAME_0000.rad in the checkout.
+pub fn deck(name: &str) -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("decks")
+        .join(name)
+        .join(format!("{name}_0000.rad"))
+}
+
+/// A copy of decks/NAME in `dir` with `edit` applied to the starter's lines.
+pub fn deck_variant(
+    name: &str,
+    dir: &Path,
+    edit: impl Fn(usize, &[&str]) -> Option<String>,
+) -> PathBuf {
+    let src = deck(name);
+    let text = std::fs::read_to_string(&src).unwrap();
+    let lines: Vec<&str> = text.lines().collect();
+    let out: Vec<String> = (0..lines.len())
+        .map(|i| edit(i, &lines).unwrap_or_else(|| lines[i].to_string()))
+        .collect();
+    std::fs::create_dir_all(dir).unwrap();
+    let d = dir.join(format!("{name}_0000.rad"));
+    std::fs::write(&d, out.join("\n") + "\n").unwrap();
+    std::fs::copy(
+        src.with_file_name(format!("{name}_0001.rad")),
+        dir.join(format!("{name}_0001.rad")),
+    )
+    .unwrap();
+    d
+}
+
+/// The line `k` data lines below an /INTER/TYPE7 or TYPE5 header (comments
+/// and the title counted as in the decks: title, then comment/data pairs).
+pub fn inter_line(i: usize, lines: &[&str], k: usize) -> bool {
+    i >= k
+        && (lines[i - k].starts_with("/INTER/TYPE7/") || lines[i - k].starts_with("/INTER/TYPE5/"))
+}
+
+/// Replaces columns [a, b) (0-based) of a line by `v` right-aligned.
+pub fn set_cols(l: &str, a: usize, b: usize, v: i64) -> String {
+    assert!(l.len() >= b, "short card line: {l}");
+    format!("{}{:>w$}{}", &l[..a], v, &l[b..], w = b - a)
+}
+
+/// CSV rows as numbers (a non-numeric field such as `kind` reads as NaN),
+/// with the header.
+pub fn read_csv(path: &Path) -> (Vec<String>, Vec<Vec<f64>>) {
+    let text = std::fs::read_to_string(path)
+        .unwrap_or_else(|e| panic!("cannot read {}: {e}", path.display()));
+    let mut lines = text.lines();
+    let header = lines.next().unwrap().split(',').map(String::from).collect();
+    let rows = lines
+        .filter(|l| !l.is_empty())
+        .map(|l| {
+            l.split(',')
+                .map(|s| s.parse().unwrap_or(f64::NAN))
+                .collect()
+        })
+        .collect();
+    (header, rows)
+}

@@ -5,9 +5,13 @@
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
-use std::process::Output;
 
 pub type V3 = [f64; 3];
+
+// The helpers every integration test shares (every test that includes this
+// module also includes `common`).
+#[allow(unused_imports)]
+pub use crate::common::{deck, ok, read_csv, scratch};
 
 /// Runs `deck` again on 2 ranks (in scratch `tag`) and asserts that its final
 /// state is byte-identical to `one`'s.
@@ -24,32 +28,6 @@ pub fn assert_same_final_state_on_2_ranks(deck: &Path, tag: &str, one: &Run) {
         two.final_state_bytes() == one.final_state_bytes(),
         "{}: the final state on 2 ranks differs from 1 rank",
         deck.display()
-    );
-}
-
-/// A fresh scratch directory for one test.
-pub fn scratch(tag: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("crashsim-contact-{tag}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
-
-/// decks/NAME/NAME_0000.rad in the checkout.
-pub fn deck(name: &str) -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("decks")
-        .join(name)
-        .join(format!("{name}_0000.rad"))
-}
-
-pub fn assert_ok(out: &Output, what: &str) {
-    assert!(
-        out.status.success(),
-        "{what} failed ({:?}):\n{}\n{}",
-        out.status,
-        String::from_utf8_lossy(&out.stdout),
-        String::from_utf8_lossy(&out.stderr)
     );
 }
 
@@ -126,7 +104,7 @@ pub fn run(deck: &Path, dir: &Path, a: &RunArgs) -> Run {
     } else {
         super::common::crashsim(&argv)
     };
-    assert_ok(&out, &format!("crashsim {argv:?}"));
+    ok(&out, &format!("crashsim {argv:?}"));
     let name = listing_name(dir);
     Run {
         dir: dir.to_path_buf(),
@@ -234,39 +212,9 @@ impl Listing {
     }
 }
 
-pub fn norm(a: V3) -> f64 {
-    (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]).sqrt()
-}
-pub fn sub(a: V3, b: V3) -> V3 {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-pub fn dot(a: V3, b: V3) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-pub fn cross(a: V3, b: V3) -> V3 {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-
-/// CSV rows as numbers (a non-numeric field reads as NaN), with the header.
-pub fn read_csv(path: &Path) -> (Vec<String>, Vec<Vec<f64>>) {
-    let text = std::fs::read_to_string(path)
-        .unwrap_or_else(|e| panic!("cannot read {}: {e}", path.display()));
-    let mut lines = text.lines();
-    let header = lines.next().unwrap().split(',').map(String::from).collect();
-    let rows = lines
-        .filter(|l| !l.is_empty())
-        .map(|l| {
-            l.split(',')
-                .map(|s| s.parse().unwrap_or(f64::NAN))
-                .collect()
-        })
-        .collect();
-    (header, rows)
-}
+// The solver's own vector algebra (not every test binary uses all of it).
+#[allow(unused_imports)]
+pub use crashsim::model::geometry::{cross, dot, norm, sub};
 
 /// Final state CSV: id → [x, y, z, vx, vy, vz].
 pub fn read_state(path: &Path) -> BTreeMap<u64, [f64; 6]> {
@@ -325,28 +273,6 @@ pub fn read_mesh(path: &Path) -> Mesh {
     m
 }
 
-/// Volume of a hexahedron (node order as /BRICK) from its 6 faces' divergence.
-pub fn hexa_volume(x: &[V3; 8]) -> f64 {
-    const FACES: [[usize; 4]; 6] = [
-        [0, 3, 2, 1],
-        [4, 5, 6, 7],
-        [0, 1, 5, 4],
-        [1, 2, 6, 5],
-        [2, 3, 7, 6],
-        [3, 0, 4, 7],
-    ];
-    let mut v = 0.0;
-    for f in FACES {
-        let c = [0, 1, 2].map(|k| f.iter().map(|&i| x[i][k]).sum::<f64>() / 4.0);
-        for e in 0..4 {
-            let a = x[f[e]];
-            let b = x[f[(e + 1) % 4]];
-            v += dot(c, cross(a, b)) / 6.0;
-        }
-    }
-    v.abs()
-}
-
 /// Lumped nodal masses ρ·V/8 of the bricks of `parts` (all parts if empty).
 pub fn brick_masses(m: &Mesh, rho: f64, parts: &[u64]) -> BTreeMap<u64, f64> {
     let mut out = BTreeMap::new();
@@ -355,7 +281,7 @@ pub fn brick_masses(m: &Mesh, rho: f64, parts: &[u64]) -> BTreeMap<u64, f64> {
             continue;
         }
         let x = n.map(|i| m.nodes[&i]);
-        let v = hexa_volume(&x);
+        let v = crashsim::model::geometry::hexa_volume(x).abs();
         for i in n {
             *out.entry(*i).or_insert(0.0) += rho * v / 8.0;
         }
@@ -371,7 +297,7 @@ pub fn shell_masses(m: &Mesh, rho: f64, t: f64, parts: &[u64]) -> BTreeMap<u64, 
             continue;
         }
         let x = n.map(|i| m.nodes[&i]);
-        let a = 0.5 * norm(cross(sub(x[2], x[0]), sub(x[3], x[1])));
+        let a = crashsim::model::geometry::quad_area(x);
         for i in n {
             *out.entry(*i).or_insert(0.0) += rho * a * t / 4.0;
         }
