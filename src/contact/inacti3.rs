@@ -186,16 +186,20 @@ pub fn depenetrate(m: &Model) -> Result<Depenetrated, String> {
         let mut fpen: std::collections::BTreeSet<u32> = Default::default();
         let mut unfreed: std::collections::BTreeSet<u32> = Default::default();
         for p in &it.passes {
-            // Fpenmax, on the coordinates as they are before this interface moves anything.
-            let mut skip = vec![false; p.sec.len()];
-            if it.fpenmax > 0.0 {
+            // Candidate segments of each of the pass's secondary nodes on coordinates `x`.
+            let candidates_on = |x: &[V3]| {
                 let boxes: Vec<Aabb> = p
                     .segs
                     .iter()
                     .map(|s| Aabb::of_points(&s.map(|c| x[c as usize])))
                     .collect();
                 let pts: Vec<V3> = p.sec.iter().map(|&s| x[s as usize]).collect();
-                let cand = search::candidates(&pts, it.max_gap, &boxes, search::choose(&boxes));
+                search::candidates(&pts, it.max_gap, &boxes, search::choose(&boxes))
+            };
+            // Fpenmax, on the coordinates as they are before this interface moves anything.
+            let mut skip = vec![false; p.sec.len()];
+            if it.fpenmax > 0.0 {
+                let cand = candidates_on(&x);
                 for (k, sk) in skip.iter_mut().enumerate() {
                     let c = &cand.segs[cand.ptr[k]..cand.ptr[k + 1]];
                     for &mi in c {
@@ -213,13 +217,7 @@ pub fn depenetrate(m: &Model) -> Result<Depenetrated, String> {
             }
             let mut still: Vec<usize> = Vec::new();
             for pass in 0..=PASSES {
-                let boxes: Vec<Aabb> = p
-                    .segs
-                    .iter()
-                    .map(|s| Aabb::of_points(&s.map(|c| x[c as usize])))
-                    .collect();
-                let pts: Vec<V3> = p.sec.iter().map(|&s| x[s as usize]).collect();
-                let cand = search::candidates(&pts, it.max_gap, &boxes, search::choose(&boxes));
+                let cand = candidates_on(&x);
                 let moves: Vec<(u32, V3)> = (0..p.sec.len())
                     .filter(|&k| !skip[k])
                     .filter_map(|k| {
