@@ -20,11 +20,7 @@ fn box1bl(tag: &str, np: u32) -> PathBuf {
         ],
         &[],
     );
-    assert!(
-        out.status.success(),
-        "run -n {np} failed:\n{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    ok(&out, &format!("run -n {np}"));
     dir
 }
 
@@ -294,11 +290,7 @@ fn brick_bar_states_carry_the_impact_stress() {
         ],
         &[],
     );
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    ok(&out, "run brick_bar");
     let xdmf = dir.join("brick_bar.xdmf");
     python_check("check_xdmf.py", &[xdmf.as_os_str()]);
     assert!(std::fs::read_to_string(&xdmf)
