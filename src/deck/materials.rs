@@ -64,6 +64,32 @@ pub struct JohnsonCook {
     pub t_r: f64,
 }
 
+impl JohnsonCook {
+    /// The (a, b, n) law with every other field at its blank-card default:
+    /// no failure, no stress cap, no strain-rate or temperature term,
+    /// isotropic hardening.
+    pub fn hardening(a: f64, b: f64, n: f64) -> JohnsonCook {
+        JohnsonCook {
+            iflag: 0,
+            a,
+            b,
+            n,
+            eps_p_max: NO_LIMIT,
+            sig_max0: NO_LIMIT,
+            c: 0.0,
+            eps_dot_0: 1.0,
+            icc: 1,
+            fsmooth: 0,
+            f_cut: NO_LIMIT,
+            chard: 0.0,
+            m: 1.0,
+            t_melt: NO_LIMIT,
+            rho_cp: NO_LIMIT,
+            t_r: 298.0,
+        }
+    }
+}
+
 /// Returns false for a law this reader does not support.
 pub(super) fn parse_material(block: &Block, deck: &mut Deck) -> DeckResult<bool> {
     let law = block.parts.get(1).map(String::as_str).unwrap_or("");

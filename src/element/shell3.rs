@@ -674,7 +674,7 @@ mod tests {
 
     /// Johnson-Cook (BOX1BL's LAW2 without rate term), hardening `b`.
     fn jc(b: f64) -> Material {
-        use crate::deck::{JohnsonCook, Loc, MaterialCard, MaterialLaw, NO_LIMIT};
+        use crate::deck::{JohnsonCook, Loc, MaterialCard, MaterialLaw};
         Material::from_card(&MaterialCard {
             id: 1,
             unit_id: 0,
@@ -683,24 +683,7 @@ mod tests {
             rho_ref: 0.0,
             e: 210.0,
             nu: 0.3,
-            law: MaterialLaw::JohnsonCook(JohnsonCook {
-                iflag: 0,
-                a: 0.25,
-                b,
-                n: 0.52,
-                eps_p_max: NO_LIMIT,
-                sig_max0: NO_LIMIT,
-                c: 0.0,
-                eps_dot_0: 1.0,
-                icc: 1,
-                fsmooth: 0,
-                f_cut: NO_LIMIT,
-                chard: 0.0,
-                m: 1.0,
-                t_melt: NO_LIMIT,
-                rho_cp: NO_LIMIT,
-                t_r: 298.0,
-            }),
+            law: MaterialLaw::JohnsonCook(JohnsonCook::hardening(0.25, b, 0.52)),
             loc: Loc::default(),
         })
     }

@@ -3,7 +3,7 @@
 #![allow(clippy::needless_range_loop)] // index loops mirror the tensor formulas
 
 use super::*;
-use crate::deck::{JohnsonCook, Loc, MaterialCard, MaterialLaw, NO_LIMIT};
+use crate::deck::{JohnsonCook, Loc, MaterialCard, MaterialLaw};
 
 fn card(law: MaterialLaw) -> MaterialCard {
     MaterialCard {
@@ -21,24 +21,7 @@ fn card(law: MaterialLaw) -> MaterialCard {
 
 /// BOX1BL's /MAT/PLAS_JOHNS/1 (rate term off unless asked).
 fn jc_mat(f: impl FnOnce(&mut JohnsonCook)) -> Material {
-    let mut j = JohnsonCook {
-        iflag: 0,
-        a: 0.25,
-        b: 0.349999994,
-        n: 0.519999981,
-        eps_p_max: NO_LIMIT,
-        sig_max0: NO_LIMIT,
-        c: 0.0,
-        eps_dot_0: 1.0,
-        icc: 1,
-        fsmooth: 0,
-        f_cut: NO_LIMIT,
-        chard: 0.0,
-        m: 1.0,
-        t_melt: NO_LIMIT,
-        rho_cp: NO_LIMIT,
-        t_r: 298.0,
-    };
+    let mut j = JohnsonCook::hardening(0.25, 0.349999994, 0.519999981);
     f(&mut j);
     Material::from_card(&card(MaterialLaw::JohnsonCook(j)))
 }

@@ -172,7 +172,7 @@ impl PointLaw {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::deck::{JohnsonCook, Loc, MaterialCard, MaterialLaw, NO_LIMIT};
+    use crate::deck::{JohnsonCook, Loc, MaterialCard, MaterialLaw};
     use crate::material::Material;
 
     fn jc(b: f64) -> Material {
@@ -184,24 +184,7 @@ mod tests {
             rho_ref: 0.0,
             e: 205.0,
             nu: 0.3,
-            law: MaterialLaw::JohnsonCook(JohnsonCook {
-                iflag: 0,
-                a: 0.25,
-                b,
-                n: 0.52,
-                eps_p_max: NO_LIMIT,
-                sig_max0: NO_LIMIT,
-                c: 0.0,
-                eps_dot_0: 1.0,
-                icc: 1,
-                fsmooth: 0,
-                f_cut: NO_LIMIT,
-                chard: 0.0,
-                m: 1.0,
-                t_melt: NO_LIMIT,
-                rho_cp: NO_LIMIT,
-                t_r: 298.0,
-            }),
+            law: MaterialLaw::JohnsonCook(JohnsonCook::hardening(0.25, b, 0.52)),
             loc: Loc::default(),
         })
     }

@@ -475,24 +475,7 @@ mod tests {
 
     /// The BOX1BL material (OpenRadioss QA deck), with overrides.
     fn box1bl_card(law: Option<JohnsonCook>) -> MaterialCard {
-        let jc = JohnsonCook {
-            iflag: 0,
-            a: 0.25,
-            b: 0.349999994,
-            n: 0.519999981,
-            eps_p_max: NO_LIMIT,
-            sig_max0: NO_LIMIT,
-            c: 0.0,
-            eps_dot_0: 1.0,
-            icc: 1,
-            fsmooth: 0,
-            f_cut: NO_LIMIT,
-            chard: 0.0,
-            m: 1.0,
-            t_melt: NO_LIMIT,
-            rho_cp: NO_LIMIT,
-            t_r: 298.0,
-        };
+        let jc = JohnsonCook::hardening(0.25, 0.349999994, 0.519999981);
         MaterialCard {
             id: 1,
             unit_id: 0,
