@@ -119,11 +119,14 @@ fn a_signal_on_one_rank_stops_every_rank_at_the_same_cycle_with_a_restart_file()
     assert!(restart(2, &dir) == full, "restart after the signal differs");
 }
 
-#[test]
-fn a_rank_killed_mid_run_ends_the_job_and_leaves_a_readable_run_file() {
-    let dir = scratch("rst-kill");
+/// Kills `rank` of a run on `np` ranks (0: one process, no mpirun) at
+/// cycle 600 by SIGKILL; the job ends within 10 s and its run file reads
+/// up to the last complete state.
+fn killed_at_cycle_600_leaves_a_readable_run_file(np: u32, rank: u32, tag: &str) {
+    let dir = scratch(tag);
     let started = std::time::Instant::now();
-    let out = run(2, &dir, &[], &[("CRASHSIM_KILL_AT", "1:600")]);
+    let at = format!("{rank}:600");
+    let out = run(np, &dir, &[], &[("CRASHSIM_KILL_AT", &at)]);
     let secs = started.elapsed().as_secs_f64();
     assert!(
         !out.status.success(),
@@ -155,9 +158,21 @@ print("readable:", len(states), "states,", th.shape[0], "history rows")
         .unwrap();
     assert!(
         o.status.success(),
-        "the run file of the killed job does not read:\n{}",
+        "the run file of the killed job ({np} ranks) does not read:\n{}",
         String::from_utf8_lossy(&o.stderr)
     );
+}
+
+/// Two ranks share the file through MPI-IO.
+#[test]
+fn a_rank_killed_mid_run_ends_the_job_and_leaves_a_readable_run_file() {
+    killed_at_cycle_600_leaves_a_readable_run_file(2, 1, "rst-kill");
+}
+
+/// One process writes it as a plain file, flushed after each state.
+#[test]
+fn a_single_process_killed_mid_run_leaves_a_readable_run_file() {
+    killed_at_cycle_600_leaves_a_readable_run_file(0, 0, "rst-kill1");
 }
 
 #[test]

@@ -86,29 +86,33 @@ impl Rows {
     }
 }
 
-/// A collective MPI-IO transfer property list (closed on drop).
+/// A transfer property list (closed on drop): collective or independent
+/// MPI-IO on a file opened through MPI-IO, the default transfer on a file
+/// one rank opened alone (see `World::hdf5_access`).
 pub struct Xfer(hid_t);
 
 impl Xfer {
     /// Every rank takes part in each transfer (MPI-IO two-phase I/O):
     /// distributed rows.
-    pub fn collective() -> Result<Xfer, String> {
-        Xfer::new(h5p::H5FD_mpio_xfer_t::H5FD_MPIO_COLLECTIVE)
+    pub fn collective(mpio: bool) -> Result<Xfer, String> {
+        Xfer::new(mpio.then_some(h5p::H5FD_mpio_xfer_t::H5FD_MPIO_COLLECTIVE))
     }
     /// Only the ranks that call transfer: replicated rows written by rank 0
     /// alone (time-history rows, tables), without the collective machinery.
-    pub fn independent() -> Result<Xfer, String> {
-        Xfer::new(h5p::H5FD_mpio_xfer_t::H5FD_MPIO_INDEPENDENT)
+    pub fn independent(mpio: bool) -> Result<Xfer, String> {
+        Xfer::new(mpio.then_some(h5p::H5FD_mpio_xfer_t::H5FD_MPIO_INDEPENDENT))
     }
-    fn new(mode: h5p::H5FD_mpio_xfer_t) -> Result<Xfer, String> {
+    fn new(mode: Option<h5p::H5FD_mpio_xfer_t>) -> Result<Xfer, String> {
         unsafe {
             let id = h5p::H5Pcreate(*hdf5_sys::h5p::H5P_CLS_DATASET_XFER);
             if id < 0 {
                 return Err("HDF5: cannot create a transfer property list".into());
             }
-            if h5p::H5Pset_dxpl_mpio(id, mode) < 0 {
-                hdf5_sys::h5p::H5Pclose(id);
-                return Err("HDF5: cannot set the MPI-IO transfer mode".into());
+            if let Some(mode) = mode {
+                if h5p::H5Pset_dxpl_mpio(id, mode) < 0 {
+                    hdf5_sys::h5p::H5Pclose(id);
+                    return Err("HDF5: cannot set the MPI-IO transfer mode".into());
+                }
             }
             Ok(Xfer(id))
         }

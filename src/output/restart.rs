@@ -75,9 +75,9 @@ fn check_name(name: &str) -> Result<(), String> {
 impl<'w> RestartWriter<'w> {
     pub fn create(world: &'w World, path: &Path) -> Result<RestartWriter<'w>, String> {
         let tmp = PathBuf::from(format!("{}.tmp", path.display()));
-        let fapl = world.hdf5_mpio_access()?;
+        let access = world.hdf5_access()?;
         let file = File::with_options()
-            .set_access_plist(&fapl)
+            .set_access_plist(&access.fapl)
             .map_err(|e| e.to_string())?
             .create(&tmp)
             .map_err(|e| format!("{}: cannot create the restart file: {e}", tmp.display()))?;
@@ -91,7 +91,7 @@ impl<'w> RestartWriter<'w> {
             world,
             file,
             sections,
-            xfer: Xfer::collective()?,
+            xfer: Xfer::collective(access.mpio)?,
             tmp,
             path: path.to_path_buf(),
         })
@@ -246,9 +246,9 @@ impl RestartReader {
                 path.display()
             ));
         }
-        let fapl = world.hdf5_mpio_access()?;
+        let access = world.hdf5_access()?;
         let file = File::with_options()
-            .set_access_plist(&fapl)
+            .set_access_plist(&access.fapl)
             .map_err(|e| e.to_string())?
             .open(path)
             .map_err(|_| {
@@ -270,7 +270,7 @@ impl RestartReader {
         }
         Ok(RestartReader {
             file,
-            xfer: Xfer::collective()?,
+            xfer: Xfer::collective(access.mpio)?,
             path: path.to_path_buf(),
         })
     }

@@ -26,15 +26,15 @@
 //! Rows are in global order whatever the partition: the file is the same
 //! for any number of ranks except the `ranks` attribute. After each state
 //! (and the time-history rows gathered since the last one) the file is
-//! closed and reopened (`RunFile::checkpoint`: like a flush, without the
-//! fsync), so a run that dies keeps a readable file up to its last complete
-//! state.
+//! made complete on disk (`RunFile::checkpoint`), so a run that dies keeps
+//! a readable file up to its last complete state.
 
 use super::h5::{self, Rows, Text, Xfer};
 use super::history::{ThLayout, ThRow};
 use super::{Context, InterfaceInfo, LoopState};
 use crate::deck::{ElementKind, Elements, MaterialLaw};
 use crate::model::NO_NODE;
+use crate::parallel::H5Access;
 use crate::solver::blocks::ElemOut;
 use hdf5::types::VarLenUnicode;
 use hdf5::{Dataset, File, Group, H5Type};
@@ -150,9 +150,13 @@ fn attr_num<T: H5Type>(loc: &hdf5::Location, name: &str, value: T) -> Result<(),
 
 /// The open run file and what each rank writes into it.
 pub struct RunFile {
+    /// `/th/rows`, open from its first append until the file is next closed
+    /// (declared before `file`: dropped first).
+    th_ds: Option<Dataset>,
     file: Option<File>,
-    /// How the file is (re)opened: MPI-IO on the world communicator.
-    fapl: hdf5::plist::FileAccess,
+    /// How the file is (re)opened: MPI-IO on the world communicator, or
+    /// as a plain file on a single rank.
+    access: H5Access,
     path: std::path::PathBuf,
     xfer: Xfer,
     /// Rank 0's transfers of replicated rows.
@@ -189,13 +193,13 @@ impl RunFile {
             std::fs::remove_file(path).map_err(|e| err(path, format!("cannot replace: {e}")))?;
         }
         ctx.world.barrier();
-        let fapl = ctx.world.hdf5_mpio_access()?;
+        let access = ctx.world.hdf5_access()?;
         let file = File::with_options()
-            .set_access_plist(&fapl)
+            .set_access_plist(&access.fapl)
             .map_err(|e| err(path, e))?
             .create(path)
             .map_err(|e| err(path, format!("cannot create the HDF5 file: {e}")))?;
-        let mut rf = RunFile::new(ctx, file, path, blocks, th)?;
+        let mut rf = RunFile::new(ctx, file, access, path, blocks, th)?;
         rf.write_header(ctx, blocks)?;
         Ok(rf)
     }
@@ -211,7 +215,8 @@ impl RunFile {
         n_states: usize,
         th_rows: usize,
     ) -> Result<RunFile, String> {
-        let file = open_rw(path, &ctx.world.hdf5_mpio_access()?)?;
+        let access = ctx.world.hdf5_access()?;
+        let file = open_rw(path, &access.fapl)?;
         let fmt = super::info::attr(&file, "format");
         if fmt != FORMAT {
             return Err(err(
@@ -233,7 +238,7 @@ impl RunFile {
                 ),
             ));
         }
-        let mut rf = RunFile::new(ctx, file, path, blocks, th)?;
+        let mut rf = RunFile::new(ctx, file, access, path, blocks, th)?;
         {
             let states = rf.f().group("states").map_err(|e| err(path, e))?;
             let mut names = states.member_names().map_err(|e| err(path, e))?;
@@ -253,6 +258,7 @@ impl RunFile {
     fn new(
         ctx: &Context,
         file: File,
+        access: H5Access,
         path: &std::path::Path,
         blocks: &[Box<dyn crate::solver::blocks::Block>],
         th: ThLayout,
@@ -263,11 +269,12 @@ impl RunFile {
             .collect();
         let node_rows = Rows::from_sorted(node_local.iter().map(|&l| sd.node_global[l] as u64));
         Ok(RunFile {
+            th_ds: None,
             file: Some(file),
-            fapl: ctx.world.hdf5_mpio_access()?,
+            xfer: Xfer::collective(access.mpio)?,
+            solo: Xfer::independent(access.mpio)?,
+            access,
             path: path.to_path_buf(),
-            xfer: Xfer::collective()?,
-            solo: Xfer::independent()?,
             dcpl: h5::FixedDcpl::new()?,
             rank: ctx.world.rank(),
             node_rows,
@@ -285,18 +292,33 @@ impl RunFile {
     }
 
     /// Puts everything written so far in the file on disk's hands, complete
-    /// and readable (collective): closes the file and opens it again.
-    /// `H5Fflush` would do it too but, through MPI-IO, ends with
-    /// `MPI_File_sync`, an fsync on every rank: milliseconds each, and
-    /// stalls of tenths of a second while other processes write to the same
-    /// disk, with every rank waiting. A file being closed is not synced, and
-    /// a process killed afterwards leaves a file that reads up to this point
-    /// (the operating system has the data; only a machine crash could lose it).
+    /// and readable (collective). A process killed afterwards leaves a file
+    /// that reads up to this point (the operating system has the data; only
+    /// a machine crash could lose it).
+    ///
+    /// A file one rank opened alone is flushed (`H5Fflush`: the metadata
+    /// cache is written out, the file stays open). Through MPI-IO a flush
+    /// ends with `MPI_File_sync`, an fsync on every rank: milliseconds each,
+    /// and stalls of tenths of a second while other processes write to the
+    /// same disk, with every rank waiting. A file being closed is not
+    /// synced, so there the file is closed and opened again instead.
     pub fn checkpoint(&mut self) -> Result<(), String> {
+        if !self.access.mpio {
+            // SAFETY: the file id is open.
+            let r = unsafe {
+                hdf5_sys::h5f::H5Fflush(self.f().id(), hdf5_sys::h5f::H5F_scope_t::H5F_SCOPE_LOCAL)
+            };
+            return if r < 0 {
+                Err(err(&self.path, "cannot flush the run file"))
+            } else {
+                Ok(())
+            };
+        }
+        self.th_ds = None;
         if let Some(f) = self.file.take() {
             f.close().map_err(|e| err(&self.path, e))?;
         }
-        self.file = Some(open_rw(&self.path, &self.fapl)?);
+        self.file = Some(open_rw(&self.path, &self.access.fapl)?);
         Ok(())
     }
 
@@ -528,13 +550,19 @@ impl RunFile {
         Ok(())
     }
 
-    fn th_table(&self) -> Result<Dataset, String> {
-        self.f()
-            .dataset("th/rows")
-            .map_err(|e| err(&self.path, format!("th/rows: {e}")))
+    /// `/th/rows` (a new handle on it), opened once per opening of the file.
+    fn th_table(&mut self) -> Result<Dataset, String> {
+        if self.th_ds.is_none() {
+            let ds = self
+                .f()
+                .dataset("th/rows")
+                .map_err(|e| err(&self.path, format!("th/rows: {e}")))?;
+            self.th_ds = Some(ds);
+        }
+        Ok(self.th_ds.clone().expect("opened above"))
     }
 
-    fn truncate_th(&self, rows: usize) -> Result<(), String> {
+    fn truncate_th(&mut self, rows: usize) -> Result<(), String> {
         self.th_table()?
             .resize([rows])
             .map_err(|e| err(&self.path, e))

@@ -203,16 +203,32 @@ impl World {
         out
     }
 
-    /// A file-access property list for parallel HDF5: the file is opened by
-    /// every rank of this world together through MPI-IO (HDF5's `mpio`
-    /// driver on a duplicate of the world communicator). This is the one
-    /// place the output code gets at MPI.
-    pub fn hdf5_mpio_access(&self) -> Result<hdf5::plist::FileAccess, String> {
+    /// How this world opens the run's HDF5 files. Several ranks share a
+    /// file through MPI-IO (HDF5's `mpio` driver on a duplicate of the world
+    /// communicator; every rank opens it together). A single rank opens it
+    /// as a plain POSIX file (the `sec2` driver): no MPI-IO layer between
+    /// HDF5 and the file, and `H5Fflush` writes the metadata out without the
+    /// fsync that `mpio` ends every flush with. File locking is off as it is
+    /// under `mpio`, so a file being written can be read meanwhile. The file
+    /// is the same either way. This is the one place the output code gets
+    /// at MPI.
+    pub fn hdf5_access(&self) -> Result<H5Access, String> {
         use mpi::raw::AsRaw;
-        hdf5::plist::FileAccess::build()
-            .mpio(self.comm.as_raw(), None)
-            .finish()
-            .map_err(|e| e.to_string())
+        let mpio = self.size() > 1;
+        let mut b = hdf5::plist::FileAccess::build();
+        if mpio {
+            b.mpio(self.comm.as_raw(), None);
+        } else {
+            b.sec2();
+        }
+        let fapl = b.finish().map_err(|e| e.to_string())?;
+        if !mpio {
+            // SAFETY: `fapl` is a valid file-access property list.
+            if unsafe { hdf5_sys::h5p::H5Pset_file_locking(fapl.id(), 0, 1) } < 0 {
+                return Err("HDF5: cannot turn file locking off".into());
+            }
+        }
+        Ok(H5Access { fapl, mpio })
     }
 
     /// A stop vote whose all-reduce overlaps the next cycle (see `StopVote`).
@@ -362,4 +378,12 @@ impl Drop for StopVote {
             }
         }
     }
+}
+
+/// A file-access property list for the run's HDF5 files (see
+/// `World::hdf5_access`) and whether it goes through MPI-IO: transfers are
+/// then collective or independent, and a flush ends with an fsync.
+pub struct H5Access {
+    pub fapl: hdf5::plist::FileAccess,
+    pub mpio: bool,
 }
