@@ -259,6 +259,9 @@ fn main() -> ExitCode {
             let Some(world) = World::init() else {
                 return input_error("MPI could not be initialised");
             };
+            if !no_run_file || restart.is_some() {
+                crashsim::output::h5::warm_up();
+            }
             let opts = crashsim::solver::RunOptions {
                 deck: deck.deck,
                 engine: deck.engine,
@@ -275,7 +278,10 @@ fn main() -> ExitCode {
                     no_run_file,
                 },
             };
-            match crashsim::solver::run(&world, &opts) {
+            let result = crashsim::solver::run(&world, &opts);
+            // Not before the library is set up: the process ends soon.
+            crashsim::output::h5::ready();
+            match result {
                 Ok(()) => ExitCode::SUCCESS,
                 Err(e) => {
                     if world.rank() == 0 {

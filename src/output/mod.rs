@@ -185,6 +185,7 @@ impl Output {
     pub fn start(ctx: &Context, s: &mut LoopState) -> Result<Output, RunError> {
         let began = std::time::Instant::now();
         let cpu0 = thread_cpu_seconds();
+        h5::ready();
         stop::install();
         let g = ctx.g;
         let world = ctx.world;
