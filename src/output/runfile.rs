@@ -304,15 +304,10 @@ impl RunFile {
     /// synced, so there the file is closed and opened again instead.
     pub fn checkpoint(&mut self) -> Result<(), String> {
         if !self.access.mpio {
-            // SAFETY: the file id is open.
-            let r = unsafe {
-                hdf5_sys::h5f::H5Fflush(self.f().id(), hdf5_sys::h5f::H5F_scope_t::H5F_SCOPE_LOCAL)
-            };
-            return if r < 0 {
-                Err(err(&self.path, "cannot flush the run file"))
-            } else {
-                Ok(())
-            };
+            return self
+                .f()
+                .flush()
+                .map_err(|e| err(&self.path, format!("cannot flush the run file: {e}")));
         }
         self.th_ds = None;
         if let Some(f) = self.file.take() {

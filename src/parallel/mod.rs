@@ -219,15 +219,9 @@ impl World {
         if mpio {
             b.mpio(self.comm.as_raw(), None);
         } else {
-            b.sec2();
+            b.sec2().file_locking(false);
         }
         let fapl = b.finish().map_err(|e| e.to_string())?;
-        if !mpio {
-            // SAFETY: `fapl` is a valid file-access property list.
-            if unsafe { hdf5_sys::h5p::H5Pset_file_locking(fapl.id(), 0, 1) } < 0 {
-                return Err("HDF5: cannot turn file locking off".into());
-            }
-        }
         Ok(H5Access { fapl, mpio })
     }
 
