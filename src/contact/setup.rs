@@ -214,18 +214,27 @@ fn face_key(f: &[u32]) -> [u32; 4] {
     k
 }
 
+/// The faces of an element of `kind` as four local node positions each
+/// (triangles repeat their last node): a shell is its one face, a brick its
+/// six, a tetrahedron its four; `None` for line elements.
+fn element_faces(kind: ElementKind) -> Option<&'static [[usize; 4]]> {
+    match kind {
+        ElementKind::Shell4 => Some(&[[0, 1, 2, 3]]),
+        ElementKind::Shell3 => Some(&[[0, 1, 2, 2]]),
+        ElementKind::Brick8 => Some(&mgeo::HEXA_FACES),
+        ElementKind::Tetra4 => Some(&[[0, 2, 1, 1], [0, 1, 3, 3], [1, 2, 3, 3], [2, 0, 3, 3]]),
+        _ => None,
+    }
+}
+
 /// Every element a face belongs to (shells by their nodes, solids by each of
 /// their faces), in kind then element order: Idel's "elements associated to
 /// one segment".
 fn face_elements(m: &Model) -> HashMap<[u32; 4], Vec<(u8, u32)>> {
     let mut map: HashMap<[u32; 4], Vec<(u8, u32)>> = HashMap::new();
     for (ki, set) in m.elements.iter().enumerate() {
-        let faces: &[[usize; 4]] = match set.kind {
-            ElementKind::Shell4 => &[[0, 1, 2, 3]],
-            ElementKind::Shell3 => &[[0, 1, 2, 2]],
-            ElementKind::Brick8 => &mgeo::HEXA_FACES,
-            ElementKind::Tetra4 => &[[0, 2, 1, 1], [0, 1, 3, 3], [1, 2, 3, 3], [2, 0, 3, 3]],
-            _ => continue,
+        let Some(faces) = element_faces(set.kind) else {
+            continue;
         };
         for e in 0..set.len() {
             let n = set.nodes_of(e);
@@ -267,12 +276,8 @@ impl FaceIndex {
     fn build(m: &Model) -> FaceIndex {
         let mut map = HashMap::new();
         for (ki, set) in m.elements.iter().enumerate() {
-            let faces: &[[usize; 4]] = match set.kind {
-                ElementKind::Shell4 => &[[0, 1, 2, 3]],
-                ElementKind::Shell3 => &[[0, 1, 2, 2]],
-                ElementKind::Brick8 => &mgeo::HEXA_FACES,
-                ElementKind::Tetra4 => &[[0, 2, 1, 1], [0, 1, 3, 3], [1, 2, 3, 3], [2, 0, 3, 3]],
-                _ => continue,
+            let Some(faces) = element_faces(set.kind) else {
+                continue;
             };
             let shell = matches!(set.kind, ElementKind::Shell4 | ElementKind::Shell3);
             for e in 0..set.len() {
