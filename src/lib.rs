@@ -9,6 +9,8 @@ pub mod contact;
 pub mod deck;
 pub mod domain;
 pub mod element;
+pub mod error;
+pub mod global;
 pub mod kinematics;
 pub mod material;
 pub mod model;

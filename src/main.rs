@@ -4,7 +4,7 @@ use clap::{Parser, Subcommand};
 use crashsim::deck::{self, EngineFile, ReadOptions};
 use crashsim::domain;
 use crashsim::model::{self, Model};
-use crashsim::parallel::World;
+use crashsim::parallel::{Comm, MpiWorld, World};
 use crashsim::summary::Summary;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -256,7 +256,7 @@ fn main() -> ExitCode {
             stop_after_cycle,
             no_run_file,
         } => {
-            let Some(world) = World::init() else {
+            let Some(world) = MpiWorld::init() else {
                 return input_error("MPI could not be initialised");
             };
             if !no_run_file || restart.is_some() {
@@ -295,9 +295,10 @@ fn main() -> ExitCode {
 }
 
 fn distribute(args: &DeckArgs, json: bool) -> ExitCode {
-    let Some(world) = World::init() else {
+    let Some(mpi) = MpiWorld::init() else {
         return input_error("MPI could not be initialised");
     };
+    let world: &World = &mpi;
     let rank = world.rank();
     let size = world.size();
     // Rank 0 reads, builds and partitions; the others never parse text.

@@ -3,6 +3,10 @@
 //! No element writes into nodal arrays: the solver assembles the corner
 //! contributions in a fixed global order (see `solver::assembly`).
 
+/// Values per corner slot: force (3) and moment (3).
+pub const SLOT: usize = 6;
+
+pub mod blocks;
 pub mod hex8;
 pub mod shell3;
 pub mod shell4;

@@ -587,3 +587,11 @@ pub fn ready() {
         let _ = h.join();
     }
 }
+
+/// A string attribute of a group or file ("" when absent).
+pub fn attr(f: &hdf5::Location, name: &str) -> String {
+    f.attr(name)
+        .and_then(|a| a.read_scalar::<hdf5::types::VarLenUnicode>())
+        .map(|s| s.to_string())
+        .unwrap_or_default()
+}

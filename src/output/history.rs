@@ -40,8 +40,8 @@
 use super::h5::Member;
 use super::{Context, LoopState};
 use crate::deck::{ElementKind, PropertyKind};
+use crate::element::blocks::Block;
 use crate::model::geometry::{hexa_volume, quad_area, tetra_volume, triangle_area};
-use crate::solver::blocks::Block;
 use serde::{Deserialize, Serialize};
 
 /// Columns of the `global` member of `/th/rows`.

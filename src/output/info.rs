@@ -1,7 +1,7 @@
 //! `crashsim info FILE.h5`: what a run file (or a restart file) holds.
 //! Read serially (no MPI); bad files are input errors naming the file.
 
-use hdf5::types::VarLenUnicode;
+use super::h5::attr;
 use hdf5::File;
 use std::fmt::Write as _;
 use std::path::Path;
@@ -35,14 +35,6 @@ pub fn open(path: &Path) -> Result<(File, String), String> {
         ));
     }
     Ok((f, fmt))
-}
-
-/// A string attribute of the root group ("" when absent).
-pub fn attr(f: &hdf5::Location, name: &str) -> String {
-    f.attr(name)
-        .and_then(|a| a.read_scalar::<VarLenUnicode>())
-        .map(|s| s.to_string())
-        .unwrap_or_default()
 }
 
 /// Length of a 1-D dataset (0 when absent).

@@ -39,11 +39,11 @@ pub mod xdmf;
 pub use history::InterfaceSample;
 
 use crate::domain::Subdomain;
+use crate::element::blocks::Block;
+use crate::error::RunError;
+use crate::global::GlobalData;
 use crate::kinematics::rigid_body::RigidBodyState;
 use crate::parallel::World;
-use crate::solver::blocks::Block;
-use crate::solver::global::GlobalData;
-use crate::solver::RunError;
 use history::{History, ThRow};
 use restart::OutputCounters;
 use runfile::RunFile;
@@ -153,7 +153,7 @@ pub struct Output {
     progress: progress::Progress,
     xdmf: xdmf::XdmfModel,
     /// The ranks' agreement on stop signals (one cycle behind, non-blocking).
-    vote: crate::parallel::StopVote,
+    vote: Box<dyn crate::parallel::StopVote>,
     /// Wall time spent in the hooks (set-up, samples, states, restart files).
     spent: std::time::Duration,
     /// CPU time of the calling thread in the hooks (seconds): on a loaded
@@ -380,7 +380,7 @@ impl Output {
         let stop_here = self.stop_after == Some(cycle);
         // The vote completed here was cast at the end of the previous cycle:
         // a signal stops every rank at the same cycle, the one after it came.
-        let any_signal = self.vote.cast(ctx.world, signal.is_some());
+        let any_signal = self.vote.cast(signal.is_some());
         if stop_here || any_signal {
             self.save_restart(ctx, s)?;
             let why = if any_signal {

@@ -6,7 +6,8 @@
 //! (`$CRASHSIM_FONT`, else DejaVu Sans from Debian's fonts-dejavu-core,
 //! which ci/setup installs): no fontconfig or freetype at build time.
 
-use super::info::{attr, open};
+use super::h5::attr;
+use super::info::open;
 use hdf5::File;
 use plotters::prelude::*;
 use std::path::Path;

@@ -33,9 +33,9 @@ use super::h5::{self, Rows, Text, Xfer};
 use super::history::{ThLayout, ThRow};
 use super::{Context, InterfaceInfo, LoopState};
 use crate::deck::{ElementKind, Elements, MaterialLaw};
+use crate::element::blocks::ElemOut;
 use crate::model::NO_NODE;
 use crate::parallel::H5Access;
-use crate::solver::blocks::ElemOut;
 use hdf5::types::VarLenUnicode;
 use hdf5::{Dataset, File, Group, H5Type};
 
@@ -91,7 +91,10 @@ pub struct KindRows {
 }
 
 /// Element kinds present in the model (replicated), with this rank's rows.
-pub fn kind_rows(ctx: &Context, blocks: &[Box<dyn crate::solver::blocks::Block>]) -> Vec<KindRows> {
+pub fn kind_rows(
+    ctx: &Context,
+    blocks: &[Box<dyn crate::element::blocks::Block>],
+) -> Vec<KindRows> {
     Elements::KINDS
         .iter()
         .enumerate()
@@ -184,7 +187,7 @@ impl RunFile {
     pub fn create(
         ctx: &Context,
         path: &std::path::Path,
-        blocks: &[Box<dyn crate::solver::blocks::Block>],
+        blocks: &[Box<dyn crate::element::blocks::Block>],
         th: ThLayout,
     ) -> Result<RunFile, String> {
         // A file of an earlier run is removed, not truncated: ext4 flushes a
@@ -210,14 +213,14 @@ impl RunFile {
     pub fn reopen(
         ctx: &Context,
         path: &std::path::Path,
-        blocks: &[Box<dyn crate::solver::blocks::Block>],
+        blocks: &[Box<dyn crate::element::blocks::Block>],
         th: ThLayout,
         n_states: usize,
         th_rows: usize,
     ) -> Result<RunFile, String> {
         let access = ctx.world.hdf5_access()?;
         let file = open_rw(path, &access.fapl)?;
-        let fmt = super::info::attr(&file, "format");
+        let fmt = h5::attr(&file, "format");
         if fmt != FORMAT {
             return Err(err(
                 path,
@@ -260,7 +263,7 @@ impl RunFile {
         file: File,
         access: H5Access,
         path: &std::path::Path,
-        blocks: &[Box<dyn crate::solver::blocks::Block>],
+        blocks: &[Box<dyn crate::element::blocks::Block>],
         th: ThLayout,
     ) -> Result<RunFile, String> {
         let sd = ctx.sd;
@@ -358,7 +361,7 @@ impl RunFile {
     fn write_header(
         &mut self,
         ctx: &Context,
-        blocks: &[Box<dyn crate::solver::blocks::Block>],
+        blocks: &[Box<dyn crate::element::blocks::Block>],
     ) -> Result<(), String> {
         let g = ctx.g;
         let root: &hdf5::Location = self.f();

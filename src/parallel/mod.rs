@@ -1,208 +1,64 @@
-//! The only module that touches MPI: start-up, scattering the subdomains,
-//! the neighbour exchanges, the reductions, and the MPI-IO handle that
-//! parallel HDF5 (`crate::output`) opens its files with. Messages are
-//! bincode-encoded.
+//! Communication between ranks, behind one trait: [`Comm`] has the MPI
+//! implementation ([`MpiWorld`], the only code that calls MPI) and a serial
+//! one ([`Serial`], one rank, no MPI at all) with which contact, the
+//! exchanges and the solver phases are unit-tested in-process.
+//!
+//! The rest of the crate takes a `&World` (= `&dyn Comm`). Typed messages
+//! (`broadcast`, `allgather`, `scatter`) are bincode-encoded on top of the
+//! trait's byte and number primitives.
+
+mod mpi_world;
+mod serial;
+
+pub use mpi_world::MpiWorld;
+pub use serial::Serial;
 
 use crate::domain::Subdomain;
-use mpi::topology::SimpleCommunicator;
-use mpi::traits::*;
+use serde::{de::DeserializeOwned, Serialize};
 
-/// The MPI world for this process (one rank when run without mpirun).
-pub struct World {
-    _universe: mpi::environment::Universe,
-    pub comm: SimpleCommunicator,
-}
+/// The ranks of one run, as the solver sees them.
+pub type World = dyn Comm;
 
-impl World {
-    /// Initialises MPI; `None` if it was already initialised.
-    pub fn init() -> Option<World> {
-        // MPI-IO through ROMIO, not Open MPI's default OMPIO: on BOX1BL with
-        // 2 ranks, once OMPIO had the run file open every later cycle was
-        // slower (cycle loop 4.3 s against 0.6 s with ROMIO and 0.14 s with
-        // no file, best of 7 on a loaded 2-core machine), far beyond the
-        // time spent writing. A user's own OMPI_MCA_io is kept.
-        if std::env::var_os("OMPI_MCA_io").is_none() {
-            std::env::set_var("OMPI_MCA_io", "romio321");
-        }
-        let universe = mpi::initialize()?;
-        let comm = universe.world();
-        Some(World {
-            _universe: universe,
-            comm,
-        })
-    }
-    pub fn rank(&self) -> u32 {
-        self.comm.rank() as u32
-    }
-    pub fn size(&self) -> u32 {
-        self.comm.size() as u32
-    }
-
-    /// Takes the job down (all ranks) with an exit code: a rank that fails must not leave the others hanging.
-    pub fn abort(&self, code: i32) -> ! {
-        self.comm.abort(code)
-    }
-
-    /// Rank 0 passes one Subdomain per rank; every rank gets its own back.
-    pub fn scatter(&self, parts: Option<Vec<Subdomain>>) -> Result<Subdomain, String> {
-        const TAG: i32 = 11;
-        if self.rank() == 0 {
-            let parts = parts.ok_or("rank 0 has no subdomains to scatter")?;
-            let mut mine = None;
-            for sd in parts {
-                if sd.rank == 0 {
-                    mine = Some(sd);
-                } else {
-                    let bytes = bincode::serialize(&sd).map_err(|e| e.to_string())?;
-                    self.comm
-                        .process_at_rank(sd.rank as i32)
-                        .send_with_tag(&bytes[..], TAG);
-                }
-            }
-            mine.ok_or_else(|| "no subdomain for rank 0".to_string())
-        } else {
-            let (bytes, _) = self.comm.process_at_rank(0).receive_vec_with_tag::<u8>(TAG);
-            bincode::deserialize(&bytes).map_err(|e| e.to_string())
-        }
-    }
-
-    /// Broadcasts a value from rank 0 (the others pass `None`).
-    pub fn broadcast<T: serde::Serialize + serde::de::DeserializeOwned>(
-        &self,
-        value: Option<&T>,
-    ) -> Result<T, String> {
-        let root = self.comm.process_at_rank(0);
-        let mut len: u64 = 0;
-        let mut bytes = Vec::new();
-        if self.rank() == 0 {
-            bytes = bincode::serialize(value.ok_or("rank 0 has nothing to broadcast")?)
-                .map_err(|e| e.to_string())?;
-            len = bytes.len() as u64;
-        }
-        root.broadcast_into(&mut len);
-        bytes.resize(len as usize, 0);
-        root.broadcast_into(&mut bytes[..]);
-        bincode::deserialize(&bytes).map_err(|e| e.to_string())
-    }
-
+/// What the solver asks of its communicator. Collective calls must be made
+/// by every rank in the same order; results come in rank order.
+pub trait Comm {
+    fn rank(&self) -> u32;
+    fn size(&self) -> u32;
+    /// Takes the job down (all ranks) with an exit code: a rank that fails
+    /// must not leave the others hanging.
+    fn abort(&self, code: i32) -> !;
+    /// Rank 0 passes one buffer per rank (index = rank); each rank gets its own.
+    fn scatter_bytes(&self, per_rank: Option<Vec<Vec<u8>>>) -> Result<Vec<u8>, String>;
+    /// Rank 0's bytes on every rank (the others pass `None`).
+    fn broadcast_bytes(&self, bytes: Option<Vec<u8>>) -> Vec<u8>;
     /// Sends `send[i]` to neighbour `ranks[i]` and returns what each sent back.
     /// Pairs are served in ascending neighbour order, the lower rank sending
     /// first, so blocking sends cannot deadlock.
-    pub fn exchange_with_neighbours(&self, ranks: &[u32], send: &[Vec<u64>]) -> Vec<Vec<u64>> {
-        const TAG: i32 = 12;
-        let me = self.rank();
-        ranks
-            .iter()
-            .zip(send)
-            .map(|(&nb, out)| {
-                let p = self.comm.process_at_rank(nb as i32);
-                if me < nb {
-                    p.send_with_tag(&out[..], TAG);
-                    p.receive_vec_with_tag::<u64>(TAG).0
-                } else {
-                    let got = p.receive_vec_with_tag::<u64>(TAG).0;
-                    p.send_with_tag(&out[..], TAG);
-                    got
-                }
-            })
-            .collect()
-    }
-
+    fn exchange_with_neighbours(&self, ranks: &[u32], send: &[Vec<u64>]) -> Vec<Vec<u64>>;
     /// Gathers one string per rank on rank 0 (in rank order).
-    pub fn gather_strings(&self, s: &str) -> Option<Vec<String>> {
-        const TAG: i32 = 13;
-        if self.rank() == 0 {
-            let mut out = vec![s.to_string()];
-            for r in 1..self.size() {
-                let (b, _) = self
-                    .comm
-                    .process_at_rank(r as i32)
-                    .receive_vec_with_tag::<u8>(TAG);
-                out.push(String::from_utf8_lossy(&b).into_owned());
-            }
-            Some(out)
-        } else {
-            self.comm
-                .process_at_rank(0)
-                .send_with_tag(s.as_bytes(), TAG);
-            None
-        }
-    }
-
-    pub fn barrier(&self) {
-        self.comm.barrier();
-    }
-
-    /// Every rank's values concatenated in rank order, on every rank (an
-    /// MPI_Allgatherv after an MPI_Allgather of the counts), with each rank's
-    /// count and offset.
-    fn allgather_var<T: mpi::datatype::Equivalence + Default + Clone>(
-        &self,
-        mine: &[T],
-    ) -> (Vec<T>, Vec<i32>, Vec<i32>) {
-        use mpi::datatype::PartitionMut;
-        let n = self.size() as usize;
-        let len = mine.len() as i32;
-        let mut lens = vec![0i32; n];
-        self.comm.all_gather_into(&len, &mut lens[..]);
-        let displs: Vec<i32> = lens
-            .iter()
-            .scan(0, |acc, &l| {
-                let d = *acc;
-                *acc += l;
-                Some(d)
-            })
-            .collect();
-        let total: i32 = lens.iter().sum();
-        let mut buf = vec![T::default(); total as usize];
-        {
-            let mut part = PartitionMut::new(&mut buf[..], &lens[..], &displs[..]);
-            self.comm.all_gather_varcount_into(mine, &mut part);
-        }
-        (buf, lens, displs)
-    }
-
+    fn gather_strings(&self, s: &str) -> Option<Vec<String>>;
+    fn barrier(&self);
     /// Every rank's bytes, in rank order, on every rank.
-    pub fn allgather_bytes(&self, mine: &[u8]) -> Vec<Vec<u8>> {
-        let (buf, lens, displs) = self.allgather_var(mine);
-        (0..lens.len())
-            .map(|r| buf[displs[r] as usize..(displs[r] + lens[r]) as usize].to_vec())
-            .collect()
-    }
-
+    fn allgather_bytes(&self, mine: &[u8]) -> Vec<Vec<u8>>;
     /// Every rank's u64 values concatenated in rank order, on every rank.
     /// Contact's Idel uses it for the element ids deleted in a cycle, only at
     /// the cycles where some rank deleted one.
-    pub fn allgather_u64(&self, mine: &[u64]) -> Vec<u64> {
-        self.allgather_var(mine).0
-    }
-
-    /// Every rank's values, in rank order, on every rank (a typed allgather).
-    pub fn allgather<T: serde::Serialize + serde::de::DeserializeOwned>(&self, mine: &T) -> Vec<T> {
-        let bytes = bincode::serialize(mine).expect("serializable");
-        self.allgather_bytes(&bytes)
-            .iter()
-            .map(|b| bincode::deserialize(b).expect("same type on every rank"))
-            .collect()
-    }
-
+    fn allgather_u64(&self, mine: &[u64]) -> Vec<u64>;
     /// Sum over ranks of each entry (diagnostics: not bitwise independent of the rank count).
-    pub fn sum_f64(&self, v: &mut [f64]) {
-        use mpi::collective::SystemOperation;
-        let send = v.to_vec();
-        self.comm
-            .all_reduce_into(&send[..], v, SystemOperation::sum());
-    }
-
+    fn sum_f64(&self, v: &mut [f64]);
     /// Largest value over ranks.
-    pub fn max_u64(&self, v: u64) -> u64 {
-        use mpi::collective::SystemOperation;
-        let mut out = 0u64;
-        self.comm
-            .all_reduce_into(&v, &mut out, SystemOperation::max());
-        out
-    }
-
+    fn max_u64(&self, v: u64) -> u64;
+    /// Maximum over ranks of each entry.
+    fn max_f64(&self, v: &mut [f64]);
+    /// Logical OR over ranks.
+    fn any(&self, flag: bool) -> bool;
+    /// Sends `send[i]` (f64 values) to neighbour `ranks[i]` and receives its
+    /// values into `recv[i]`, whose lengths are known in advance.
+    /// Non-blocking, so any neighbour order is safe.
+    fn exchange_f64(&self, ranks: &[u32], send: &[Vec<f64>], recv: &mut [Vec<f64>]);
+    /// Sends `send[r]` to every rank r (itself included) and returns what each
+    /// rank sent here, in rank order (an all-to-all with variable counts).
+    fn alltoallv_u64(&self, send: &[Vec<u64>]) -> Vec<Vec<u64>>;
     /// How this world opens the run's HDF5 files. Several ranks share a
     /// file through MPI-IO (HDF5's `mpio` driver on a duplicate of the world
     /// communicator; every rank opens it together). A single rank opens it
@@ -212,172 +68,83 @@ impl World {
     /// under `mpio`, so a file being written can be read meanwhile. The file
     /// is the same either way. This is the one place the output code gets
     /// at MPI.
-    pub fn hdf5_access(&self) -> Result<H5Access, String> {
-        use mpi::raw::AsRaw;
-        let mpio = self.size() > 1;
-        let mut b = hdf5::plist::FileAccess::build();
-        if mpio {
-            b.mpio(self.comm.as_raw(), None);
-        } else {
-            b.sec2().file_locking(false);
-        }
-        let fapl = b.finish().map_err(|e| e.to_string())?;
-        Ok(H5Access { fapl, mpio })
-    }
-
-    /// A stop vote whose all-reduce overlaps the next cycle (see `StopVote`).
-    pub fn stop_vote(&self) -> StopVote {
-        StopVote {
-            send: Box::new(0),
-            recv: Box::new(0),
-            req: None,
-        }
-    }
-
-    /// Logical OR over ranks.
-    pub fn any(&self, flag: bool) -> bool {
-        use mpi::collective::SystemOperation;
-        let mut out = 0i32;
-        self.comm
-            .all_reduce_into(&(flag as i32), &mut out, SystemOperation::max());
-        out != 0
-    }
-
-    /// Sends `send[i]` (f64 values) to neighbour `ranks[i]` and receives its values into `recv[i]`,
-    /// whose lengths are known in advance. Non-blocking, so any neighbour order is safe.
-    pub fn exchange_f64(&self, ranks: &[u32], send: &[Vec<f64>], recv: &mut [Vec<f64>]) {
-        const TAG: i32 = 21;
-        mpi::request::scope(|scope| {
-            let mut reqs = Vec::with_capacity(ranks.len() * 2);
-            for (i, &nb) in ranks.iter().enumerate() {
-                reqs.push(
-                    self.comm
-                        .process_at_rank(nb as i32)
-                        .immediate_send_with_tag(scope, &send[i][..], TAG),
-                );
-            }
-            for (i, r) in recv.iter_mut().enumerate() {
-                reqs.push(
-                    self.comm
-                        .process_at_rank(ranks[i] as i32)
-                        .immediate_receive_into_with_tag(scope, &mut r[..], TAG),
-                );
-            }
-            for q in reqs {
-                q.wait();
-            }
-        });
-    }
-
-    /// Maximum over ranks of each entry.
-    pub fn max_f64(&self, v: &mut [f64]) {
-        use mpi::collective::SystemOperation;
-        let send = v.to_vec();
-        self.comm
-            .all_reduce_into(&send[..], v, SystemOperation::max());
-    }
-
-    /// Sends `send[r]` to every rank r (itself included) and returns what each
-    /// rank sent here, in rank order (an all-to-all with variable counts).
-    pub fn alltoallv_u64(&self, send: &[Vec<u64>]) -> Vec<Vec<u64>> {
-        use mpi::datatype::{Partition, PartitionMut};
-        let n = self.size() as usize;
-        assert_eq!(send.len(), n);
-        let counts: Vec<i32> = send.iter().map(|s| s.len() as i32).collect();
-        let mut rcounts = vec![0i32; n];
-        self.comm.all_to_all_into(&counts[..], &mut rcounts[..]);
-        let displs = |c: &[i32]| -> Vec<i32> {
-            c.iter()
-                .scan(0, |a, &x| {
-                    let d = *a;
-                    *a += x;
-                    Some(d)
-                })
-                .collect()
-        };
-        let sd = displs(&counts);
-        let rd = displs(&rcounts);
-        let flat: Vec<u64> = send.iter().flatten().copied().collect();
-        let total: i32 = rcounts.iter().sum();
-        let mut buf = vec![0u64; total as usize];
-        {
-            let sp = Partition::new(&flat[..], &counts[..], &sd[..]);
-            let mut rp = PartitionMut::new(&mut buf[..], &rcounts[..], &rd[..]);
-            self.comm.all_to_all_varcount_into(&sp, &mut rp);
-        }
-        (0..n)
-            .map(|r| buf[rd[r] as usize..(rd[r] + rcounts[r]) as usize].to_vec())
-            .collect()
-    }
+    fn hdf5_access(&self) -> Result<H5Access, String>;
+    /// A stop vote whose reduction overlaps the next cycle (see [`StopVote`]).
+    fn stop_vote(&self) -> Box<dyn StopVote>;
 }
 
 /// A logical OR over ranks taken once per cycle without a blocking
-/// collective: each cycle completes the all-reduce started the cycle before
-/// and starts the next one (MPI_Iallreduce), so the vote costs no extra
-/// synchronisation point. Every rank gets the result of the same reduction
-/// at the same cycle, one cycle after the votes were cast.
-pub struct StopVote {
-    send: Box<i32>,
-    recv: Box<i32>,
-    req: Option<mpi::ffi::MPI_Request>,
-}
-
-impl StopVote {
+/// collective: each cycle completes the reduction started the cycle before
+/// and starts the next one, so the vote costs no extra synchronisation
+/// point. Every rank gets the result of the same reduction at the same
+/// cycle, one cycle after the votes were cast.
+pub trait StopVote {
     /// Completes the previous vote (false if none) and casts `flag` for the next.
-    pub fn cast(&mut self, world: &World, flag: bool) -> bool {
-        use mpi::raw::AsRaw;
-        let result = self.complete();
-        *self.send = flag as i32;
-        let mut req = std::mem::MaybeUninit::<mpi::ffi::MPI_Request>::uninit();
-        // SAFETY: the buffers are boxed (stable addresses) and live in self
-        // until the request completes (`complete`, also on drop).
-        unsafe {
-            mpi::ffi::MPI_Iallreduce(
-                (&*self.send as *const i32).cast(),
-                (&mut *self.recv as *mut i32).cast(),
-                1,
-                mpi::ffi::RSMPI_INT32_T,
-                mpi::ffi::RSMPI_MAX,
-                world.comm.as_raw(),
-                req.as_mut_ptr(),
-            );
-            self.req = Some(req.assume_init());
-        }
-        result
-    }
-
+    fn cast(&mut self, flag: bool) -> bool;
     /// Waits for the outstanding vote; its result (false if none).
-    pub fn complete(&mut self) -> bool {
-        match self.req.take() {
-            Some(mut r) => {
-                unsafe {
-                    mpi::ffi::MPI_Wait(&mut r, mpi::ffi::RSMPI_STATUS_IGNORE);
-                }
-                *self.recv != 0
-            }
-            None => false,
-        }
-    }
-}
-
-impl Drop for StopVote {
-    fn drop(&mut self) {
-        if self.req.is_some() {
-            let mut finalized = 0;
-            unsafe {
-                mpi::ffi::MPI_Finalized(&mut finalized);
-            }
-            if finalized == 0 {
-                self.complete();
-            }
-        }
-    }
+    fn complete(&mut self) -> bool;
 }
 
 /// A file-access property list for the run's HDF5 files (see
-/// `World::hdf5_access`) and whether it goes through MPI-IO: transfers are
+/// `Comm::hdf5_access`) and whether it goes through MPI-IO: transfers are
 /// then collective or independent, and a flush ends with an fsync.
 pub struct H5Access {
     pub fapl: hdf5::plist::FileAccess,
     pub mpio: bool,
+}
+
+/// The plain-file (sec2) access of a single rank, file locking off.
+fn plain_file_access() -> Result<H5Access, String> {
+    let mut b = hdf5::plist::FileAccess::build();
+    b.sec2().file_locking(false);
+    let fapl = b.finish().map_err(|e| e.to_string())?;
+    Ok(H5Access { fapl, mpio: false })
+}
+
+/// Typed messages over any communicator (bincode).
+impl dyn Comm {
+    /// Broadcasts a value from rank 0 (the others pass `None`).
+    pub fn broadcast<T: Serialize + DeserializeOwned>(
+        &self,
+        value: Option<&T>,
+    ) -> Result<T, String> {
+        let mut bytes = None;
+        if self.rank() == 0 {
+            let v = value.ok_or("rank 0 has nothing to broadcast")?;
+            bytes = Some(bincode::serialize(v).map_err(|e| e.to_string())?);
+        }
+        let got = self.broadcast_bytes(bytes);
+        bincode::deserialize(&got).map_err(|e| e.to_string())
+    }
+
+    /// Every rank's values, in rank order, on every rank (a typed allgather).
+    pub fn allgather<T: Serialize + DeserializeOwned>(&self, mine: &T) -> Vec<T> {
+        let bytes = bincode::serialize(mine).expect("serializable");
+        self.allgather_bytes(&bytes)
+            .iter()
+            .map(|b| bincode::deserialize(b).expect("same type on every rank"))
+            .collect()
+    }
+
+    /// Rank 0 passes one Subdomain per rank; every rank gets its own back.
+    pub fn scatter(&self, parts: Option<Vec<Subdomain>>) -> Result<Subdomain, String> {
+        let per_rank = match (self.rank(), parts) {
+            (0, None) => return Err("rank 0 has no subdomains to scatter".into()),
+            (0, Some(parts)) => {
+                let mut out = vec![Vec::new(); self.size() as usize];
+                let mut mine = false;
+                for sd in &parts {
+                    mine |= sd.rank == 0;
+                    out[sd.rank as usize] = bincode::serialize(sd).map_err(|e| e.to_string())?;
+                }
+                if !mine {
+                    return Err("no subdomain for rank 0".into());
+                }
+                Some(out)
+            }
+            _ => None,
+        };
+        let bytes = self.scatter_bytes(per_rank)?;
+        bincode::deserialize(&bytes).map_err(|e| e.to_string())
+    }
 }

@@ -16,8 +16,7 @@ use crate::domain::Subdomain;
 use crate::parallel::World;
 use rayon::prelude::*;
 
-/// Values per slot: force (3) and moment (3).
-pub const SLOT: usize = 6;
+pub use crate::element::SLOT;
 
 /// Global sort key of a contribution.
 pub fn key(kind: usize, global_elem: u32, corner: usize) -> u64 {

@@ -8,9 +8,8 @@
 //!   → global minimum of the element time steps × /DT scale.
 
 pub mod assembly;
-pub mod blocks;
-pub mod global;
 pub mod listing;
 pub mod run;
 
-pub use run::{run, RunError, RunOptions};
+pub use crate::error::RunError;
+pub use run::{run, RunOptions};

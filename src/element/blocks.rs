@@ -3,7 +3,7 @@
 //! slots), reports its smallest time step and its energy, and lists its
 //! final state. The solver sees every kind through the `Block` trait.
 
-use super::assembly::SLOT;
+use super::SLOT;
 use crate::deck::{ElementKind, FunctionCard, PropertyKind, SpringProperty};
 use crate::domain::LocalElements;
 use crate::element::hex8::{self, Hex8State, SolidSection};

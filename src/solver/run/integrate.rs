@@ -1,0 +1,83 @@
+//! The integration phases of a cycle: the external work and the energy
+//! contact took over the step, positions at n+1, the clock, and the check
+//! that the state stayed finite.
+
+use super::setup::{Ctx, State};
+
+/// External work over the step, with the forces at n; the energy the
+/// contact forces take (elastic, damping, friction), with the mean of the
+/// velocities before and after the step: f·v_after alone overstates the
+/// work by (f·Δt)²/2M, which adds up when friction forces are large and
+/// their work small.
+pub(super) fn work(cx: &Ctx, s: &mut State, dt_v: f64) {
+    let mass = &cx.mass;
+    for l in 0..cx.n {
+        if !cx.owned[l] {
+            continue;
+        }
+        for k in 0..3 {
+            s.w_ext += s.fext[l][k] * s.v[l][k] * dt_v;
+            s.w_ext += s.fext[l][3 + k] * s.vr[l][k] * dt_v;
+            let dv = if s.fixed[l][k] || mass[l] <= 0.0 || cx.tied_tr[l] {
+                0.0
+            } else {
+                (s.fext[l][k] - s.fint[l][k] + s.fcont[l][k] + s.ftie[l][k]) / mass[l] * dt_v
+            };
+            s.e_contact -= s.fcont[l][k] * (s.v[l][k] - 0.5 * dv) * dt_v;
+        }
+    }
+}
+
+/// Positions at n+1: nodes by their velocity, rigid-body main nodes at
+/// their body's centre, tied secondary nodes at their place on the moved segment.
+pub(super) fn positions(cx: &Ctx, s: &mut State) {
+    let dt = s.dt;
+    for l in 0..cx.n {
+        if cx.is_main[l] {
+            continue;
+        }
+        for k in 0..3 {
+            s.x[l][k] += dt * s.v[l][k];
+        }
+    }
+    for (b, lb) in cx.local_bodies.iter().enumerate() {
+        if let Some(l) = lb.main_local {
+            s.x[l as usize] = s.bodies[b].center;
+        }
+    }
+    if !s.ties.is_empty() {
+        s.ties.place(&mut s.x);
+    }
+}
+
+/// t += Δt; the fault injection of the resilience tests (CRASHSIM_FAULT)
+/// makes its rank die abruptly at its cycle.
+pub(super) fn advance_clock(cx: &Ctx, s: &mut State) {
+    s.t += s.dt;
+    s.cycle += 1;
+    s.dt_prev = s.dt;
+    let (rank, cycle) = (cx.world.rank(), s.cycle);
+    if cx.fault.is_some_and(|(r, c)| r == rank && c == cycle) {
+        eprintln!("crashsim: rank {rank}: CRASHSIM_FAULT: aborting at cycle {cycle}");
+        std::process::abort();
+    }
+}
+
+/// Non-finite state: names the node (reported with the element problems,
+/// collectively, so that every rank stops at the same cycle).
+pub(super) fn non_finite(cx: &Ctx, s: &State) -> Option<String> {
+    (0..cx.n)
+        .find(|&l| {
+            !(s.x[l]
+                .iter()
+                .chain(&s.v[l])
+                .chain(&s.vr[l])
+                .all(|c| c.is_finite()))
+        })
+        .map(|l| {
+            format!(
+                "node {} has a non-finite position or velocity at cycle {}, time {:e}",
+                cx.g.node_ids[cx.sd.node_global[l] as usize], s.cycle, s.t
+            )
+        })
+}

@@ -1,0 +1,249 @@
+//! The velocity phases of a cycle, in their order: tied forces to main
+//! nodes, accelerations to v^{n+½}, rigid bodies, imposed velocities and
+//! displacements, rigid walls, boundary conditions, then the tied secondary
+//! nodes follow their main nodes.
+
+use super::setup::{Ctx, State};
+use crate::kinematics::rigid_body::NodeLoad;
+use crate::kinematics::rigid_wall::wall_velocity;
+use crate::output;
+
+/// Every velocity phase of one cycle, with the velocity step `dt_v` = ½(Δt^{n−½}+Δt^{n+½}).
+pub(super) fn velocities(cx: &Ctx, s: &mut State, dt_v: f64) {
+    tied_transfer(cx, s);
+    accelerate(cx, s, dt_v);
+    rigid_bodies(cx, s, dt_v);
+    imposed_motion(cx, s);
+    rigid_walls(cx, s);
+    boundary_conditions(s);
+    // Tied secondary nodes follow their main nodes (after every other condition).
+    if !s.ties.is_empty() {
+        s.ties.recover(cx.world, &s.x, &mut s.v, &mut s.vr, s.dt);
+    }
+}
+
+/// Tied interfaces: the secondary nodes' forces and moments go to their
+/// main nodes (contact::interfaces::type2), summed in key order.
+fn tied_transfer(cx: &Ctx, s: &mut State) {
+    if s.ties.is_empty() {
+        return;
+    }
+    let (fext, fint, fcont) = (&s.fext, &s.fint, &s.fcont);
+    let f_of = |l: usize| {
+        let mut f = [0.0; 6];
+        for k in 0..3 {
+            f[k] = fext[l][k] - fint[l][k] + fcont[l][k];
+            f[3 + k] = fext[l][3 + k] - fint[l][3 + k];
+        }
+        f
+    };
+    s.ties.transfer(cx.world, &s.x, &f_of, &mut s.ftie);
+    let n_contact = s.contact.sums.len();
+    for (smp, su) in s.interface_samples[n_contact..]
+        .iter_mut()
+        .zip(&s.ties.sums)
+    {
+        *smp = output::InterfaceSample {
+            tied_force: su.force,
+            tied_moment: su.moment,
+            ..Default::default()
+        };
+    }
+}
+
+/// Accelerations and velocities at n+½.
+fn accelerate(cx: &Ctx, s: &mut State, dt_v: f64) {
+    let (mass, inertia) = (&cx.mass, &cx.inertia);
+    for l in 0..cx.n {
+        if cx.is_main[l] {
+            continue;
+        }
+        if mass[l] > 0.0 && !cx.tied_tr[l] {
+            for k in 0..3 {
+                if !s.fixed[l][k] {
+                    s.v[l][k] += (s.fext[l][k] - s.fint[l][k] + s.fcont[l][k] + s.ftie[l][k])
+                        / mass[l]
+                        * dt_v;
+                }
+            }
+        }
+        if inertia[l] > 0.0 && !cx.tied_rot[l] {
+            for k in 0..3 {
+                if !s.fixed[l][3 + k] {
+                    s.vr[l][k] += (s.fext[l][3 + k] - s.fint[l][3 + k] + s.ftie[l][3 + k])
+                        / inertia[l]
+                        * dt_v;
+                }
+            }
+        }
+    }
+}
+
+/// This rank's owned member loads of each rigid body, in member order.
+fn rigid_body_loads(cx: &Ctx, s: &State) -> Vec<Vec<NodeLoad>> {
+    cx.local_bodies
+        .iter()
+        .map(|lb| {
+            lb.members
+                .iter()
+                .filter(|(l, _)| cx.owned[*l as usize])
+                .map(|&(l, gl)| {
+                    let l = l as usize;
+                    let f = [0, 1, 2].map(|k| s.fext[l][k] - s.fint[l][k] + s.fcont[l][k]);
+                    let m = [0, 1, 2].map(|k| s.fext[l][3 + k] - s.fint[l][3 + k]);
+                    NodeLoad {
+                        node: gl,
+                        f,
+                        m,
+                        x: s.x[l],
+                    }
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// Rigid bodies: resultant of their nodes, gathered in global node order;
+/// the members take the body's velocity field.
+fn rigid_bodies(cx: &Ctx, s: &mut State, dt_v: f64) {
+    if cx.local_bodies.is_empty() {
+        return;
+    }
+    let all = cx.world.allgather(&rigid_body_loads(cx, s));
+    for (b, lb) in cx.local_bodies.iter().enumerate() {
+        let mut loads: Vec<NodeLoad> = all.iter().flat_map(|r| r[b].iter().copied()).collect();
+        let c_before = s.bodies[b].center;
+        s.bodies[b].advance(&mut loads, [0.0; 3], dt_v, s.dt);
+        for &(l, _) in &lb.members {
+            let l = l as usize;
+            s.v[l] = s.bodies[b].velocity_at(s.x[l], c_before);
+            if cx.inertia[l] > 0.0 {
+                s.vr[l] = s.bodies[b].omega;
+            }
+        }
+        if let Some(l) = lb.main_local {
+            s.v[l as usize] = s.bodies[b].v;
+            s.vr[l as usize] = s.bodies[b].omega;
+        }
+    }
+}
+
+/// Imposed velocities at t + ½Δt; imposed displacements: the velocity that
+/// reaches u(t + Δt) at the end of the step.
+fn imposed_motion(cx: &Ctx, s: &mut State) {
+    let (t, dt) = (s.t, s.dt);
+    let th = t + 0.5 * dt;
+    for (nodes, c) in &cx.impvel {
+        let Some(val) = cx.imposed(c, th) else {
+            continue;
+        };
+        let d = c.card.dir.index();
+        for &l in nodes {
+            if d < 3 {
+                s.v[l as usize][d] = val;
+            } else {
+                s.vr[l as usize][d - 3] = val;
+            }
+        }
+    }
+    for (nodes, c) in &cx.impdisp {
+        let Some(u) = cx.imposed(c, t + dt) else {
+            continue;
+        };
+        let d = c.card.dir.index();
+        for &l in nodes {
+            let l = l as usize;
+            s.v[l][d] = (u - (s.x[l][d] - cx.sd.x[l][d])) / dt;
+        }
+    }
+}
+
+/// Rigid walls: each stops its nodes; a moving wall follows its node's
+/// /IMPVEL, or (free, with a mass) takes the momentum its nodes lost.
+fn rigid_walls(cx: &Ctx, s: &mut State) {
+    let (dt, th) = (s.dt, s.t + 0.5 * s.dt);
+    for (w, (nodes, wall)) in cx.walls.iter().enumerate() {
+        s.walls.force[w] = [0.0; 3];
+        for c in &cx.wall_driver[w] {
+            if let Some(val) = cx.imposed(c, th) {
+                s.walls.v[w][c.card.dir.index()] = val;
+            }
+        }
+        let push = wall_nodes(cx, s, w, nodes);
+        if wall.node.is_some() && cx.wall_driver[w].is_empty() && wall.card.mass > 0.0 {
+            // Free moving wall: its mass takes the momentum the nodes lost.
+            let mut all: Vec<(u32, [f64; 3])> =
+                cx.world.allgather(&push).into_iter().flatten().collect();
+            all.sort_by_key(|p| p.0);
+            let mut f = [0.0; 3];
+            for (_, fi) in &all {
+                for k in 0..3 {
+                    f[k] += fi[k];
+                }
+            }
+            for k in 0..3 {
+                s.walls.v[w][k] += f[k] / wall.card.mass * dt;
+            }
+        }
+        for k in 0..3 {
+            s.walls.p[w][k] += s.walls.v[w][k] * dt;
+        }
+        if let Some(nd) = wall.node {
+            if let Some(&l) = cx.local_of.get(&nd) {
+                s.v[l as usize] = s.walls.v[w];
+            }
+        }
+    }
+}
+
+/// One wall's nodes on this rank: their velocities after the wall, the
+/// wall's work and force; returns the owned nodes' forces (global node, force).
+fn wall_nodes(cx: &Ctx, s: &mut State, w: usize, nodes: &[u32]) -> Vec<(u32, [f64; 3])> {
+    let wall = cx.walls[w].1;
+    let mut push: Vec<(u32, [f64; 3])> = Vec::new();
+    for (i, &l) in nodes.iter().enumerate() {
+        let l = l as usize;
+        let (nv, now_tied, f) = wall_velocity(
+            s.x[l],
+            s.v[l],
+            cx.mass[l],
+            s.dt,
+            s.walls.p[w],
+            wall.normal,
+            s.walls.v[w],
+            wall.card.slide,
+            wall.card.fric,
+            s.walls.tied[w][i],
+        );
+        let v = s.v[l];
+        if cx.owned[l] {
+            // Work of the wall's force on the node over the step,
+            // f·v·dt with f = m(v_after − v_before)/dt: zero for a fixed wall.
+            s.wall_work += cx.mass[l]
+                * ((nv[0] - v[0]) * nv[0] + (nv[1] - v[1]) * nv[1] + (nv[2] - v[2]) * nv[2]);
+        }
+        s.v[l] = nv;
+        s.walls.tied[w][i] = now_tied;
+        if cx.owned[l] && f != [0.0; 3] {
+            push.push((cx.sd.node_global[l], f));
+            for k in 0..3 {
+                s.walls.force[w][k] += f[k];
+            }
+        }
+    }
+    push
+}
+
+/// Boundary conditions have the last word.
+fn boundary_conditions(s: &mut State) {
+    for (l, fixed) in s.fixed.iter().enumerate() {
+        for k in 0..3 {
+            if fixed[k] {
+                s.v[l][k] = 0.0;
+            }
+            if fixed[3 + k] {
+                s.vr[l][k] = 0.0;
+            }
+        }
+    }
+}

@@ -1,0 +1,388 @@
+//! Rank 0's set-up before the scatter: the deck read and checked, the model
+//! built (and built again after /INTER/TYPE7 Inacti = 3), partitioned, the
+//! replicated data and the listing's notes.
+
+use super::RunOptions;
+use crate::deck::{self, EngineFile, ReadOptions};
+use crate::domain::{self, Subdomain};
+use crate::global::GlobalData;
+use crate::kinematics::rigid_body::RigidBodyState;
+use crate::model::{self, Model};
+
+/// What rank 0 prepares: the shared data and one subdomain per rank.
+pub(super) type Prepared = (GlobalData, Vec<Subdomain>, Vec<RigidBodyState>, Vec<String>);
+
+pub(super) fn prepare(opts: &RunOptions, nranks: usize) -> Result<Prepared, String> {
+    let engine = match &opts.engine {
+        Some(p) => EngineFile::Given(p.clone()),
+        None => EngineFile::Auto,
+    };
+    let d = deck::read_deck(
+        &opts.deck,
+        engine,
+        ReadOptions {
+            strict: opts.strict,
+        },
+    )
+    .map_err(|e| e.to_string())?;
+    let m = model::build(&d).map_err(|e| e.to_string())?;
+    let starter = opts.deck.display();
+    let eng = d.engine.clone().ok_or_else(|| {
+        format!(
+            "{starter}: no engine file: expected {} beside the starter, or --engine FILE",
+            deck::engine_beside(&opts.deck)
+                .map(|p| p.display().to_string())
+                .unwrap_or_else(|| "NAME_0001.rad".into())
+        )
+    })?;
+    if eng.run.is_none() {
+        return Err(format!(
+            "{starter}: the engine file has no /RUN card: expected /RUN/NAME/1 and its end time"
+        ));
+    }
+    check_supported(&m)?;
+    // /INTER/TYPE7 Inacti = 3: a starter step — the penetrated secondary nodes
+    // get new coordinates, and the model is built again from them so that
+    // every rank's elements, masses, gaps and the output mesh start there.
+    let (moved, inacti3) = crate::contact::inacti3::depenetrate(&m)?;
+    let m = match moved {
+        Some(x) => {
+            let mut d2 = d.clone();
+            for nc in d2.nodes.iter_mut() {
+                if let Ok(i) = m.nodes.ids.binary_search(&nc.id) {
+                    nc.x = x[i];
+                }
+            }
+            model::build(&d2).map_err(|e| e.to_string())?
+        }
+        None => m,
+    };
+    let (p, _) =
+        domain::partition(&m, nranks).map_err(|e| format!("{starter}: cannot partition: {e}"))?;
+    let sds = domain::split(&m, &p.part, nranks);
+    let rbs = initial_rigid_bodies(&m);
+    let mut g = GlobalData::from_model(&m, eng);
+    // Contact: which ranks hold each node, then the interfaces' static data.
+    let mut holders: Vec<Vec<u32>> = vec![Vec::new(); m.nodes.ids.len()];
+    for sd in &sds {
+        for &gn in &sd.node_global {
+            holders[gn as usize].push(sd.rank);
+        }
+    }
+    g.contact = crate::contact::setup::build(&m, &holders)?;
+    g.tied = crate::contact::tied::build(&m, &holders)?;
+    for th in m.time_histories.iter().filter(|t| t.kind == "NODE") {
+        for &id in &th.objects {
+            let i = m.nodes.ids.binary_search(&id).map_err(|_| {
+                format!(
+                    "{}: /TH/NODE/{}, field NODid: node {id} is not defined in the deck",
+                    th.loc, th.id
+                )
+            })?;
+            g.th_nodes.push(i as u32);
+        }
+    }
+    // Where the engine computes a card's option another way, the listing says so.
+    let mut notes = Vec::new();
+    for r in &inacti3 {
+        if let Some(i) = m
+            .interfaces
+            .iter()
+            .find(|i| i.card.id == r.interface_id && i.card.type_number() == 7)
+        {
+            notes.push(r.note(&i.card.loc.to_string()));
+        }
+    }
+    for p in &m.properties {
+        if let Some(s) = &p.shell {
+            if s.ismstr == 1 {
+                notes.push(format!("{}: /PROP/{}: Ismstr = 1 (small strain) is computed from the initial geometry on 4-node shells, with the large-strain corotational rate form on 3-node shells", p.card.loc, p.card.id));
+            }
+        }
+    }
+    notes.extend(g.tied.notes());
+    // N = 0 with a law the reference engine does not integrate globally.
+    let mut seen = std::collections::BTreeSet::new();
+    for part in &m.parts {
+        let (Some(ip), Some(im)) = (part.prop, part.mat) else {
+            continue;
+        };
+        let p = &m.properties[ip as usize];
+        if p.shell.as_ref().is_none_or(|s| s.n != 0) {
+            continue;
+        }
+        let mat = crate::material::Material::from_card(&m.materials[im as usize]);
+        if let crate::element::shell4::N0Rule::Points(n) = crate::element::shell4::n0_rule(&mat) {
+            if seen.insert((ip, im)) {
+                notes.push(format!("{}: /PROP/{}: N = 0 (global integration) with /MAT/{} (LAW2) is computed with N = {n} integration points, as the reference engine does (its starter WARNING 1912)", p.card.loc, p.card.id, m.materials[im as usize].id));
+            }
+        }
+    }
+    Ok((g, sds, rbs, notes))
+}
+
+/// The engine refuses what it does not compute yet, by name — never a silent substitute.
+fn check_supported(m: &Model) -> Result<(), String> {
+    // Every kind's sections are built once over the whole model: what the
+    // engine cannot compute is refused here, on rank 0, with its card.
+    for set in &m.elements {
+        // One element of each part is enough to build (and so check) its section.
+        let mut seen = std::collections::BTreeSet::new();
+        for e in 0..set.len() {
+            if !seen.insert(set.part[e]) {
+                continue;
+            }
+            let n = set.kind.nodes();
+            let le = domain::LocalElements {
+                kind: set.kind,
+                global: vec![e as u32],
+                part: vec![set.part[e]],
+                nodes: set.nodes[n * e..n * (e + 1)].to_vec(),
+                thick: vec![set.thick[e]],
+            };
+            crate::element::blocks::make_block(
+                &le,
+                &m.nodes.x,
+                &m.nodal_mass,
+                &m.parts,
+                &m.properties,
+                &m.materials,
+                &m.functions,
+            )
+            .map_err(|err| {
+                let part = &m.parts[set.part[e] as usize];
+                match part.prop.map(|i| &m.properties[i as usize].card) {
+                    Some(c) => format!(
+                        "{}: /PROP/{} (part {}, {} elements): {err}",
+                        c.loc,
+                        c.id,
+                        part.id,
+                        set.kind.keyword()
+                    ),
+                    None => format!("part {} ({} elements): {err}", part.id, set.kind.keyword()),
+                }
+            })?;
+        }
+    }
+    let unsupported = |what: &str, loc: &deck::Loc| {
+        Err(format!("{loc}: {what} is not supported by the engine yet"))
+    };
+    for c in &m.bcs {
+        if c.card.skew_id != 0 {
+            return unsupported("/BCS with a skew system", &c.card.loc);
+        }
+    }
+    for c in &m.imposed_velocities {
+        if c.card.skew_id != 0 || c.card.sens_id != 0 || c.card.frame_id != 0 || c.card.icoor != 0 {
+            return unsupported(
+                "/IMPVEL with a skew, sensor, frame or cylindrical coordinates",
+                &c.card.loc,
+            );
+        }
+    }
+    for c in &m.imposed_displacements {
+        if c.card.skew_id != 0
+            || c.card.sens_id != 0
+            || c.card.icoor != 0
+            || c.card.dir.index() >= 3
+        {
+            return unsupported(
+                "/IMPDISP with a skew, sensor, cylindrical coordinates or a rotation",
+                &c.card.loc,
+            );
+        }
+    }
+    for c in &m.initial_velocities {
+        if c.card.skew_id != 0 {
+            return unsupported("/INIVEL with a skew system", &c.card.loc);
+        }
+    }
+    for c in &m.concentrated_loads {
+        if c.card.skew_id != 0 || c.card.sens_id != 0 {
+            return unsupported("/CLOAD with a skew system or sensor", &c.card.loc);
+        }
+    }
+    for c in &m.gravity {
+        if c.card.skew_id != 0 || c.card.sens_id != 0 {
+            return unsupported("/GRAV with a skew system or sensor", &c.card.loc);
+        }
+    }
+    for r in &m.rigid_bodies {
+        if r.card.sens_id != 0 || r.card.skew_id != 0 || r.card.ikrem != 0 || r.card.surf_id != 0 {
+            return unsupported("/RBODY with a sensor, skew, IKREM or surface", &r.card.loc);
+        }
+    }
+    for i in &m.interfaces {
+        check_interface(&i.card)?;
+    }
+    Ok(())
+}
+
+/// Interface options the engine does not compute are refused by name.
+fn check_interface(c: &deck::InterfaceCard) -> Result<(), String> {
+    use deck::InterfaceKind as K;
+    let kw = format!("{}: /INTER/TYPE{}/{}", c.loc, c.type_number(), c.id);
+    let no = |what: &str| Err(format!("{kw}: {what} is not supported by the engine yet"));
+    match &c.kind {
+        K::Type2(t) => {
+            // Spotflag 0 reads as 5 (deck::interfaces::read_type2): the standard
+            // kinematic formulation is the one computed (contact::interfaces::type2).
+            let fo = |field: &str, what: &str| {
+                Err(format!(
+                    "{kw}, field {field}: {what} is not supported by the engine yet"
+                ))
+            };
+            match t.spotflag {
+                5 => {}
+                1 => {
+                    return fo(
+                        "Spotflag",
+                        "Spotflag = 1 (optimized spotweld formulation, element mean rigid motion)",
+                    )
+                }
+                2 => {
+                    return fo(
+                        "Spotflag",
+                        "Spotflag = 2 (formulation for hierarchy levels)",
+                    )
+                }
+                3 => return fo("Spotflag", "Spotflag = 3"),
+                4 => return fo("Spotflag", "Spotflag = 4 (rotations not transmitted)"),
+                10..=12 => {
+                    return fo(
+                        "Spotflag",
+                        &format!(
+                            "Spotflag = {} (formulation with rotations of bricks)",
+                            t.spotflag
+                        ),
+                    )
+                }
+                20..=22 => {
+                    return fo(
+                        "Spotflag",
+                        &format!(
+                            "Spotflag = {} (formulation with failure, rupture cards)",
+                            t.spotflag
+                        ),
+                    )
+                }
+                25..=28 => {
+                    return fo(
+                        "Spotflag",
+                        &format!(
+                            "Spotflag = {} (penalty formulation, penalty card)",
+                            t.spotflag
+                        ),
+                    )
+                }
+                30 => return fo("Spotflag", "Spotflag = 30"),
+                other => return fo("Spotflag", &format!("Spotflag = {other}")),
+            }
+            if t.level != 0 {
+                return fo("Level", "a hierarchy level (Level > 0)");
+            }
+            if t.isearch == 1 {
+                return fo("Isearch", "Isearch = 1 (old search)");
+            }
+            if t.idel2 != 1000 {
+                return fo(
+                    "Idel2",
+                    "Idel2 (releasing nodes when main elements are deleted)",
+                );
+            }
+            if matches!(t.ignore, 2 | 3) && t.dsearch == 0.0 {
+                return fo(
+                    "Ignore",
+                    "Ignore = 2 or 3 with dsearch = 0 (recomputed search distance)",
+                );
+            }
+            if t.rupture.is_some() {
+                return fo("Rupt", "the rupture cards");
+            }
+            if t.penalty.is_some() {
+                return fo("Stfac", "the penalty card");
+            }
+            if let Some(th) = &t.thermal {
+                if th.ithe != 0 {
+                    return fo("Ithe", "heat transfer (Ithe = 1)");
+                }
+            }
+            Ok(())
+        }
+        K::Type11(_) => no("TYPE11 (edge to edge)"),
+        K::Type3(_) => Ok(()),
+        K::Type5(t) => {
+            if t.sens_id != 0 {
+                return no("an activation sensor (sens_ID)");
+            }
+            if t.inacti != 0 {
+                return no("Inacti (moving nodes out of initial penetrations)");
+            }
+            if t.ptlim < 1e29 {
+                return no("a tangential pressure limit (Ptlim)");
+            }
+            Ok(())
+        }
+        K::Type7(t) => {
+            if t.sens_id != 0 {
+                return no("an activation sensor (sens_ID)");
+            }
+            if t.ithe != 0 {
+                return no("heat transfer (Ithe = 1)");
+            }
+            if t.icurv != 0 {
+                return no("a curved gap envelope (Icurv)");
+            }
+            if t.iadm != 0 {
+                return no("adaptive meshing (Iadm)");
+            }
+            if t.ists != 0 {
+                return no("surface-to-surface contact (Ists)");
+            }
+            if t.fct_idf != 0 || t.fric_id != 0 {
+                return no("friction from a function or /FRICTION (fct_IDF, fric_ID)");
+            }
+            if t.ibag == 1 {
+                return no("airbag vent closure (Ibag = 1)");
+            }
+            if t.ifric == 4 {
+                return no("Ifric = 4 (exponential decay law)");
+            }
+            Ok(())
+        }
+    }
+}
+
+/// Rigid bodies at t = 0: mass, centre, inertia from the model; velocity the
+/// mass-weighted mean of its nodes' initial velocities (all /INIVEL/TRA).
+pub(super) fn initial_rigid_bodies(m: &Model) -> Vec<RigidBodyState> {
+    let mut v0 = vec![[0.0; 3]; m.nodes.len()];
+    for iv in &m.initial_velocities {
+        if !iv.card.rotational {
+            for &n in &iv.nodes {
+                v0[n as usize] = iv.card.v;
+            }
+        }
+    }
+    m.rigid_bodies
+        .iter()
+        .map(|rb| {
+            let mut p = [0.0; 3];
+            let main_m = rb.card.mass + m.nodal_mass[rb.main_node as usize];
+            for k in 0..3 {
+                p[k] += main_m * v0[rb.main_node as usize][k];
+            }
+            for &n in &rb.secondary_nodes {
+                for k in 0..3 {
+                    p[k] += m.nodal_mass[n as usize] * v0[n as usize][k];
+                }
+            }
+            let v = if rb.mass > 0.0 {
+                [p[0] / rb.mass, p[1] / rb.mass, p[2] / rb.mass]
+            } else {
+                [0.0; 3]
+            };
+            RigidBodyState::new(rb.card.id, rb.mass, rb.center, rb.inertia, v, [0.0; 3])
+        })
+        .collect()
+}

@@ -1,0 +1,453 @@
+//! One rank's set-up after the scatter: the fixed context of the loop
+//! ([`Ctx`]: node roles, masses, the loads and walls this rank holds) and
+//! the loop's mutable [`State`] at t = 0 (nodal arrays, element blocks,
+//! assembly plan, contact and tied interfaces, walls, energies).
+
+use super::super::assembly::{key, AssemblyPlan, SLOT};
+use super::RunOptions;
+use crate::contact::tied::TiedSystem;
+use crate::contact::ContactSystem;
+use crate::deck::ElementKind;
+use crate::domain::Subdomain;
+use crate::element::blocks::{make_block, Block};
+use crate::error::RunError;
+use crate::global::GlobalData;
+use crate::kinematics::rigid_body::RigidBodyState;
+use crate::model;
+use crate::output;
+use crate::parallel::World;
+use std::collections::HashMap;
+
+/// One rank's rigid body membership.
+pub(super) struct LocalBody {
+    /// (local node, global node) of the members this rank holds (main node included).
+    pub members: Vec<(u32, u32)>,
+    pub main_local: Option<u32>,
+    /// Card MASS + main node's own mass: what the main node carries.
+    pub main_mass: f64,
+}
+
+/// Local nodes of a card, with the card.
+pub(super) type OnLocal<'a, T> = Vec<(Vec<u32>, &'a T)>;
+
+/// What the loop reads and never changes, on one rank.
+pub(super) struct Ctx<'a> {
+    pub world: &'a World,
+    pub opts: &'a RunOptions,
+    pub g: &'a GlobalData,
+    pub sd: &'a Subdomain,
+    pub n: usize,
+    pub local_of: HashMap<u32, u32>,
+    pub owned: Vec<bool>,
+    /// Masses and inertias with the tied secondary nodes' moved to their
+    /// main nodes (/INTER/TYPE2, contact::tied); gravity acts on `sd.mass`.
+    pub mass: Vec<f64>,
+    pub inertia: Vec<f64>,
+    /// Rigid-body main nodes (their body moves them).
+    pub is_main: Vec<bool>,
+    /// Tied secondary nodes: translation (and rotation) follow their main segment.
+    pub tied_tr: Vec<bool>,
+    pub tied_rot: Vec<bool>,
+    /// Kinetic energy: rigid-body main nodes are counted by their body, tied
+    /// secondary nodes by their main nodes (which carry their mass).
+    pub ke_skip: Vec<bool>,
+    /// Rotational: a tied secondary node's inertia is its main nodes' (or, on
+    /// main nodes without rotations, left out of the dynamics: contact::interfaces::type2).
+    pub inertia_ke: Vec<f64>,
+    pub local_bodies: Vec<LocalBody>,
+    pub walls: OnLocal<'a, model::RigidWall>,
+    /// Every translational /IMPVEL on a moving wall's node drives that direction.
+    pub wall_driver: Vec<Vec<&'a model::ImposedMotion>>,
+    pub impdisp: OnLocal<'a, model::ImposedMotion>,
+    pub impvel: OnLocal<'a, model::ImposedMotion>,
+    pub cloads: OnLocal<'a, model::ConcentratedLoad>,
+    pub gravity: OnLocal<'a, model::Gravity>,
+    pub fct_index: HashMap<u64, usize>,
+    /// Each block's first slot in the element contributions (and the end).
+    pub offsets: Vec<usize>,
+    /// The /TH/NODE nodes this rank owns: (index in the list, local node).
+    pub th_local: Vec<(usize, u32)>,
+    pub tstop: f64,
+    pub print_every: u64,
+    pub th_period: f64,
+    /// CRASHSIM_FAULT=RANK:CYCLE makes that rank abort at that cycle (tests only).
+    pub fault: Option<(u32, u64)>,
+}
+
+/// Per-wall state, replicated on every rank: point, velocity; and per rank:
+/// the force its owned nodes put on the wall in the last cycle (time
+/// histories) and which of its nodes are tied to it.
+pub(super) struct Walls {
+    pub p: Vec<[f64; 3]>,
+    pub v: Vec<[f64; 3]>,
+    pub force: Vec<[f64; 3]>,
+    pub tied: Vec<Vec<bool>>,
+}
+
+/// The global time step and what set it (the listing's ELEMENT column).
+#[derive(Clone, Copy, Debug, Default)]
+pub(super) struct Step {
+    pub dt: f64,
+    pub what: &'static str,
+    pub id: u64,
+}
+
+/// The explicit loop's mutable state on one rank.
+pub(super) struct State {
+    pub t: f64,
+    pub cycle: u64,
+    pub dt: f64,
+    pub dt_prev: f64,
+    pub step: Step,
+    pub x: Vec<[f64; 3]>,
+    pub v: Vec<[f64; 3]>,
+    pub vr: Vec<[f64; 3]>,
+    pub fixed: Vec<[bool; 6]>,
+    pub ftie: Vec<[f64; 6]>,
+    pub fint: Vec<[f64; SLOT]>,
+    pub fext: Vec<[f64; SLOT]>,
+    pub contrib: Vec<[f64; SLOT]>,
+    pub blocks: Vec<Box<dyn Block>>,
+    pub plan: AssemblyPlan,
+    /// Contact: forces and stiffness per local node, summed in a fixed global order.
+    pub contact: ContactSystem,
+    pub fcont: Vec<[f64; 3]>,
+    pub kcont: Vec<f64>,
+    /// IBC: (local node, released directions) of this cycle's impacts.
+    pub release: Vec<(u32, u8)>,
+    pub ties: TiedSystem,
+    pub bodies: Vec<RigidBodyState>,
+    pub walls: Walls,
+    /// This rank's partial sums: external work, rigid-wall work, contact energy.
+    pub w_ext: f64,
+    pub wall_work: f64,
+    pub e_contact: f64,
+    /// Kinetic energy at t = 0 (the energy error's reference).
+    pub e0: f64,
+    /// Idel: which of this rank's elements were alive at the last look.
+    pub was_alive: Vec<Vec<bool>>,
+    /// The `--history` CSV samples and schedule.
+    pub history: Vec<(f64, Vec<[f64; 3]>)>,
+    pub next_th: f64,
+    /// Contact forces per node and per-interface samples for the outputs.
+    pub contact_force: Vec<[f64; 3]>,
+    pub interface_samples: Vec<output::InterfaceSample>,
+    /// The `--energies` CSV rows.
+    pub energy_rows: Vec<[f64; 9]>,
+}
+
+/// The index of an element kind in the model's kind table.
+pub(super) fn kind_index(k: ElementKind) -> usize {
+    crate::deck::Elements::KINDS
+        .iter()
+        .position(|&q| q == k)
+        .unwrap()
+}
+
+impl<'a> Ctx<'a> {
+    /// Local nodes of global nodes this rank holds (others left out).
+    fn locals(&self, nodes: &[u32]) -> Vec<u32> {
+        nodes
+            .iter()
+            .filter_map(|gn| self.local_of.get(gn).copied())
+            .collect()
+    }
+
+    /// The value of an imposed motion's function at time t.
+    pub fn imposed(&self, c: &model::ImposedMotion, t: f64) -> Option<f64> {
+        crate::kinematics::function::imposed_value(
+            &self.g.functions[self.fct_index[&c.card.fct]],
+            &c.card,
+            t,
+        )
+    }
+}
+
+/// The context of the loop on this rank; `ties` adds the tied secondary
+/// nodes' masses and inertias to their main nodes.
+pub(super) fn context<'a>(
+    world: &'a World,
+    opts: &'a RunOptions,
+    g: &'a GlobalData,
+    sd: &'a Subdomain,
+    ties: &mut TiedSystem,
+) -> Ctx<'a> {
+    let n = sd.node_global.len();
+    let local_of: HashMap<u32, u32> = sd
+        .node_global
+        .iter()
+        .enumerate()
+        .map(|(l, &gl)| (gl, l as u32))
+        .collect();
+    let mut mass = sd.mass.clone();
+    let mut inertia = sd.inertia.clone();
+    ties.add_masses(&mut mass, &mut inertia);
+    let (tied_tr, tied_rot) = ties.masks(n);
+    let engine = &g.engine;
+    let mut cx = Ctx {
+        world,
+        opts,
+        g,
+        sd,
+        n,
+        local_of,
+        owned: (0..n as u32).map(|l| sd.owns(l)).collect(),
+        mass,
+        inertia,
+        is_main: vec![false; n],
+        tied_tr,
+        tied_rot,
+        ke_skip: Vec::new(),
+        inertia_ke: Vec::new(),
+        local_bodies: Vec::new(),
+        walls: Vec::new(),
+        wall_driver: Vec::new(),
+        impdisp: Vec::new(),
+        impvel: Vec::new(),
+        cloads: Vec::new(),
+        gravity: Vec::new(),
+        fct_index: g
+            .functions
+            .iter()
+            .enumerate()
+            .map(|(i, f)| (f.id, i))
+            .collect(),
+        offsets: Vec::new(),
+        th_local: Vec::new(),
+        tstop: engine.run.as_ref().expect("checked on rank 0").tstop,
+        print_every: engine.print_every.unsigned_abs().max(1),
+        th_period: engine.th_period.unwrap_or(f64::INFINITY),
+        fault: std::env::var("CRASHSIM_FAULT").ok().and_then(|v| {
+            let (r, c) = v.split_once(':')?;
+            Some((r.parse().ok()?, c.parse().ok()?))
+        }),
+    };
+    rigid_body_roles(&mut cx);
+    on_local_cards(&mut cx);
+    cx.th_local = g
+        .th_nodes
+        .iter()
+        .enumerate()
+        .filter_map(|(i, gn)| {
+            cx.local_of
+                .get(gn)
+                .filter(|&&l| cx.owned[l as usize])
+                .map(|&l| (i, l))
+        })
+        .collect();
+    cx
+}
+
+/// Which local nodes are rigid-body main nodes, the bodies this rank holds,
+/// and the kinetic-energy masks that follow.
+fn rigid_body_roles(cx: &mut Ctx) {
+    let (g, sd, n) = (cx.g, cx.sd, cx.n);
+    for rb in &g.rigid_bodies {
+        let mut members: Vec<(u32, u32)> = rb
+            .secondary_nodes
+            .iter()
+            .filter_map(|gn| cx.local_of.get(gn).map(|&l| (l, *gn)))
+            .collect();
+        let main_local = cx.local_of.get(&rb.main_node).copied();
+        if let Some(l) = main_local {
+            cx.is_main[l as usize] = true;
+        }
+        members.sort_by_key(|m| m.1);
+        cx.local_bodies.push(LocalBody {
+            members,
+            main_local,
+            main_mass: rb.card.mass + main_local.map(|l| sd.mass[l as usize]).unwrap_or(0.0),
+        });
+    }
+    cx.ke_skip = (0..n).map(|l| cx.is_main[l] || cx.tied_tr[l]).collect();
+    cx.inertia_ke = (0..n)
+        .map(|l| {
+            if cx.is_main[l] || cx.tied_rot[l] {
+                0.0
+            } else {
+                cx.inertia[l]
+            }
+        })
+        .collect();
+}
+
+/// The walls, imposed motions, loads and gravity with the local nodes they act on.
+fn on_local_cards<'a>(cx: &mut Ctx<'a>) {
+    let g: &'a GlobalData = cx.g;
+    cx.walls = g
+        .rigid_walls
+        .iter()
+        .map(|w| (cx.locals(&w.secondary_nodes), w))
+        .collect();
+    cx.wall_driver = g
+        .rigid_walls
+        .iter()
+        .map(|w| match w.node {
+            Some(nd) => g
+                .imposed_velocities
+                .iter()
+                .filter(|c| c.nodes.binary_search(&nd).is_ok() && c.card.dir.index() < 3)
+                .collect(),
+            None => Vec::new(),
+        })
+        .collect();
+    cx.impdisp = g
+        .imposed_displacements
+        .iter()
+        .map(|c| (cx.locals(&c.nodes), c))
+        .collect();
+    cx.impvel = g
+        .imposed_velocities
+        .iter()
+        .map(|c| (cx.locals(&c.nodes), c))
+        .collect();
+    cx.cloads = g
+        .concentrated_loads
+        .iter()
+        .map(|c| (cx.locals(&c.nodes), c))
+        .collect();
+    cx.gravity = g.gravity.iter().map(|c| (cx.locals(&c.nodes), c)).collect();
+}
+
+/// The loop's state at t = 0 before any force: initial velocities, rigid
+/// bodies' nodes at their bodies, element blocks and their assembly plan,
+/// contact, walls.
+pub(super) fn initial_state(
+    cx: &mut Ctx,
+    ties: TiedSystem,
+    bodies: Vec<RigidBodyState>,
+) -> Result<State, RunError> {
+    let (g, sd, n) = (cx.g, cx.sd, cx.n);
+    let mut x = sd.x.clone();
+    let mut v = vec![[0.0f64; 3]; n];
+    let mut vr = vec![[0.0f64; 3]; n];
+    let mut fixed = vec![[false; 6]; n];
+    for c in &g.bcs {
+        for l in cx.locals(&c.nodes) {
+            for k in 0..6 {
+                fixed[l as usize][k] |= c.card.fixed[k];
+            }
+        }
+    }
+    for iv in &g.initial_velocities {
+        for l in cx.locals(&iv.nodes) {
+            if iv.card.rotational {
+                vr[l as usize] = iv.card.v;
+            } else {
+                v[l as usize] = iv.card.v;
+            }
+        }
+    }
+    for (b, lb) in cx.local_bodies.iter().enumerate() {
+        if let Some(l) = lb.main_local {
+            x[l as usize] = bodies[b].center;
+            v[l as usize] = bodies[b].v;
+        }
+    }
+    let blocks = element_blocks(cx, &x)?;
+    let slot_meta = slots(cx, &blocks);
+    let plan = AssemblyPlan::build(cx.world, sd, &slot_meta);
+    let mut contact = ContactSystem::new(g.contact.clone(), sd, &g.node_ids);
+    contact.set_time_step_scale(g.engine.dt_scale);
+    contact.always_sort = std::env::var_os("CRASHSIM_SORT_EVERY_CYCLE").is_some();
+    let n_samples = contact.sums.len() + ties.sums.len();
+    Ok(State {
+        t: 0.0,
+        cycle: 0,
+        dt: 0.0,
+        dt_prev: 0.0,
+        step: Step::default(),
+        x,
+        v,
+        vr,
+        fixed,
+        ftie: vec![[0.0f64; 6]; n],
+        fint: vec![[0.0f64; SLOT]; n],
+        fext: vec![[0.0f64; SLOT]; n],
+        contrib: vec![[0.0f64; SLOT]; slot_meta.len()],
+        was_alive: blocks
+            .iter()
+            .map(|b| vec![true; b.local().global.len()])
+            .collect(),
+        blocks,
+        plan,
+        contact,
+        fcont: vec![[0.0f64; 3]; n],
+        kcont: vec![0.0f64; n],
+        release: Vec::new(),
+        ties,
+        bodies,
+        walls: initial_walls(cx),
+        w_ext: 0.0,
+        wall_work: 0.0,
+        e_contact: 0.0,
+        e0: 0.0,
+        history: Vec::new(),
+        next_th: 0.0,
+        contact_force: Vec::new(),
+        interface_samples: vec![output::InterfaceSample::default(); n_samples],
+        energy_rows: Vec::new(),
+    })
+}
+
+/// Element blocks, one per kind present on this rank.
+fn element_blocks(cx: &Ctx, x: &[[f64; 3]]) -> Result<Vec<Box<dyn Block>>, RunError> {
+    let (g, sd) = (cx.g, cx.sd);
+    let mut blocks: Vec<Box<dyn Block>> = Vec::new();
+    for le in &sd.elements {
+        if let Some(b) = make_block(
+            le,
+            x,
+            &sd.mass,
+            &g.parts,
+            &g.properties,
+            &g.materials,
+            &g.functions,
+        )
+        .map_err(RunError::Input)?
+        {
+            blocks.push(b);
+        }
+    }
+    Ok(blocks)
+}
+
+/// Each element corner owns a slot keyed by (kind, global element, corner);
+/// sets the blocks' first slots (`offsets`) and returns (local node, key) per slot.
+fn slots(cx: &mut Ctx, blocks: &[Box<dyn Block>]) -> Vec<(u32, u64)> {
+    let mut slot_meta: Vec<(u32, u64)> = Vec::new();
+    for b in blocks {
+        cx.offsets.push(slot_meta.len());
+        let le = b.local();
+        let nc = b.corners();
+        let ki = kind_index(b.kind());
+        let stride = b.kind().nodes();
+        for e in 0..le.global.len() {
+            for c in 0..nc {
+                slot_meta.push((le.nodes[stride * e + c], key(ki, le.global[e], c)));
+            }
+        }
+    }
+    cx.offsets.push(slot_meta.len());
+    slot_meta
+}
+
+/// Wall motion at t = 0: a moving wall starts with its card's velocity.
+fn initial_walls(cx: &Ctx) -> Walls {
+    let g = cx.g;
+    Walls {
+        p: g.rigid_walls.iter().map(|w| w.point).collect(),
+        v: g.rigid_walls
+            .iter()
+            .map(|w| {
+                if w.node.is_some() {
+                    w.card.v0
+                } else {
+                    [0.0; 3]
+                }
+            })
+            .collect(),
+        force: vec![[0.0f64; 3]; g.rigid_walls.len()],
+        tied: cx.walls.iter().map(|(l, _)| vec![false; l.len()]).collect(),
+    }
+}

@@ -1,0 +1,140 @@
+//! The global time step: the smallest scaled element step over every rank
+//! (ties: smallest kind, then id), combined with the contact nodal and
+//! kinematic steps, and the collective stop when any rank met a problem.
+
+use super::setup::{kind_index, Ctx, State, Step};
+use crate::contact::ContactStep;
+use crate::deck::ElementKind;
+use crate::element::blocks::Block;
+use crate::error::RunError;
+
+/// What this rank found at the end of a cycle's forces.
+#[derive(Default)]
+pub(super) struct Found {
+    /// The first element that cannot go on: (kind, global element index, what).
+    pub element: Option<(ElementKind, u32, &'static str)>,
+    /// A node with a non-finite position or velocity (its message).
+    pub node: Option<String>,
+    /// This rank's contact time step terms.
+    pub contact: Option<ContactStep>,
+}
+
+/// The listing's name of an element kind.
+pub(super) fn kind_name(k: ElementKind) -> &'static str {
+    match k {
+        ElementKind::Shell4 => "SHELL",
+        ElementKind::Shell3 => "SH3N",
+        ElementKind::Brick8 => "BRICK",
+        ElementKind::Tetra4 => "TETRA4",
+        ElementKind::Spring => "SPRING",
+        ElementKind::Truss => "TRUSS",
+        ElementKind::Beam => "BEAM",
+    }
+}
+
+/// This rank's smallest element time step: (dt, kind index, element id).
+fn smallest_element_step(cx: &Ctx, blocks: &[Box<dyn Block>]) -> (f64, usize, u64) {
+    let mut best = (f64::INFINITY, usize::MAX, u64::MAX);
+    for b in blocks {
+        let ki = kind_index(b.kind());
+        let le = b.local();
+        for (e, st) in b.steps().iter().enumerate() {
+            if b.alive(e) {
+                let id = cx.g.element_ids[ki][le.global[e] as usize];
+                let cand = (st.dt, ki, id);
+                if cand.0 < best.0 || (cand.0 == best.0 && (cand.1, cand.2) < (best.1, best.2)) {
+                    best = cand;
+                }
+            }
+        }
+    }
+    best
+}
+
+/// Global minimum of the scaled element time steps and the contact steps
+/// (collective); a problem found on any rank stops every rank.
+pub(super) fn global_step(cx: &Ctx, s: &State, found: Found) -> Result<Step, RunError> {
+    let (cycle, t) = (s.cycle, s.t);
+    let best = smallest_element_step(cx, &s.blocks);
+    let prob = found.element.map(|(k, ge, m)| {
+        format!(
+            "{} {} {m} at cycle {cycle}, time {t:e}",
+            kind_name(k),
+            cx.g.element_ids[kind_index(k)][ge as usize]
+        )
+    });
+    let prob = found.node.or(prob);
+    let cs = found.contact.unwrap_or(ContactStep {
+        kin_dt: f64::INFINITY,
+        ..Default::default()
+    });
+    let all: Vec<(f64, usize, u64, Option<String>, ContactStep)> =
+        cx.world.allgather(&(best.0, best.1, best.2, prob, cs));
+    if let Some(m) = all.iter().find_map(|(_, _, _, p, _)| p.clone()) {
+        return Err(RunError::Physics(m));
+    }
+    let (d, ki, id) = all.iter().fold(
+        (f64::INFINITY, usize::MAX, u64::MAX),
+        |acc, &(d, k, id, _, _)| {
+            if d < acc.0 || (d == acc.0 && (k, id) < (acc.1, acc.2)) {
+                (d, k, id)
+            } else {
+                acc
+            }
+        },
+    );
+    if !d.is_finite() {
+        return Err(RunError::Physics(format!(
+            "no element left to set the time step at cycle {cycle}, time {t:e}"
+        )));
+    }
+    let contacts: Vec<ContactStep> = all.into_iter().map(|a| a.4).collect();
+    let step = Step {
+        dt: d,
+        what: kind_name(crate::deck::Elements::KINDS[ki]),
+        id,
+    };
+    let mut step = with_contact(step, &contacts);
+    step.dt *= cx.g.engine.dt_scale;
+    Ok(step)
+}
+
+/// Contact (EQ. 8.8.5.1–2): nodes held by their elements and contact springs
+/// together, Δt = 1/√(1/Δt_el² + max K/(2M)); then the kinematic step.
+/// Ties: the smallest node / interface id.
+fn with_contact(mut step: Step, all: &[ContactStep]) -> Step {
+    let d = step.dt;
+    let (mut q, mut qid) = (0.0f64, 0u64);
+    let (mut kin, mut kid) = (f64::INFINITY, 0u64);
+    for c in all {
+        if c.nodal_q > q || (c.nodal_q == q && q > 0.0 && c.node_id < qid) {
+            q = c.nodal_q;
+            qid = c.node_id;
+        }
+        if c.kin_dt < kin || (c.kin_dt == kin && c.inter_id < kid) {
+            kin = c.kin_dt;
+            kid = c.inter_id;
+        }
+    }
+    if q > 0.0 {
+        let combined = 1.0 / (1.0 / (d * d) + q).sqrt();
+        // Named after the node once contact costs more than 1% of the step.
+        if combined < 0.99 * d {
+            step = Step {
+                dt: combined,
+                what: "NODE",
+                id: qid,
+            };
+        } else {
+            step.dt = combined;
+        }
+    }
+    if kin < step.dt {
+        step = Step {
+            dt: kin,
+            what: "INTER",
+            id: kid,
+        };
+    }
+    step
+}
