@@ -1,7 +1,8 @@
 //! crashsim: a distributed explicit crash solver for Radioss block-format decks.
 //!
-//! Data flow (see ARCHITECTURE.md): `deck` (text → cards) → `model` (validated,
-//! resolved, masses) → `partition` (METIS) → `domain` (one rank's share) →
+//! Data flow (see ARCHITECTURE.md): `input` (picks the reader: `deck` for
+//! Radioss, text → cards → model) → `model` (validated, resolved, masses; the
+//! only thing later stages read) → `partition` (METIS) → `domain` (one rank's share) →
 //! `solver` (explicit cycle over `element`, `material`, `kinematics`).
 //! MPI lives only in `parallel`.
 
@@ -9,6 +10,7 @@ pub mod contact;
 pub mod deck;
 pub mod domain;
 pub mod element;
+pub mod input;
 pub mod kinematics;
 pub mod material;
 pub mod model;

@@ -26,6 +26,6 @@ fuzz_target!(|data: &[u8]| {
     let path = deck_path();
     std::fs::write(path, data).expect("write fuzz deck");
     if let Ok(deck) = read_deck(path, EngineFile::None, ReadOptions::default()) {
-        let _ = crashsim::model::build(&deck);
+        let _ = crashsim::deck::build_model(&deck);
     }
 });

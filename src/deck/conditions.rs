@@ -2,31 +2,15 @@
 //! sections: /BCS, /IMPVEL, /IMPDISP, /INIVEL/TRA (and /ROT), /CLOAD, /GRAV,
 //! /RWALL/PLANE, /RBODY, /SECT.
 
-use super::error::{DeckResult, Loc};
 use super::fields::{Card, Cards};
 use super::source::Block;
 use super::{header_id, header_id_opt, Deck, Id};
-use serde::{Deserialize, Serialize};
+use crate::model::{
+    BoundarySpec, ConcentratedLoadSpec, CrossSectionSpec, Dof, GravitySpec, ImposedMotionSpec,
+    InitialVelocitySpec, InputResult, RigidBodySpec, RigidWallSpec,
+};
 
-/// A degree of freedom named by a `Dir` field.
-#[derive(Clone, Copy, Debug, Serialize, Deserialize, PartialEq, Eq)]
-pub enum Dof {
-    X,
-    Y,
-    Z,
-    Xx,
-    Yy,
-    Zz,
-}
-
-impl Dof {
-    /// 0..2 translations, 3..5 rotations.
-    pub fn index(self) -> usize {
-        self as usize
-    }
-}
-
-fn read_dir(c: &Card, col: usize, default: Option<Dof>) -> DeckResult<Dof> {
+fn read_dir(c: &Card, col: usize, default: Option<Dof>) -> InputResult<Dof> {
     match c.text(col, 10).to_ascii_uppercase().as_str() {
         "X" => Ok(Dof::X),
         "Y" => Ok(Dof::Y),
@@ -39,163 +23,8 @@ fn read_dir(c: &Card, col: usize, default: Option<Dof>) -> DeckResult<Dof> {
     }
 }
 
-/// /BCS: Trarot (1-10, "111 111"), skew_ID (11-20), grnod_ID (21-30).
-#[derive(Clone, Debug, Serialize, Deserialize)]
-pub struct BcsCard {
-    pub id: Id,
-    pub title: String,
-    /// Fixed translations X, Y, Z then rotations X, Y, Z.
-    pub fixed: [bool; 6],
-    pub skew_id: Id,
-    pub grnod: Id,
-    pub loc: Loc,
-}
-
-/// /IMPVEL and /IMPDISP: value(t) = Fscale_Y · f(t / Ascale_x) on Dir, between Tstart and Tstop.
-#[derive(Clone, Debug, Serialize, Deserialize)]
-pub struct ImposedMotionCard {
-    pub id: Id,
-    pub unit_id: Id,
-    pub title: String,
-    pub fct: Id,
-    pub dir: Dof,
-    pub skew_id: Id,
-    pub sens_id: Id,
-    pub grnod: Id,
-    /// /IMPVEL only (0 = none).
-    pub frame_id: Id,
-    /// 0 Cartesian, 1 cylindrical.
-    pub icoor: i64,
-    /// Abscissa (time) scale (0 → 1).
-    pub ascale_x: f64,
-    /// Ordinate scale (0 → 1).
-    pub fscale_y: f64,
-    pub tstart: f64,
-    /// 0 → 1e30.
-    pub tstop: f64,
-    pub loc: Loc,
-}
-
-/// /INIVEL/TRA (translational) or /INIVEL/ROT (rotational): V (1-60), grnod_ID (61-70), skew_ID (71-80).
-#[derive(Clone, Debug, Serialize, Deserialize)]
-pub struct InitialVelocityCard {
-    pub id: Id,
-    pub title: String,
-    pub rotational: bool,
-    pub v: [f64; 3],
-    pub grnod: Id,
-    pub skew_id: Id,
-    pub loc: Loc,
-}
-
-/// /CLOAD: force (or moment) on each node of the group, Fscale_y · f(t / Ascale_x).
-#[derive(Clone, Debug, Serialize, Deserialize)]
-pub struct ConcentratedLoadCard {
-    pub id: Id,
-    pub unit_id: Id,
-    pub title: String,
-    pub fct: Id,
-    pub dir: Dof,
-    pub skew_id: Id,
-    pub sens_id: Id,
-    pub grnod: Id,
-    pub ascale_x: f64,
-    pub fscale_y: f64,
-    pub loc: Loc,
-}
-
-/// /GRAV: acceleration Fscale_y · f(t / Ascale_x) (constant Fscale_y if fct_ID = 0).
-#[derive(Clone, Debug, Serialize, Deserialize)]
-pub struct GravityCard {
-    pub id: Id,
-    pub unit_id: Id,
-    pub title: String,
-    pub fct: Id,
-    pub dir: Dof,
-    pub skew_id: Id,
-    pub sens_id: Id,
-    /// 0 = every node.
-    pub grnod: Id,
-    pub ascale_x: f64,
-    pub fscale_y: f64,
-    pub loc: Loc,
-}
-
-/// /RWALL/PLANE: an infinite plane through M with normal M→M1.
-#[derive(Clone, Debug, Serialize, Deserialize)]
-pub struct RigidWallCard {
-    pub id: Id,
-    pub title: String,
-    /// Node that carries a moving wall (0 = fixed wall).
-    pub node_id: Id,
-    /// 0 sliding, 1 tied, 2 sliding with friction.
-    pub slide: i64,
-    /// Secondary nodes added / removed.
-    pub grnod1: Id,
-    pub grnod2: Id,
-    /// Nodes closer than this at t = 0 are secondary too (0 = none by distance).
-    pub d_search: f64,
-    pub fric: f64,
-    pub diameter: f64,
-    pub ffac: f64,
-    pub ifq: i64,
-    /// Point M (fixed wall), or the moving node's position (filled by the model).
-    pub m: [f64; 3],
-    /// Moving wall: mass and initial velocity.
-    pub mass: f64,
-    pub v0: [f64; 3],
-    /// Point M1: the normal is M→M1.
-    pub m1: [f64; 3],
-    pub loc: Loc,
-}
-
-/// /RBODY: rigid body of a node group with main node RBID.
-#[derive(Clone, Debug, Serialize, Deserialize)]
-pub struct RigidBodyCard {
-    pub id: Id,
-    pub title: String,
-    pub main_node: Id,
-    pub sens_id: Id,
-    pub skew_id: Id,
-    pub ispher: i64,
-    /// Mass added to the main node.
-    pub mass: f64,
-    pub grnod: Id,
-    pub ikrem: i64,
-    pub icog: i64,
-    pub surf_id: Id,
-    /// Added inertia Jxx, Jyy, Jzz, Jxy, Jyz, Jxz.
-    pub inertia: [f64; 6],
-    pub ioptoff: i64,
-    pub iexpams: i64,
-    pub loc: Loc,
-}
-
-/// /SECT: a cut through the model for force output.
-#[derive(Clone, Debug, Serialize, Deserialize)]
-pub struct SectionCard {
-    pub id: Id,
-    pub title: String,
-    pub nodes: [Id; 3],
-    pub grnod: Id,
-    pub isave: i64,
-    pub frame_id: Id,
-    pub dt: f64,
-    pub alpha: f64,
-    pub file_name: String,
-    pub grbric: Id,
-    pub grshel: Id,
-    pub grtrus: Id,
-    pub grbeam: Id,
-    pub grsprg: Id,
-    pub grtria: Id,
-    pub iframe: i64,
-    pub interfaces: Vec<Id>,
-    pub loc: Loc,
-}
-
 /// Returns false for a variant this reader does not support.
-pub(super) fn parse_condition(block: &Block, deck: &mut Deck) -> DeckResult<bool> {
+pub(super) fn parse_condition(block: &Block, deck: &mut Deck) -> InputResult<bool> {
     let p1 = block.parts.get(1).map(String::as_str).unwrap_or("");
     match block.parts[0].as_str() {
         "BCS" => {
@@ -204,7 +33,7 @@ pub(super) fn parse_condition(block: &Block, deck: &mut Deck) -> DeckResult<bool
             let title = cards.title();
             let c = cards.next("the card with Trarot, skew_ID, grnod_ID")?;
             let fixed = read_trarot(&c)?;
-            deck.bcs.push(BcsCard {
+            deck.bcs.push(BoundarySpec {
                 id,
                 title,
                 fixed,
@@ -239,7 +68,7 @@ pub(super) fn parse_condition(block: &Block, deck: &mut Deck) -> DeckResult<bool
                     format!("{ascale_x}: the time scale must be > 0"),
                 ));
             }
-            let card = ImposedMotionCard {
+            let card = ImposedMotionSpec {
                 id,
                 unit_id,
                 title,
@@ -273,7 +102,7 @@ pub(super) fn parse_condition(block: &Block, deck: &mut Deck) -> DeckResult<bool
             let title = cards.title();
             // Vx (1-20) Vy (21-40) Vz (41-60) grnod_ID (61-70) skew_ID (71-80)
             let c = cards.next("the card with Vx, Vy, Vz, grnod_ID, skew_ID")?;
-            deck.initial_velocities.push(InitialVelocityCard {
+            deck.initial_velocities.push(InitialVelocitySpec {
                 id,
                 title,
                 rotational,
@@ -306,7 +135,7 @@ pub(super) fn parse_condition(block: &Block, deck: &mut Deck) -> DeckResult<bool
             }
             let fscale_y = super::fields::one_if_zero(c.real(81, "Fscale_y", 0.0)?);
             if grav {
-                deck.gravity.push(GravityCard {
+                deck.gravity.push(GravitySpec {
                     id,
                     unit_id,
                     title,
@@ -320,7 +149,7 @@ pub(super) fn parse_condition(block: &Block, deck: &mut Deck) -> DeckResult<bool
                     loc: c.loc(),
                 });
             } else {
-                deck.concentrated_loads.push(ConcentratedLoadCard {
+                deck.concentrated_loads.push(ConcentratedLoadSpec {
                     id,
                     unit_id,
                     title,
@@ -392,7 +221,7 @@ pub(super) fn parse_condition(block: &Block, deck: &mut Deck) -> DeckResult<bool
                     format!("{d_search}: search distance must be >= 0"),
                 ));
             }
-            deck.rigid_walls.push(RigidWallCard {
+            deck.rigid_walls.push(RigidWallSpec {
                 id,
                 title,
                 node_id,
@@ -442,7 +271,7 @@ pub(super) fn parse_condition(block: &Block, deck: &mut Deck) -> DeckResult<bool
             if mass < 0.0 {
                 return Err(c1.err("MASS", format!("{mass}: added mass must be >= 0")));
             }
-            deck.rigid_bodies.push(RigidBodyCard {
+            deck.rigid_bodies.push(RigidBodySpec {
                 id,
                 title,
                 main_node: c1.id(1, "RBID")?,
@@ -502,7 +331,7 @@ pub(super) fn parse_condition(block: &Block, deck: &mut Deck) -> DeckResult<bool
                     }
                 }
             }
-            deck.sections.push(SectionCard {
+            deck.sections.push(CrossSectionSpec {
                 id,
                 title,
                 nodes: [
@@ -535,7 +364,7 @@ pub(super) fn parse_condition(block: &Block, deck: &mut Deck) -> DeckResult<bool
 /// The Trarot field: six 0/1 codes in columns 4-6 (translations) and 8-10
 /// (rotations) of the first field, e.g. `   111 111`. Written without the
 /// blank (`111111`) is accepted too.
-fn read_trarot(c: &Card) -> DeckResult<[bool; 6]> {
+fn read_trarot(c: &Card) -> InputResult<[bool; 6]> {
     let raw = super::fields::Card::text(c, 1, 10);
     let digits: String = raw.chars().filter(|ch| !ch.is_whitespace()).collect();
     if digits.len() != 6 || !digits.chars().all(|ch| ch == '0' || ch == '1') {

@@ -674,8 +674,8 @@ mod tests {
 
     /// Johnson-Cook (BOX1BL's LAW2 without rate term), hardening `b`.
     fn jc(b: f64) -> Material {
-        use crate::deck::{JohnsonCook, Loc, MaterialCard, MaterialLaw};
-        Material::from_card(&MaterialCard {
+        use crate::model::{JohnsonCook, Loc, MaterialLaw, MaterialSpec};
+        Material::from_card(&MaterialSpec {
             id: 1,
             unit_id: 0,
             title: "t".into(),

@@ -3,10 +3,10 @@
 #![allow(clippy::needless_range_loop)] // index loops mirror the tensor formulas
 
 use super::*;
-use crate::deck::{JohnsonCook, Loc, MaterialCard, MaterialLaw};
+use crate::model::{JohnsonCook, Loc, MaterialLaw, MaterialSpec};
 
-fn card(law: MaterialLaw) -> MaterialCard {
-    MaterialCard {
+fn card(law: MaterialLaw) -> MaterialSpec {
+    MaterialSpec {
         id: 1,
         unit_id: 0,
         title: "t".into(),

@@ -77,7 +77,7 @@ pub fn hexa_volume(x: [V3; 8]) -> f64 {
 
 /// Shortest element edge in the model (shells, solids, 1-D elements).
 pub fn geometry_edge_min(model: &super::Model) -> f64 {
-    use crate::deck::ElementKind;
+    use crate::model::ElementKind;
     let x = &model.nodes.x;
     let mut best = f64::INFINITY;
     let mut edge = |a: u32, b: u32| {

@@ -39,8 +39,8 @@
 
 use super::h5::Member;
 use super::{Context, LoopState};
-use crate::deck::{ElementKind, PropertyKind};
 use crate::model::geometry::{hexa_volume, quad_area, tetra_volume, triangle_area};
+use crate::model::{ElementKind, PropertyKind};
 use crate::solver::blocks::Block;
 use serde::{Deserialize, Serialize};
 

@@ -32,8 +32,8 @@
 use super::h5::{self, Rows, Text, Xfer};
 use super::history::{ThLayout, ThRow};
 use super::{Context, InterfaceInfo, LoopState};
-use crate::deck::{ElementKind, Elements, MaterialLaw};
 use crate::model::NO_NODE;
+use crate::model::{ElementKind, MaterialLaw};
 use crate::parallel::H5Access;
 use crate::solver::blocks::ElemOut;
 use hdf5::types::VarLenUnicode;
@@ -92,7 +92,7 @@ pub struct KindRows {
 
 /// Element kinds present in the model (replicated), with this rank's rows.
 pub fn kind_rows(ctx: &Context, blocks: &[Box<dyn crate::solver::blocks::Block>]) -> Vec<KindRows> {
-    Elements::KINDS
+    ElementKind::ALL
         .iter()
         .enumerate()
         .filter(|(ki, _)| !ctx.g.element_ids[*ki].is_empty())
@@ -383,7 +383,7 @@ impl RunFile {
         h5::write_rows(&ds, &self.node_rows, &ids, &self.xfer)?;
         self.write_node_array(&mesh, "coordinates", |l| sd.x[l])?;
         for kr in &self.kinds {
-            let ki = Elements::KINDS.iter().position(|&k| k == kr.kind).unwrap();
+            let ki = ElementKind::ALL.iter().position(|&k| k == kr.kind).unwrap();
             let nn = kr.kind.nodes();
             let grp = mesh
                 .create_group(kind_name(kr.kind))

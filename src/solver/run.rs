@@ -5,12 +5,12 @@ use super::blocks::{make_block, Block};
 use super::global::GlobalData;
 use super::listing::{format_row, Listing, Row, HEADER};
 use crate::contact::{ContactStep, ContactSystem};
-use crate::deck::{self, Dof, ElementKind, EngineFile, ReadOptions};
 use crate::domain::{self, Subdomain};
+use crate::input::{self, Input, InputOptions};
 use crate::kinematics::function;
 use crate::kinematics::rigid_body::{NodeLoad, RigidBodyState};
 use crate::kinematics::rigid_wall::wall_velocity;
-use crate::model::{self, Model};
+use crate::model::{self, Dof, ElementKind, Model};
 use crate::output;
 use crate::parallel::World;
 use std::collections::HashMap;
@@ -60,24 +60,20 @@ impl RunError {
 type Prepared = (GlobalData, Vec<Subdomain>, Vec<RigidBodyState>, Vec<String>);
 
 fn prepare(opts: &RunOptions, nranks: usize) -> Result<Prepared, String> {
-    let engine = match &opts.engine {
-        Some(p) => EngineFile::Given(p.clone()),
-        None => EngineFile::Auto,
-    };
-    let d = deck::read_deck(
+    let d = Input::read(
         &opts.deck,
-        engine,
-        ReadOptions {
+        &InputOptions {
+            controls: opts.engine.clone(),
             strict: opts.strict,
         },
     )
     .map_err(|e| e.to_string())?;
-    let m = model::build(&d).map_err(|e| e.to_string())?;
+    let m = d.model().map_err(|e| e.to_string())?;
     let starter = opts.deck.display();
-    let eng = d.engine.clone().ok_or_else(|| {
+    let eng = m.engine.clone().ok_or_else(|| {
         format!(
             "{starter}: no engine file: expected {} beside the starter, or --engine FILE",
-            deck::engine_beside(&opts.deck)
+            input::controls_beside(&opts.deck)
                 .map(|p| p.display().to_string())
                 .unwrap_or_else(|| "NAME_0001.rad".into())
         )
@@ -93,15 +89,9 @@ fn prepare(opts: &RunOptions, nranks: usize) -> Result<Prepared, String> {
     // every rank's elements, masses, gaps and the output mesh start there.
     let (moved, inacti3) = crate::contact::inacti3::depenetrate(&m)?;
     let m = match moved {
-        Some(x) => {
-            let mut d2 = d.clone();
-            for nc in d2.nodes.iter_mut() {
-                if let Ok(i) = m.nodes.ids.binary_search(&nc.id) {
-                    nc.x = x[i];
-                }
-            }
-            model::build(&d2).map_err(|e| e.to_string())?
-        }
+        Some(x) => d
+            .model_with_node_positions(&m.nodes.ids, &x)
+            .map_err(|e| e.to_string())?,
         None => m,
     };
     let (p, _) =
@@ -211,7 +201,7 @@ fn check_supported(m: &Model) -> Result<(), String> {
             })?;
         }
     }
-    let unsupported = |what: &str, loc: &deck::Loc| {
+    let unsupported = |what: &str, loc: &model::Loc| {
         Err(format!("{loc}: {what} is not supported by the engine yet"))
     };
     for c in &m.bcs {
@@ -266,8 +256,8 @@ fn check_supported(m: &Model) -> Result<(), String> {
 }
 
 /// Interface options the engine does not compute are refused by name.
-fn check_interface(c: &deck::InterfaceCard) -> Result<(), String> {
-    use deck::InterfaceKind as K;
+fn check_interface(c: &model::InterfaceSpec) -> Result<(), String> {
+    use model::InterfaceKind as K;
     let kw = format!("{}: /INTER/TYPE{}/{}", c.loc, c.type_number(), c.id);
     let no = |what: &str| Err(format!("{kw}: {what} is not supported by the engine yet"));
     match &c.kind {
@@ -635,7 +625,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
         }
     }
     let kind_index = |k: ElementKind| {
-        crate::deck::Elements::KINDS
+        crate::model::ElementKind::ALL
             .iter()
             .position(|&q| q == k)
             .unwrap()
@@ -714,7 +704,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
                 return out;
             }
             for (b, w) in blocks.iter().zip(was_alive.iter_mut()) {
-                let ki = crate::deck::Elements::KINDS
+                let ki = crate::model::ElementKind::ALL
                     .iter()
                     .position(|&q| q == b.kind())
                     .unwrap() as u8;
@@ -1610,7 +1600,7 @@ fn global_step(
     t: f64,
 ) -> Result<Step, RunError> {
     let kind_index = |k: ElementKind| {
-        crate::deck::Elements::KINDS
+        crate::model::ElementKind::ALL
             .iter()
             .position(|&q| q == k)
             .unwrap()
@@ -1678,7 +1668,7 @@ fn global_step(
     }
     let mut step = Step {
         dt: d,
-        what: kind_name(crate::deck::Elements::KINDS[ki]),
+        what: kind_name(crate::model::ElementKind::ALL[ki]),
         id,
     };
     if q > 0.0 {
@@ -1843,7 +1833,7 @@ fn write_final_elements(
     path: &Path,
 ) -> Result<(), RunError> {
     let kind_index = |k: ElementKind| {
-        crate::deck::Elements::KINDS
+        crate::model::ElementKind::ALL
             .iter()
             .position(|&q| q == k)
             .unwrap()
@@ -1865,7 +1855,7 @@ fn write_final_elements(
     for (ki, ge, v) in rows {
         s.push_str(&format!(
             "{},{}",
-            kind_name(crate::deck::Elements::KINDS[ki]),
+            kind_name(crate::model::ElementKind::ALL[ki]),
             g.element_ids[ki][ge as usize]
         ));
         for val in &v[..6] {

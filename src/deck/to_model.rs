@@ -1,17 +1,15 @@
-//! `build`: Deck → Model. Resolves every id (an unknown one is an error at
-//! the card that names it), applies defaults, computes masses.
+//! `build_model`: Deck → Model. Resolves every id (an unknown one is an
+//! error at the card that names it), applies defaults, computes masses.
 
-use super::index::IdIndex;
-use super::mass::{element_masses, lump, totals};
-use super::properties::{resolve_shell, resolve_solid};
-use super::sets::{node_groups, shell_groups, surfaces, SetContext};
-use super::*;
-use crate::deck::{Deck, DeckError, ElementCard, Elements, Loc, MaterialLaw, PropertyKind, Side};
+use super::id_index::IdIndex;
+use super::resolve_sets::{node_groups, shell_groups, surfaces, SetContext};
+use super::{Deck, ElementCard, Elements};
+use crate::model::*;
 
 /// Builds the model from a deck.
-pub fn build(deck: &Deck) -> Result<Model, DeckError> {
+pub fn build_model(deck: &Deck) -> Result<Model, InputError> {
     let begin = deck.begin.clone().ok_or_else(|| {
-        DeckError::new(
+        InputError::new(
             Loc {
                 file: deck.path.clone(),
                 line: 0,
@@ -38,7 +36,7 @@ pub fn build(deck: &Deck) -> Result<Model, DeckError> {
         "/NODE",
     )?;
     if nodes.is_empty() {
-        return Err(DeckError::new(
+        return Err(InputError::new(
             begin.loc.clone(),
             "/NODE",
             "",
@@ -177,14 +175,14 @@ pub fn build(deck: &Deck) -> Result<Model, DeckError> {
         deck.functions.iter().map(|f| (f.id, f.loc.clone())),
         "/FUNCT",
     )?;
-    let group = |id: Id, loc: &Loc, kw: &str, field: &str| -> Result<Vec<u32>, DeckError> {
+    let group = |id: Id, loc: &Loc, kw: &str, field: &str| -> Result<Vec<u32>, InputError> {
         Ok(
             node_groups[grnod_index.resolve(id, loc, kw, field)? as usize]
                 .nodes
                 .clone(),
         )
     };
-    let check_fct = |id: Id, loc: &Loc, kw: &str, field: &str| -> Result<(), DeckError> {
+    let check_fct = |id: Id, loc: &Loc, kw: &str, field: &str| -> Result<(), InputError> {
         if id != 0 {
             fct_index.resolve(id, loc, kw, field)?;
         }
@@ -199,9 +197,9 @@ pub fn build(deck: &Deck) -> Result<Model, DeckError> {
             card: c.clone(),
         });
     }
-    let motions = |cards: &[crate::deck::ImposedMotionCard],
+    let motions = |cards: &[crate::deck::ImposedMotionSpec],
                    kw: &str|
-     -> Result<Vec<ImposedMotion>, DeckError> {
+     -> Result<Vec<ImposedMotion>, InputError> {
         let mut out = Vec::new();
         for c in cards {
             let k = format!("{kw}/{}", c.id);
@@ -270,7 +268,7 @@ pub fn build(deck: &Deck) -> Result<Model, DeckError> {
         let d = [c.m1[0] - point[0], c.m1[1] - point[1], c.m1[2] - point[2]];
         let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
         if len.is_nan() || len <= 0.0 {
-            return Err(DeckError::new(
+            return Err(InputError::new(
                 c.loc.clone(),
                 &kw,
                 "X_M1",
@@ -327,16 +325,17 @@ pub fn build(deck: &Deck) -> Result<Model, DeckError> {
         } else {
             &c.ids_loc
         };
-        let side = |s: Side, field: &str| -> Result<Option<(Vec<u32>, Vec<[u32; 4]>)>, DeckError> {
-            Ok(match s {
-                Side::NodeGroup(g) => Some((group(g, loc, &kw, field)?, Vec::new())),
-                Side::Surface(sid) => {
-                    let s = &surfaces[surf_index.resolve(sid, loc, &kw, field)? as usize];
-                    Some((s.nodes(), s.segments.clone()))
-                }
-                Side::Line(_) | Side::SameAsOther | Side::None => None,
-            })
-        };
+        let side =
+            |s: Side, field: &str| -> Result<Option<(Vec<u32>, Vec<[u32; 4]>)>, InputError> {
+                Ok(match s {
+                    Side::NodeGroup(g) => Some((group(g, loc, &kw, field)?, Vec::new())),
+                    Side::Surface(sid) => {
+                        let s = &surfaces[surf_index.resolve(sid, loc, &kw, field)? as usize];
+                        Some((s.nodes(), s.segments.clone()))
+                    }
+                    Side::Line(_) | Side::SameAsOther | Side::None => None,
+                })
+            };
         let (sec_field, main_field) = c.side_fields();
         let main = side(c.main_side(), main_field)?;
         let sec = side(c.secondary_side(), sec_field)?;
@@ -425,7 +424,7 @@ pub fn build(deck: &Deck) -> Result<Model, DeckError> {
             .filter(|&n| n != main_node)
             .collect();
         if secondary_nodes.is_empty() {
-            return Err(DeckError::new(c.loc.clone(), &kw, "Gnod_id", "the rigid body's node group is empty (or holds only the main node); expected its secondary nodes"));
+            return Err(InputError::new(c.loc.clone(), &kw, "Gnod_id", "the rigid body's node group is empty (or holds only the main node); expected its secondary nodes"));
         }
         let xm = model.nodes.x[main_node as usize];
         let mut m = c.mass + model.nodal_mass[main_node as usize];
@@ -488,7 +487,7 @@ fn resolve_skipped(
     field: &str,
     family: &str,
     deck: &Deck,
-) -> Result<u32, DeckError> {
+) -> Result<u32, InputError> {
     index.resolve(id, loc, kw, field).map_err(|mut e| {
         let id_s = id.to_string();
         if let Some(w) = deck.warnings.iter().find(|w| {
@@ -512,8 +511,8 @@ fn add_element(
     part_index: &IdIndex,
     parts: &[Part],
     properties: &[Property],
-    materials: &[crate::deck::MaterialCard],
-) -> Result<(), DeckError> {
+    materials: &[crate::deck::MaterialSpec],
+) -> Result<(), InputError> {
     let kw = format!("{}/{}", kind.keyword(), c.part);
     let p = part_index.resolve(c.part, &c.loc, &kw, "part_ID")?;
     let part = &parts[p as usize];
@@ -531,7 +530,7 @@ fn add_element(
             None => "no property".to_string(),
             Some(p) => format!("property {} of another kind", p.card.id),
         };
-        return Err(DeckError::new(
+        return Err(InputError::new(
             c.loc.clone(),
             &kw,
             "part_ID",
@@ -553,7 +552,7 @@ fn add_element(
     ) {
         match part.mat {
             None => {
-                return Err(DeckError::new(
+                return Err(InputError::new(
                     c.loc.clone(),
                     &kw,
                     "mat_ID",
