@@ -1,6 +1,6 @@
 //! Fuzz target for the Radioss deck reader: arbitrary bytes as a starter deck,
 //! read with `deck::read_deck` and, when that succeeds, built with
-//! `model::build`. Neither may panic, overflow, hang or run out of memory;
+//! `deck::build_model`. Neither may panic, overflow, hang or run out of memory;
 //! any `Err` is fine.
 //!
 //! The reader works on files (it resolves `#include` relative to the deck's

@@ -1,6 +1,6 @@
 //! /PART, /PROP/TYPE1 (SHELL), /PROP/TYPE14 (SOLID), /PROP/TYPE4 (SPRING),
 //! /PROP/TYPE13 (SPR_BEAM), /DEF_SHELL, /DEF_SOLID, /FUNCT, /ADMAS.
-//! Values are kept as written (0 = "default"); `model::build` resolves the
+//! Values are kept as written (0 = "default"); `to_model` resolves the
 //! defaults that depend on other cards (/DEF_SHELL, the material law).
 
 use super::fields::{zero_default, Cards};

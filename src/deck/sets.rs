@@ -1,7 +1,7 @@
 //! Sets: /GRNOD/NODE, /GRNOD/GRNOD, /GRNOD/PART, /GRSHEL/SHEL, /SURF/PART,
 //! /SURF/SEG, /SURF/GRSHEL, /SUBSET. Each is a title line then a list of ids,
 //! ten 10-column fields a line, until the next keyword (/SURF/SEG: one
-//! segment a line). Ids are resolved by `model::build`.
+//! segment a line). Ids are resolved by `to_model`.
 
 use super::fields::Cards;
 use super::source::Block;

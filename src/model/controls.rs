@@ -39,6 +39,8 @@ impl Default for Units {
     }
 }
 
+/// The engine (run) controls: end time, time-step control, output periods, stop criteria
+/// (Radioss: the engine file `NAME_0001.rad`).
 #[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
 pub struct Engine {
     /// /RUN/name/number: run name, run number, end time.
@@ -100,6 +102,7 @@ impl Default for Engine {
     }
 }
 
+/// The run to compute: name, number and end time (Radioss: /RUN).
 #[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
 pub struct RunSpec {
     pub name: String,
@@ -109,6 +112,7 @@ pub struct RunSpec {
     pub loc: Loc,
 }
 
+/// A time-step control on a class of entities (Radioss: /DT/...).
 #[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
 pub struct DtControl {
     pub target: String,
@@ -118,6 +122,7 @@ pub struct DtControl {
     pub loc: Loc,
 }
 
+/// Stop criteria (Radioss: /STOP).
 #[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
 pub struct StopSpec {
     pub emax: f64,

@@ -5,6 +5,7 @@
 use super::{Id, Loc};
 use serde::{Deserialize, Serialize};
 
+/// A material: density, elastic constants and its law (Radioss: /MAT/LAW1, /MAT/LAW2).
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct MaterialSpec {
     pub id: Id,
@@ -20,6 +21,7 @@ pub struct MaterialSpec {
     pub loc: Loc,
 }
 
+/// The constitutive law and its parameters.
 #[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
 pub enum MaterialLaw {
     /// LAW1: linear elastic.

@@ -6,6 +6,7 @@
 use super::{Id, Loc};
 use serde::{Deserialize, Serialize};
 
+/// A property: the section and formulation choices of the parts that name it (Radioss: /PROP).
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct PropertySpec {
     pub id: Id,
@@ -15,6 +16,7 @@ pub struct PropertySpec {
     pub loc: Loc,
 }
 
+/// Which element family the property is for, with its options.
 #[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
 pub enum PropertyKind {
     Shell(ShellProperty),

@@ -24,7 +24,8 @@ pub const EP30: f64 = 1.0e30;
 /// Starter's "infinite" rupture distance for TYPE2 (Max_N_Dist, Max_T_Dist).
 pub const EP20: f64 = 1.0e20;
 
-/// One `/INTER/TYPEn/inter_ID[/unit_ID]` block.
+/// One contact interface: its type with the type's options, and where it is
+/// defined (Radioss: an `/INTER/TYPEn/inter_ID[/unit_ID]` block).
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct InterfaceSpec {
     pub id: Id,
