@@ -90,3 +90,57 @@ pub fn load(path: &Path, opts: &InputOptions) -> Result<Model, InputError> {
 pub fn controls_beside(path: &Path) -> Option<PathBuf> {
     deck::engine_beside(path)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn free_plate() -> PathBuf {
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("decks/free_plate/free_plate_0000.rad")
+    }
+
+    /// The engine file beside the starter is found and read into the model's
+    /// run controls; an explicit one that does not exist is an input error.
+    #[test]
+    fn reads_the_run_controls_beside_the_input() {
+        let m = load(&free_plate(), &InputOptions::default()).unwrap();
+        assert!(m.engine.as_ref().is_some_and(|e| e.run.is_some()));
+        assert_eq!(
+            controls_beside(&free_plate()).unwrap(),
+            free_plate().with_file_name("free_plate_0001.rad")
+        );
+        let missing = InputOptions {
+            controls: Some(free_plate().with_file_name("missing_0001.rad")),
+            strict: false,
+        };
+        let e = load(&free_plate(), &missing).unwrap_err();
+        assert!(e.loc.file.ends_with("missing_0001.rad"), "{e}");
+    }
+
+    /// Rebuilding with moved nodes moves exactly those nodes and recomputes
+    /// what depends on positions (masses); the same positions give the same
+    /// model bit for bit.
+    #[test]
+    fn rebuilds_the_model_with_moved_nodes() {
+        let input = Input::read(&free_plate(), &InputOptions::default()).unwrap();
+        let m = input.model().unwrap();
+        let same = input
+            .model_with_node_positions(&m.nodes.ids, &m.nodes.x)
+            .unwrap();
+        assert_eq!(same.nodes.x, m.nodes.x);
+        let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+        assert_eq!(bits(&same.nodal_mass), bits(&m.nodal_mass));
+
+        let mut x = m.nodes.x.clone();
+        x[0][0] -= 5.0; // stretches the elements at node 0: more area, more mass
+        let moved = input.model_with_node_positions(&m.nodes.ids, &x).unwrap();
+        assert_eq!(moved.nodes.x[0], x[0]);
+        assert_eq!(moved.nodes.x[1..], m.nodes.x[1..]);
+        assert!(moved.nodal_mass[0] > m.nodal_mass[0]);
+        // Only the first node is given: the others keep the input's positions.
+        let first = input
+            .model_with_node_positions(&m.nodes.ids[..1], &x[..1])
+            .unwrap();
+        assert_eq!(first.nodes.x, moved.nodes.x);
+    }
+}
