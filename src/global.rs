@@ -2,11 +2,11 @@
 //! properties, functions, conditions (with global node lists), the engine
 //! controls. Rank 0 builds it from the model and broadcasts it.
 
-use crate::deck::{Engine, FunctionCard, Id, MaterialCard, Units};
 use crate::model::{
     Bcs, ConcentratedLoad, Gravity, ImposedMotion, InitialVelocity, Model, Part, Property,
     RigidBody, RigidWall,
 };
+use crate::model::{Engine, Function, Id, MaterialSpec, Units};
 use serde::{Deserialize, Serialize};
 
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -16,9 +16,9 @@ pub struct GlobalData {
     pub units: Units,
     pub engine: Engine,
     pub parts: Vec<Part>,
-    pub materials: Vec<MaterialCard>,
+    pub materials: Vec<MaterialSpec>,
     pub properties: Vec<Property>,
-    pub functions: Vec<FunctionCard>,
+    pub functions: Vec<Function>,
     pub bcs: Vec<Bcs>,
     pub imposed_velocities: Vec<ImposedMotion>,
     pub imposed_displacements: Vec<ImposedMotion>,

@@ -1,7 +1,8 @@
 //! crashsim: a distributed explicit crash solver for Radioss block-format decks.
 //!
-//! Data flow (see ARCHITECTURE.md): `deck` (text → cards) → `model` (validated,
-//! resolved, masses) → `partition` (METIS) → `domain` (one rank's share) →
+//! Data flow (see ARCHITECTURE.md): `input` (picks the reader: `deck` for
+//! Radioss, text → cards → model) → `model` (validated, resolved, masses; the
+//! only thing later stages read) → `partition` (METIS) → `domain` (one rank's share) →
 //! `solver` (explicit cycle over `element`, `material`, `kinematics`).
 //! MPI lives only in `parallel`.
 
@@ -11,6 +12,7 @@ pub mod domain;
 pub mod element;
 pub mod error;
 pub mod global;
+pub mod input;
 pub mod kinematics;
 pub mod material;
 pub mod model;
@@ -18,3 +20,4 @@ pub mod output;
 pub mod parallel;
 pub mod solver;
 pub mod summary;
+pub mod vec3;

@@ -1,9 +1,9 @@
 //! The `crashsim` command line.
 
 use clap::{Parser, Subcommand};
-use crashsim::deck::{self, EngineFile, ReadOptions};
 use crashsim::domain;
-use crashsim::model::{self, Model};
+use crashsim::input::{self, InputOptions};
+use crashsim::model::{InputError, Model};
 use crashsim::parallel::{Comm, MpiWorld, World};
 use crashsim::summary::Summary;
 use std::path::{Path, PathBuf};
@@ -114,19 +114,14 @@ enum Command {
     },
 }
 
-fn load(args: &DeckArgs) -> Result<Model, deck::DeckError> {
-    let engine = match &args.engine {
-        Some(p) => EngineFile::Given(p.clone()),
-        None => EngineFile::Auto,
-    };
-    let d = deck::read_deck(
+fn load(args: &DeckArgs) -> Result<Model, InputError> {
+    input::load(
         &args.deck,
-        engine,
-        ReadOptions {
+        &InputOptions {
+            controls: args.engine.clone(),
             strict: args.strict,
         },
-    )?;
-    model::build(&d)
+    )
 }
 
 fn input_error(e: impl std::fmt::Display) -> ExitCode {

@@ -1,7 +1,7 @@
 //! `crashsim check`: what a deck holds, as a table or one JSON object.
 
-use crate::deck::{ElementKind, Id};
 use crate::model::{geometry_edge_min, Model};
+use crate::model::{ElementKind, Id};
 use serde::Serialize;
 use std::collections::BTreeMap;
 

@@ -1,6 +1,6 @@
 //! Fuzz target for the Radioss deck reader: arbitrary bytes as a starter deck,
 //! read with `deck::read_deck` and, when that succeeds, built with
-//! `model::build`. Neither may panic, overflow, hang or run out of memory;
+//! `deck::build_model`. Neither may panic, overflow, hang or run out of memory;
 //! any `Err` is fine.
 //!
 //! The reader works on files (it resolves `#include` relative to the deck's
@@ -26,6 +26,6 @@ fuzz_target!(|data: &[u8]| {
     let path = deck_path();
     std::fs::write(path, data).expect("write fuzz deck");
     if let Ok(deck) = read_deck(path, EngineFile::None, ReadOptions::default()) {
-        let _ = crashsim::model::build(&deck);
+        let _ = crashsim::deck::build_model(&deck);
     }
 });

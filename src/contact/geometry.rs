@@ -11,19 +11,7 @@
 //! forces and moments about the contact point. A 3-node segment repeats its
 //! third node (`n[3] == n[2]`) and is one triangle.
 
-pub type V3 = [f64; 3];
-
-// The vector algebra the model's measures use.
-pub use crate::model::geometry::{cross, dot, norm, sub};
-
-#[inline]
-pub fn add(a: V3, b: V3) -> V3 {
-    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
-}
-#[inline]
-pub fn scale(a: V3, s: f64) -> V3 {
-    [a[0] * s, a[1] * s, a[2] * s]
-}
+pub use crate::vec3::{add, cross, dot, norm, scale, sub, V3};
 
 /// Closest point of triangle (a, b, c) to p, as barycentric weights of a, b, c
 /// (Voronoi-region walk: vertices, edges, then the face).

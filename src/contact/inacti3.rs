@@ -30,7 +30,7 @@
 use super::geometry::{self as geo, V3};
 use super::search::{self, Aabb};
 use super::setup::{self, Law};
-use crate::deck::InterfaceKind;
+use crate::model::InterfaceKind;
 use crate::model::Model;
 
 /// Passes over the secondary nodes before giving up on the ones still penetrated.

@@ -10,8 +10,8 @@ use super::friction::FrictionLaw;
 use super::gap::{self, GapRule};
 use super::geometry::{self as geo, V3};
 use super::stiffness;
-use crate::deck::{ElementKind, InterfaceKind, MaterialCard};
 use crate::model::{geometry as mgeo, Model};
+use crate::model::{ElementKind, InterfaceKind, MaterialSpec as MaterialCard};
 use serde::{Deserialize, Serialize};
 use std::collections::HashMap;
 

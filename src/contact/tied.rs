@@ -22,8 +22,8 @@
 use super::geometry::{self as geo, V3};
 use super::interfaces::type2;
 use super::setup::NONE;
-use crate::deck::InterfaceKind;
 use crate::domain::Subdomain;
+use crate::model::InterfaceKind;
 use crate::model::Model;
 use crate::parallel::World;
 use serde::{Deserialize, Serialize};

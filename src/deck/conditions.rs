@@ -2,31 +2,15 @@
 //! sections: /BCS, /IMPVEL, /IMPDISP, /INIVEL/TRA (and /ROT), /CLOAD, /GRAV,
 //! /RWALL/PLANE, /RBODY, /SECT.
 
-use super::error::{DeckResult, Loc};
 use super::fields::{Card, Cards};
 use super::source::Block;
 use super::{header_id, header_id_opt, Deck, Id};
-use serde::{Deserialize, Serialize};
+use crate::model::{
+    BoundarySpec, ConcentratedLoadSpec, CrossSectionSpec, Dof, GravitySpec, ImposedMotionSpec,
+    InitialVelocitySpec, InputResult, RigidBodySpec, RigidWallSpec,
+};
 
-/// A degree of freedom named by a `Dir` field.
-#[derive(Clone, Copy, Debug, Serialize, Deserialize, PartialEq, Eq)]
-pub enum Dof {
-    X,
-    Y,
-    Z,
-    Xx,
-    Yy,
-    Zz,
-}
-
-impl Dof {
-    /// 0..2 translations, 3..5 rotations.
-    pub fn index(self) -> usize {
-        self as usize
-    }
-}
-
-fn read_dir(c: &Card, col: usize, default: Option<Dof>) -> DeckResult<Dof> {
+fn read_dir(c: &Card, col: usize, default: Option<Dof>) -> InputResult<Dof> {
     match c.text(col, 10).to_ascii_uppercase().as_str() {
         "X" => Ok(Dof::X),
         "Y" => Ok(Dof::Y),
@@ -39,503 +23,373 @@ fn read_dir(c: &Card, col: usize, default: Option<Dof>) -> DeckResult<Dof> {
     }
 }
 
-/// /BCS: Trarot (1-10, "111 111"), skew_ID (11-20), grnod_ID (21-30).
-#[derive(Clone, Debug, Serialize, Deserialize)]
-pub struct BcsCard {
-    pub id: Id,
-    pub title: String,
-    /// Fixed translations X, Y, Z then rotations X, Y, Z.
-    pub fixed: [bool; 6],
-    pub skew_id: Id,
-    pub grnod: Id,
-    pub loc: Loc,
-}
-
-/// /IMPVEL and /IMPDISP: value(t) = Fscale_Y · f(t / Ascale_x) on Dir, between Tstart and Tstop.
-#[derive(Clone, Debug, Serialize, Deserialize)]
-pub struct ImposedMotionCard {
-    pub id: Id,
-    pub unit_id: Id,
-    pub title: String,
-    pub fct: Id,
-    pub dir: Dof,
-    pub skew_id: Id,
-    pub sens_id: Id,
-    pub grnod: Id,
-    /// /IMPVEL only (0 = none).
-    pub frame_id: Id,
-    /// 0 Cartesian, 1 cylindrical.
-    pub icoor: i64,
-    /// Abscissa (time) scale (0 → 1).
-    pub ascale_x: f64,
-    /// Ordinate scale (0 → 1).
-    pub fscale_y: f64,
-    pub tstart: f64,
-    /// 0 → 1e30.
-    pub tstop: f64,
-    pub loc: Loc,
-}
-
-/// /INIVEL/TRA (translational) or /INIVEL/ROT (rotational): V (1-60), grnod_ID (61-70), skew_ID (71-80).
-#[derive(Clone, Debug, Serialize, Deserialize)]
-pub struct InitialVelocityCard {
-    pub id: Id,
-    pub title: String,
-    pub rotational: bool,
-    pub v: [f64; 3],
-    pub grnod: Id,
-    pub skew_id: Id,
-    pub loc: Loc,
-}
-
-/// /CLOAD: force (or moment) on each node of the group, Fscale_y · f(t / Ascale_x).
-#[derive(Clone, Debug, Serialize, Deserialize)]
-pub struct ConcentratedLoadCard {
-    pub id: Id,
-    pub unit_id: Id,
-    pub title: String,
-    pub fct: Id,
-    pub dir: Dof,
-    pub skew_id: Id,
-    pub sens_id: Id,
-    pub grnod: Id,
-    pub ascale_x: f64,
-    pub fscale_y: f64,
-    pub loc: Loc,
-}
-
-/// /GRAV: acceleration Fscale_y · f(t / Ascale_x) (constant Fscale_y if fct_ID = 0).
-#[derive(Clone, Debug, Serialize, Deserialize)]
-pub struct GravityCard {
-    pub id: Id,
-    pub unit_id: Id,
-    pub title: String,
-    pub fct: Id,
-    pub dir: Dof,
-    pub skew_id: Id,
-    pub sens_id: Id,
-    /// 0 = every node.
-    pub grnod: Id,
-    pub ascale_x: f64,
-    pub fscale_y: f64,
-    pub loc: Loc,
-}
-
-/// /RWALL/PLANE: an infinite plane through M with normal M→M1.
-#[derive(Clone, Debug, Serialize, Deserialize)]
-pub struct RigidWallCard {
-    pub id: Id,
-    pub title: String,
-    /// Node that carries a moving wall (0 = fixed wall).
-    pub node_id: Id,
-    /// 0 sliding, 1 tied, 2 sliding with friction.
-    pub slide: i64,
-    /// Secondary nodes added / removed.
-    pub grnod1: Id,
-    pub grnod2: Id,
-    /// Nodes closer than this at t = 0 are secondary too (0 = none by distance).
-    pub d_search: f64,
-    pub fric: f64,
-    pub diameter: f64,
-    pub ffac: f64,
-    pub ifq: i64,
-    /// Point M (fixed wall), or the moving node's position (filled by the model).
-    pub m: [f64; 3],
-    /// Moving wall: mass and initial velocity.
-    pub mass: f64,
-    pub v0: [f64; 3],
-    /// Point M1: the normal is M→M1.
-    pub m1: [f64; 3],
-    pub loc: Loc,
-}
-
-/// /RBODY: rigid body of a node group with main node RBID.
-#[derive(Clone, Debug, Serialize, Deserialize)]
-pub struct RigidBodyCard {
-    pub id: Id,
-    pub title: String,
-    pub main_node: Id,
-    pub sens_id: Id,
-    pub skew_id: Id,
-    pub ispher: i64,
-    /// Mass added to the main node.
-    pub mass: f64,
-    pub grnod: Id,
-    pub ikrem: i64,
-    pub icog: i64,
-    pub surf_id: Id,
-    /// Added inertia Jxx, Jyy, Jzz, Jxy, Jyz, Jxz.
-    pub inertia: [f64; 6],
-    pub ioptoff: i64,
-    pub iexpams: i64,
-    pub loc: Loc,
-}
-
-/// /SECT: a cut through the model for force output.
-#[derive(Clone, Debug, Serialize, Deserialize)]
-pub struct SectionCard {
-    pub id: Id,
-    pub title: String,
-    pub nodes: [Id; 3],
-    pub grnod: Id,
-    pub isave: i64,
-    pub frame_id: Id,
-    pub dt: f64,
-    pub alpha: f64,
-    pub file_name: String,
-    pub grbric: Id,
-    pub grshel: Id,
-    pub grtrus: Id,
-    pub grbeam: Id,
-    pub grsprg: Id,
-    pub grtria: Id,
-    pub iframe: i64,
-    pub interfaces: Vec<Id>,
-    pub loc: Loc,
-}
-
 /// Returns false for a variant this reader does not support.
-pub(super) fn parse_condition(block: &Block, deck: &mut Deck) -> DeckResult<bool> {
-    let p1 = block.parts.get(1).map(String::as_str).unwrap_or("");
+pub(super) fn parse_condition(block: &Block, deck: &mut Deck) -> InputResult<bool> {
     match block.parts[0].as_str() {
-        "BCS" => {
-            let id = header_id(block, 1, "bcs_ID")?;
-            let mut cards = Cards::new(block);
-            let title = cards.title();
-            let c = cards.next("the card with Trarot, skew_ID, grnod_ID")?;
-            let fixed = read_trarot(&c)?;
-            deck.bcs.push(BcsCard {
-                id,
-                title,
-                fixed,
-                skew_id: c.id_opt(11, "skew_ID")?,
-                grnod: c.id(21, "grnod_ID")?,
-                loc: c.loc(),
-            });
-        }
-        "IMPVEL" | "IMPDISP" => {
-            let vel = block.parts[0] == "IMPVEL";
-            let id = header_id(block, 1, "impvel_ID")?;
-            let unit_id = header_id_opt(block, 2, "unit_ID")?;
-            let mut cards = Cards::new(block);
-            let title = cards.title();
-            // fct_IDT (1-10) Dir (11-20) skew_ID (21-30) sens_ID (31-40) grnod_ID (41-50) frame_ID (51-60, IMPVEL) Icoor (61-70)
-            let c = cards.next("the card with fct_IDT, Dir, skew_ID, sens_ID, grnod_ID")?;
-            // Ascale_x (1-20) Fscale_Y (21-40) Tstart (41-60) Tstop (61-80): may be absent
-            let c2 = cards.next_opt();
-            let (ascale_x, fscale_y, tstart, tstop) = match c2 {
-                Some(c2) => (
-                    super::fields::one_if_zero(c2.real(1, "Ascale_x", 0.0)?),
-                    super::fields::one_if_zero(c2.real(21, "Fscale_Y", 0.0)?),
-                    c2.real(41, "Tstart", 0.0)?,
-                    c2.real(61, "Tstop", 0.0)?,
-                ),
-                None => (1.0, 1.0, 0.0, 0.0),
-            };
-            let tstop = if tstop == 0.0 { 1e30 } else { tstop };
-            if ascale_x <= 0.0 {
-                return Err(c2.unwrap().err(
-                    "Ascale_x",
-                    format!("{ascale_x}: the time scale must be > 0"),
-                ));
-            }
-            let card = ImposedMotionCard {
-                id,
-                unit_id,
-                title,
-                fct: c.id(1, "fct_IDT")?,
-                dir: read_dir(&c, 11, None)?,
-                skew_id: c.id_opt(21, "skew_ID")?,
-                sens_id: c.id_opt(31, "sens_ID")?,
-                grnod: c.id(41, "grnod_ID")?,
-                frame_id: if vel { c.id_opt(51, "frame_ID")? } else { 0 },
-                icoor: c.flag(61, "Icoor", 0, &[0, 1])?,
-                ascale_x,
-                fscale_y,
-                tstart,
-                tstop,
-                loc: c.loc(),
-            };
-            if vel {
-                deck.imposed_velocities.push(card);
-            } else {
-                deck.imposed_displacements.push(card);
-            }
-        }
-        "INIVEL" => {
-            let rotational = match p1 {
-                "TRA" => false,
-                "ROT" => true,
-                _ => return Ok(false),
-            };
-            let id = header_id(block, 2, "inivel_ID")?;
-            let mut cards = Cards::new(block);
-            let title = cards.title();
-            // Vx (1-20) Vy (21-40) Vz (41-60) grnod_ID (61-70) skew_ID (71-80)
-            let c = cards.next("the card with Vx, Vy, Vz, grnod_ID, skew_ID")?;
-            deck.initial_velocities.push(InitialVelocityCard {
-                id,
-                title,
-                rotational,
-                v: [
-                    c.real(1, "Vx", 0.0)?,
-                    c.real(21, "Vy", 0.0)?,
-                    c.real(41, "Vz", 0.0)?,
-                ],
-                grnod: c.id(61, "grnod_ID")?,
-                skew_id: c.id_opt(71, "skew_ID")?,
-                loc: c.loc(),
-            });
-        }
-        "CLOAD" | "GRAV" => {
-            let grav = block.parts[0] == "GRAV";
-            let id = header_id(block, 1, if grav { "grav_ID" } else { "cload_ID" })?;
-            let unit_id = header_id_opt(block, 2, "unit_ID")?;
-            let mut cards = Cards::new(block);
-            let title = cards.title();
-            // fct_IDT (1-10) Dir (11-20) skew_ID (21-30) sens_ID (31-40) grnod_ID (41-50) Ascale_x (61-80) Fscale_y (81-100)
-            let c = cards.next(
-                "the card with fct_IDT, Dir, skew_ID, sens_ID, grnod_ID, Ascale_x, Fscale_y",
-            )?;
-            let ascale_x = super::fields::one_if_zero(c.real(61, "Ascale_x", 0.0)?);
-            if ascale_x <= 0.0 {
-                return Err(c.err(
-                    "Ascale_x",
-                    format!("{ascale_x}: the time scale must be > 0"),
-                ));
-            }
-            let fscale_y = super::fields::one_if_zero(c.real(81, "Fscale_y", 0.0)?);
-            if grav {
-                deck.gravity.push(GravityCard {
-                    id,
-                    unit_id,
-                    title,
-                    fct: c.id_opt(1, "fct_IDT")?,
-                    dir: read_dir(&c, 11, Some(Dof::Z))?,
-                    skew_id: c.id_opt(21, "skew_ID")?,
-                    sens_id: c.id_opt(31, "sens_ID")?,
-                    grnod: c.id_opt(41, "grnod_ID")?,
-                    ascale_x,
-                    fscale_y,
-                    loc: c.loc(),
-                });
-            } else {
-                deck.concentrated_loads.push(ConcentratedLoadCard {
-                    id,
-                    unit_id,
-                    title,
-                    fct: c.id(1, "fct_IDT")?,
-                    dir: read_dir(&c, 11, None)?,
-                    skew_id: c.id_opt(21, "skew_ID")?,
-                    sens_id: c.id_opt(31, "sens_ID")?,
-                    grnod: c.id(41, "grnod_ID")?,
-                    ascale_x,
-                    fscale_y,
-                    loc: c.loc(),
-                });
-            }
-        }
-        "RWALL" => {
-            if p1 != "PLANE" {
-                return Ok(false);
-            }
-            let id = header_id(block, 2, "rwall_ID")?;
-            let mut cards = Cards::new(block);
-            let title = cards.title();
-            // node_ID (1-10) Slide (11-20) grnod_ID1 (21-30) grnod_ID2 (31-40)
-            let c1 = cards.next("the card with node_ID, Slide, grnod_ID1, grnod_ID2")?;
-            // D_search (1-20) fric (21-40) Diameter (41-60) ffac (61-80) ifq (81-90)
-            let c2 = cards.next("the card with D_search, fric, Diameter, ffac, ifq")?;
-            let node_id = c1.id_opt(1, "node_ID")?;
-            // node_ID = 0: XM YM ZM; else Mass VX0 VY0 VZ0
-            let c3 = cards.next(if node_id == 0 {
-                "the card with XM, YM, ZM"
-            } else {
-                "the card with Mass, VX0, VY0, VZ0"
-            })?;
-            // X_M1 (1-20) Y_M1 (21-40) Z_M1 (41-60)
-            let c4 = cards.next("the card with X_M1, Y_M1, Z_M1")?;
-            let (m, mass, v0) = if node_id == 0 {
-                (
-                    [
-                        c3.real(1, "XM", 0.0)?,
-                        c3.real(21, "YM", 0.0)?,
-                        c3.real(41, "ZM", 0.0)?,
-                    ],
-                    0.0,
-                    [0.0; 3],
-                )
-            } else {
-                let mass = c3.real(1, "Mass", 0.0)?;
-                if mass < 0.0 {
-                    return Err(c3.err("Mass", format!("{mass}: wall mass must be >= 0")));
-                }
-                (
-                    [0.0; 3],
-                    mass,
-                    [
-                        c3.real(21, "VX0", 0.0)?,
-                        c3.real(41, "VY0", 0.0)?,
-                        c3.real(61, "VZ0", 0.0)?,
-                    ],
-                )
-            };
-            let slide = c1.flag(11, "Slide", 0, &[0, 1, 2])?;
-            let fric = c2.real(21, "fric", 0.0)?;
-            if fric < 0.0 {
-                return Err(c2.err("fric", format!("{fric}: friction coefficient must be >= 0")));
-            }
-            let d_search = c2.real(1, "D_search", 0.0)?;
-            if d_search < 0.0 {
-                return Err(c2.err(
-                    "D_search",
-                    format!("{d_search}: search distance must be >= 0"),
-                ));
-            }
-            deck.rigid_walls.push(RigidWallCard {
-                id,
-                title,
-                node_id,
-                slide,
-                grnod1: c1.id_opt(21, "grnod_ID1")?,
-                grnod2: c1.id_opt(31, "grnod_ID2")?,
-                d_search,
-                fric,
-                diameter: c2.real(41, "Diameter", 0.0)?,
-                ffac: c2.real(61, "ffac", 0.0)?,
-                ifq: c2.flag(81, "ifq", 0, &[0, 1, 2, 3])?,
-                m,
-                mass,
-                v0,
-                m1: [
-                    c4.real(1, "X_M1", 0.0)?,
-                    c4.real(21, "Y_M1", 0.0)?,
-                    c4.real(41, "Z_M1", 0.0)?,
-                ],
-                loc: c1.loc(),
-            });
-        }
-        "RBODY" => {
-            let id = header_id(block, 1, "rbody_ID")?;
-            let mut cards = Cards::new(block);
-            let title = cards.title();
-            // RBID (1-10) ISENS (11-20) NSKEW (21-30) ISPHER (31-40) MASS (41-60) Gnod_id (61-70) IKREM (71-80) ICOG (81-90) Surf_id (91-100)
-            let c1 = cards.next(
-                "the card with RBID, ISENS, NSKEW, ISPHER, MASS, Gnod_id, IKREM, ICOG, Surf_id",
-            )?;
-            // Jxx Jyy Jzz, then Jxy Jyz Jxz, then Ioptoff Iexpams: optional
-            let c2 = cards.next_opt();
-            let c3 = cards.next_opt();
-            let c4 = cards.next_opt();
-            let mut inertia = [0.0; 6];
-            if let Some(c) = c2 {
-                inertia[0] = c.real(1, "Jxx", 0.0)?;
-                inertia[1] = c.real(21, "Jyy", 0.0)?;
-                inertia[2] = c.real(41, "Jzz", 0.0)?;
-            }
-            if let Some(c) = c3 {
-                inertia[3] = c.real(1, "Jxy", 0.0)?;
-                inertia[4] = c.real(21, "Jyz", 0.0)?;
-                inertia[5] = c.real(41, "Jxz", 0.0)?;
-            }
-            let mass = c1.real(41, "MASS", 0.0)?;
-            if mass < 0.0 {
-                return Err(c1.err("MASS", format!("{mass}: added mass must be >= 0")));
-            }
-            deck.rigid_bodies.push(RigidBodyCard {
-                id,
-                title,
-                main_node: c1.id(1, "RBID")?,
-                sens_id: c1.id_opt(11, "ISENS")?,
-                skew_id: c1.id_opt(21, "NSKEW")?,
-                ispher: c1.int(31, "ISPHER", 0)?,
-                mass,
-                grnod: c1.id(61, "Gnod_id")?,
-                ikrem: c1.int(71, "IKREM", 0)?,
-                icog: c1.int(81, "ICOG", 0)?,
-                surf_id: c1.id_opt(91, "Surf_id")?,
-                inertia,
-                ioptoff: match c4 {
-                    Some(c) => c.int(1, "Ioptoff", 0)?,
-                    None => 0,
-                },
-                iexpams: match c4 {
-                    Some(c) => c.int(11, "Iexpams", 0)?,
-                    None => 0,
-                },
-                loc: c1.loc(),
-            });
-        }
-        "SECT" => {
-            let id = header_id(block, 1, "sect_ID")?;
-            let mut cards = Cards::new(block);
-            let title = cards.title();
-            // node_ID1..3 (1-30) grnod_ID (31-40) I_SAVE (41-50) Frame_ID (51-60) Dt (61-80) alpha (81-100)
-            let c1 = cards.next(
-                "the card with node_ID1, node_ID2, node_ID3, grnod_ID, I_SAVE, Frame_ID, Dt, alpha",
-            )?;
-            // File name (1-100), may be blank
-            let c2 = cards.next("the file-name card (may be blank)")?;
-            // grbricID (1-10) grshel_ID (21-30) grtrus (31-40) grbeam (41-50) grsprin (51-60) grtria (61-70) Ninter (71-80) Iframe (91-100)
-            let c3 = cards.next("the card with grbric_ID, grshel_ID, grtrus_ID, grbeam_ID, grsprg_ID, grtria_ID, Ninter, Iframe")?;
-            let ninter = c3.int(71, "Ninter", 0)?;
-            if ninter < 0 {
-                return Err(c3.err(
-                    "Ninter",
-                    format!("{ninter}: expected a number of interfaces >= 0"),
-                ));
-            }
-            let mut interfaces = Vec::new();
-            while (interfaces.len() as i64) < ninter {
-                let c = cards.next("the list of interface ids (Ninter of them)")?;
-                for k in 0..10 {
-                    if (interfaces.len() as i64) < ninter {
-                        if let Some(v) = c.int_opt(1 + 10 * k, 10, "int_ID")? {
-                            if v <= 0 {
-                                return Err(c.err(
-                                    "int_ID",
-                                    format!("{v}: expected a positive interface id"),
-                                ));
-                            }
-                            interfaces.push(v as Id);
-                        }
-                    }
-                }
-            }
-            deck.sections.push(SectionCard {
-                id,
-                title,
-                nodes: [
-                    c1.id_opt(1, "node_ID1")?,
-                    c1.id_opt(11, "node_ID2")?,
-                    c1.id_opt(21, "node_ID3")?,
-                ],
-                grnod: c1.id_opt(31, "grnod_ID")?,
-                isave: c1.int(41, "I_SAVE", 0)?,
-                frame_id: c1.id_opt(51, "Frame_ID")?,
-                dt: c1.real(61, "Dt", 0.0)?,
-                alpha: c1.real(81, "alpha", 0.0)?,
-                file_name: c2.text(1, 100).to_string(),
-                grbric: c3.id_opt(1, "grbricID")?,
-                grshel: c3.id_opt(21, "grshel_ID")?,
-                grtrus: c3.id_opt(31, "grtrus_ID")?,
-                grbeam: c3.id_opt(41, "grbeam_ID")?,
-                grsprg: c3.id_opt(51, "grsprg_ID")?,
-                grtria: c3.id_opt(61, "grtria_ID")?,
-                iframe: c3.int(91, "Iframe", 0)?,
-                interfaces,
-                loc: c1.loc(),
-            });
-        }
-        _ => return Ok(false),
+        "BCS" => boundary_conditions(block, deck),
+        "IMPVEL" | "IMPDISP" => imposed_motion(block, deck),
+        "INIVEL" => initial_velocity(block, deck),
+        "CLOAD" | "GRAV" => load(block, deck),
+        "RWALL" => rigid_wall(block, deck),
+        "RBODY" => rigid_body(block, deck),
+        "SECT" => section(block, deck),
+        _ => Ok(false),
     }
+}
+
+/// /BCS: fixed degrees of freedom on a node group.
+fn boundary_conditions(block: &Block, deck: &mut Deck) -> InputResult<bool> {
+    let id = header_id(block, 1, "bcs_ID")?;
+    let mut cards = Cards::new(block);
+    let title = cards.title();
+    let c = cards.next("the card with Trarot, skew_ID, grnod_ID")?;
+    let fixed = read_trarot(&c)?;
+    deck.bcs.push(BoundarySpec {
+        id,
+        title,
+        fixed,
+        skew_id: c.id_opt(11, "skew_ID")?,
+        grnod: c.id(21, "grnod_ID")?,
+        loc: c.loc(),
+    });
+    Ok(true)
+}
+
+/// /IMPVEL and /IMPDISP: a velocity or displacement imposed through a function.
+fn imposed_motion(block: &Block, deck: &mut Deck) -> InputResult<bool> {
+    let vel = block.parts[0] == "IMPVEL";
+    let id = header_id(block, 1, "impvel_ID")?;
+    let unit_id = header_id_opt(block, 2, "unit_ID")?;
+    let mut cards = Cards::new(block);
+    let title = cards.title();
+    // fct_IDT (1-10) Dir (11-20) skew_ID (21-30) sens_ID (31-40) grnod_ID (41-50) frame_ID (51-60, IMPVEL) Icoor (61-70)
+    let c = cards.next("the card with fct_IDT, Dir, skew_ID, sens_ID, grnod_ID")?;
+    // Ascale_x (1-20) Fscale_Y (21-40) Tstart (41-60) Tstop (61-80): may be absent
+    let c2 = cards.next_opt();
+    let (ascale_x, fscale_y, tstart, tstop) = match c2 {
+        Some(c2) => (
+            super::fields::one_if_zero(c2.real(1, "Ascale_x", 0.0)?),
+            super::fields::one_if_zero(c2.real(21, "Fscale_Y", 0.0)?),
+            c2.real(41, "Tstart", 0.0)?,
+            c2.real(61, "Tstop", 0.0)?,
+        ),
+        None => (1.0, 1.0, 0.0, 0.0),
+    };
+    let tstop = if tstop == 0.0 { 1e30 } else { tstop };
+    if ascale_x <= 0.0 {
+        return Err(c2.unwrap().err(
+            "Ascale_x",
+            format!("{ascale_x}: the time scale must be > 0"),
+        ));
+    }
+    let card = ImposedMotionSpec {
+        id,
+        unit_id,
+        title,
+        fct: c.id(1, "fct_IDT")?,
+        dir: read_dir(&c, 11, None)?,
+        skew_id: c.id_opt(21, "skew_ID")?,
+        sens_id: c.id_opt(31, "sens_ID")?,
+        grnod: c.id(41, "grnod_ID")?,
+        frame_id: if vel { c.id_opt(51, "frame_ID")? } else { 0 },
+        icoor: c.flag(61, "Icoor", 0, &[0, 1])?,
+        ascale_x,
+        fscale_y,
+        tstart,
+        tstop,
+        loc: c.loc(),
+    };
+    if vel {
+        deck.imposed_velocities.push(card);
+    } else {
+        deck.imposed_displacements.push(card);
+    }
+    Ok(true)
+}
+
+/// /INIVEL: initial translational or rotational velocities.
+fn initial_velocity(block: &Block, deck: &mut Deck) -> InputResult<bool> {
+    let p1 = block.parts.get(1).map(String::as_str).unwrap_or("");
+    let rotational = match p1 {
+        "TRA" => false,
+        "ROT" => true,
+        _ => return Ok(false),
+    };
+    let id = header_id(block, 2, "inivel_ID")?;
+    let mut cards = Cards::new(block);
+    let title = cards.title();
+    // Vx (1-20) Vy (21-40) Vz (41-60) grnod_ID (61-70) skew_ID (71-80)
+    let c = cards.next("the card with Vx, Vy, Vz, grnod_ID, skew_ID")?;
+    deck.initial_velocities.push(InitialVelocitySpec {
+        id,
+        title,
+        rotational,
+        v: [
+            c.real(1, "Vx", 0.0)?,
+            c.real(21, "Vy", 0.0)?,
+            c.real(41, "Vz", 0.0)?,
+        ],
+        grnod: c.id(61, "grnod_ID")?,
+        skew_id: c.id_opt(71, "skew_ID")?,
+        loc: c.loc(),
+    });
+    Ok(true)
+}
+
+/// /CLOAD and /GRAV: concentrated loads and gravity through a function.
+fn load(block: &Block, deck: &mut Deck) -> InputResult<bool> {
+    let grav = block.parts[0] == "GRAV";
+    let id = header_id(block, 1, if grav { "grav_ID" } else { "cload_ID" })?;
+    let unit_id = header_id_opt(block, 2, "unit_ID")?;
+    let mut cards = Cards::new(block);
+    let title = cards.title();
+    // fct_IDT (1-10) Dir (11-20) skew_ID (21-30) sens_ID (31-40) grnod_ID (41-50) Ascale_x (61-80) Fscale_y (81-100)
+    let c =
+        cards.next("the card with fct_IDT, Dir, skew_ID, sens_ID, grnod_ID, Ascale_x, Fscale_y")?;
+    let ascale_x = super::fields::one_if_zero(c.real(61, "Ascale_x", 0.0)?);
+    if ascale_x <= 0.0 {
+        return Err(c.err(
+            "Ascale_x",
+            format!("{ascale_x}: the time scale must be > 0"),
+        ));
+    }
+    let fscale_y = super::fields::one_if_zero(c.real(81, "Fscale_y", 0.0)?);
+    if grav {
+        deck.gravity.push(GravitySpec {
+            id,
+            unit_id,
+            title,
+            fct: c.id_opt(1, "fct_IDT")?,
+            dir: read_dir(&c, 11, Some(Dof::Z))?,
+            skew_id: c.id_opt(21, "skew_ID")?,
+            sens_id: c.id_opt(31, "sens_ID")?,
+            grnod: c.id_opt(41, "grnod_ID")?,
+            ascale_x,
+            fscale_y,
+            loc: c.loc(),
+        });
+    } else {
+        deck.concentrated_loads.push(ConcentratedLoadSpec {
+            id,
+            unit_id,
+            title,
+            fct: c.id(1, "fct_IDT")?,
+            dir: read_dir(&c, 11, None)?,
+            skew_id: c.id_opt(21, "skew_ID")?,
+            sens_id: c.id_opt(31, "sens_ID")?,
+            grnod: c.id(41, "grnod_ID")?,
+            ascale_x,
+            fscale_y,
+            loc: c.loc(),
+        });
+    }
+    Ok(true)
+}
+
+/// /RWALL/PLANE: a fixed or moving planar rigid wall.
+fn rigid_wall(block: &Block, deck: &mut Deck) -> InputResult<bool> {
+    let p1 = block.parts.get(1).map(String::as_str).unwrap_or("");
+    if p1 != "PLANE" {
+        return Ok(false);
+    }
+    let id = header_id(block, 2, "rwall_ID")?;
+    let mut cards = Cards::new(block);
+    let title = cards.title();
+    // node_ID (1-10) Slide (11-20) grnod_ID1 (21-30) grnod_ID2 (31-40)
+    let c1 = cards.next("the card with node_ID, Slide, grnod_ID1, grnod_ID2")?;
+    // D_search (1-20) fric (21-40) Diameter (41-60) ffac (61-80) ifq (81-90)
+    let c2 = cards.next("the card with D_search, fric, Diameter, ffac, ifq")?;
+    let node_id = c1.id_opt(1, "node_ID")?;
+    // node_ID = 0: XM YM ZM; else Mass VX0 VY0 VZ0
+    let c3 = cards.next(if node_id == 0 {
+        "the card with XM, YM, ZM"
+    } else {
+        "the card with Mass, VX0, VY0, VZ0"
+    })?;
+    // X_M1 (1-20) Y_M1 (21-40) Z_M1 (41-60)
+    let c4 = cards.next("the card with X_M1, Y_M1, Z_M1")?;
+    let (m, mass, v0) = if node_id == 0 {
+        (
+            [
+                c3.real(1, "XM", 0.0)?,
+                c3.real(21, "YM", 0.0)?,
+                c3.real(41, "ZM", 0.0)?,
+            ],
+            0.0,
+            [0.0; 3],
+        )
+    } else {
+        let mass = c3.real(1, "Mass", 0.0)?;
+        if mass < 0.0 {
+            return Err(c3.err("Mass", format!("{mass}: wall mass must be >= 0")));
+        }
+        (
+            [0.0; 3],
+            mass,
+            [
+                c3.real(21, "VX0", 0.0)?,
+                c3.real(41, "VY0", 0.0)?,
+                c3.real(61, "VZ0", 0.0)?,
+            ],
+        )
+    };
+    let slide = c1.flag(11, "Slide", 0, &[0, 1, 2])?;
+    let fric = c2.real(21, "fric", 0.0)?;
+    if fric < 0.0 {
+        return Err(c2.err("fric", format!("{fric}: friction coefficient must be >= 0")));
+    }
+    let d_search = c2.real(1, "D_search", 0.0)?;
+    if d_search < 0.0 {
+        return Err(c2.err(
+            "D_search",
+            format!("{d_search}: search distance must be >= 0"),
+        ));
+    }
+    deck.rigid_walls.push(RigidWallSpec {
+        id,
+        title,
+        node_id,
+        slide,
+        grnod1: c1.id_opt(21, "grnod_ID1")?,
+        grnod2: c1.id_opt(31, "grnod_ID2")?,
+        d_search,
+        fric,
+        diameter: c2.real(41, "Diameter", 0.0)?,
+        ffac: c2.real(61, "ffac", 0.0)?,
+        ifq: c2.flag(81, "ifq", 0, &[0, 1, 2, 3])?,
+        m,
+        mass,
+        v0,
+        m1: [
+            c4.real(1, "X_M1", 0.0)?,
+            c4.real(21, "Y_M1", 0.0)?,
+            c4.real(41, "Z_M1", 0.0)?,
+        ],
+        loc: c1.loc(),
+    });
+    Ok(true)
+}
+
+/// /RBODY: a rigid body on a node group.
+fn rigid_body(block: &Block, deck: &mut Deck) -> InputResult<bool> {
+    let id = header_id(block, 1, "rbody_ID")?;
+    let mut cards = Cards::new(block);
+    let title = cards.title();
+    // RBID (1-10) ISENS (11-20) NSKEW (21-30) ISPHER (31-40) MASS (41-60) Gnod_id (61-70) IKREM (71-80) ICOG (81-90) Surf_id (91-100)
+    let c1 = cards
+        .next("the card with RBID, ISENS, NSKEW, ISPHER, MASS, Gnod_id, IKREM, ICOG, Surf_id")?;
+    // Jxx Jyy Jzz, then Jxy Jyz Jxz, then Ioptoff Iexpams: optional
+    let c2 = cards.next_opt();
+    let c3 = cards.next_opt();
+    let c4 = cards.next_opt();
+    let mut inertia = [0.0; 6];
+    if let Some(c) = c2 {
+        inertia[0] = c.real(1, "Jxx", 0.0)?;
+        inertia[1] = c.real(21, "Jyy", 0.0)?;
+        inertia[2] = c.real(41, "Jzz", 0.0)?;
+    }
+    if let Some(c) = c3 {
+        inertia[3] = c.real(1, "Jxy", 0.0)?;
+        inertia[4] = c.real(21, "Jyz", 0.0)?;
+        inertia[5] = c.real(41, "Jxz", 0.0)?;
+    }
+    let mass = c1.real(41, "MASS", 0.0)?;
+    if mass < 0.0 {
+        return Err(c1.err("MASS", format!("{mass}: added mass must be >= 0")));
+    }
+    deck.rigid_bodies.push(RigidBodySpec {
+        id,
+        title,
+        main_node: c1.id(1, "RBID")?,
+        sens_id: c1.id_opt(11, "ISENS")?,
+        skew_id: c1.id_opt(21, "NSKEW")?,
+        ispher: c1.int(31, "ISPHER", 0)?,
+        mass,
+        grnod: c1.id(61, "Gnod_id")?,
+        ikrem: c1.int(71, "IKREM", 0)?,
+        icog: c1.int(81, "ICOG", 0)?,
+        surf_id: c1.id_opt(91, "Surf_id")?,
+        inertia,
+        ioptoff: match c4 {
+            Some(c) => c.int(1, "Ioptoff", 0)?,
+            None => 0,
+        },
+        iexpams: match c4 {
+            Some(c) => c.int(11, "Iexpams", 0)?,
+            None => 0,
+        },
+        loc: c1.loc(),
+    });
+    Ok(true)
+}
+
+/// /SECT: a cross-section for force outputs.
+fn section(block: &Block, deck: &mut Deck) -> InputResult<bool> {
+    let id = header_id(block, 1, "sect_ID")?;
+    let mut cards = Cards::new(block);
+    let title = cards.title();
+    // node_ID1..3 (1-30) grnod_ID (31-40) I_SAVE (41-50) Frame_ID (51-60) Dt (61-80) alpha (81-100)
+    let c1 = cards.next(
+        "the card with node_ID1, node_ID2, node_ID3, grnod_ID, I_SAVE, Frame_ID, Dt, alpha",
+    )?;
+    // File name (1-100), may be blank
+    let c2 = cards.next("the file-name card (may be blank)")?;
+    // grbricID (1-10) grshel_ID (21-30) grtrus (31-40) grbeam (41-50) grsprin (51-60) grtria (61-70) Ninter (71-80) Iframe (91-100)
+    let c3 = cards.next("the card with grbric_ID, grshel_ID, grtrus_ID, grbeam_ID, grsprg_ID, grtria_ID, Ninter, Iframe")?;
+    let ninter = c3.int(71, "Ninter", 0)?;
+    if ninter < 0 {
+        return Err(c3.err(
+            "Ninter",
+            format!("{ninter}: expected a number of interfaces >= 0"),
+        ));
+    }
+    let mut interfaces = Vec::new();
+    while (interfaces.len() as i64) < ninter {
+        let c = cards.next("the list of interface ids (Ninter of them)")?;
+        for k in 0..10 {
+            if (interfaces.len() as i64) < ninter {
+                if let Some(v) = c.int_opt(1 + 10 * k, 10, "int_ID")? {
+                    if v <= 0 {
+                        return Err(
+                            c.err("int_ID", format!("{v}: expected a positive interface id"))
+                        );
+                    }
+                    interfaces.push(v as Id);
+                }
+            }
+        }
+    }
+    deck.sections.push(CrossSectionSpec {
+        id,
+        title,
+        nodes: [
+            c1.id_opt(1, "node_ID1")?,
+            c1.id_opt(11, "node_ID2")?,
+            c1.id_opt(21, "node_ID3")?,
+        ],
+        grnod: c1.id_opt(31, "grnod_ID")?,
+        isave: c1.int(41, "I_SAVE", 0)?,
+        frame_id: c1.id_opt(51, "Frame_ID")?,
+        dt: c1.real(61, "Dt", 0.0)?,
+        alpha: c1.real(81, "alpha", 0.0)?,
+        file_name: c2.text(1, 100).to_string(),
+        grbric: c3.id_opt(1, "grbricID")?,
+        grshel: c3.id_opt(21, "grshel_ID")?,
+        grtrus: c3.id_opt(31, "grtrus_ID")?,
+        grbeam: c3.id_opt(41, "grbeam_ID")?,
+        grsprg: c3.id_opt(51, "grsprg_ID")?,
+        grtria: c3.id_opt(61, "grtria_ID")?,
+        iframe: c3.int(91, "Iframe", 0)?,
+        interfaces,
+        loc: c1.loc(),
+    });
     Ok(true)
 }
 
 /// The Trarot field: six 0/1 codes in columns 4-6 (translations) and 8-10
 /// (rotations) of the first field, e.g. `   111 111`. Written without the
 /// blank (`111111`) is accepted too.
-fn read_trarot(c: &Card) -> DeckResult<[bool; 6]> {
+fn read_trarot(c: &Card) -> InputResult<[bool; 6]> {
     let raw = super::fields::Card::text(c, 1, 10);
     let digits: String = raw.chars().filter(|ch| !ch.is_whitespace()).collect();
     if digits.len() != 6 || !digits.chars().all(|ch| ch == '0' || ch == '1') {

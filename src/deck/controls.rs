@@ -1,48 +1,13 @@
 //! /BEGIN, the starter control cards (/ANALY, /SPMD, /IOFLAG, /RANDOM,
 //! /SHFRA), time-history requests (/TH/*) and starter /ANIM requests.
 
-use super::error::{DeckResult, Loc};
 use super::fields::{Card, Cards};
 use super::source::Block;
-use super::{header_id, Deck, Id};
+use super::{header_id, Deck};
+use crate::model::{AnimationSpec, Begin, InputResult, TimeHistorySpec, Units};
 use serde::{Deserialize, Serialize};
 
-/// /BEGIN: run name; Invers (1-10), Irun (11-20); input units; work units.
-#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
-pub struct Begin {
-    pub run_name: String,
-    pub invers: i64,
-    pub irun: i64,
-    pub input_units: Units,
-    pub work_units: Units,
-    pub loc: Loc,
-}
-
-/// A unit system: each unit as written (e.g. "kg", "mm", "ms") and its factor to SI.
-#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
-pub struct Units {
-    pub mass: String,
-    pub length: String,
-    pub time: String,
-    pub mass_si: f64,
-    pub length_si: f64,
-    pub time_si: f64,
-}
-
-impl Default for Units {
-    fn default() -> Self {
-        Units {
-            mass: "kg".into(),
-            length: "m".into(),
-            time: "s".into(),
-            mass_si: 1.0,
-            length_si: 1.0,
-            time_si: 1.0,
-        }
-    }
-}
-
-pub(super) fn parse_begin(block: &Block, deck: &mut Deck) -> DeckResult<()> {
+pub(super) fn parse_begin(block: &Block, deck: &mut Deck) -> InputResult<()> {
     let mut cards = Cards::new(block);
     let c0 = cards.next("the run-name card")?;
     let run_name = c0.line.text.trim().to_string();
@@ -72,37 +37,41 @@ pub(super) fn parse_begin(block: &Block, deck: &mut Deck) -> DeckResult<()> {
 
 /// Mass (1-20), length (21-40), time (41-60): a unit code (SI prefix + g, m, s)
 /// or a factor to kg, m, s. Blank takes `default` (work units), else SI.
-fn read_units(c: &Card, default: Option<&Units>) -> DeckResult<Units> {
+fn read_units(c: &Card, default: Option<&Units>) -> InputResult<Units> {
     let si = Units::default();
     let d = default.unwrap_or(&si);
-    let field =
-        |col: usize, name: &str, base: &str, dname: &str, dfac: f64| -> DeckResult<(String, f64)> {
-            let t = c.text(col, 20);
-            if t.is_empty() {
-                return Ok((dname.to_string(), dfac));
+    let field = |col: usize,
+                 name: &str,
+                 base: &str,
+                 dname: &str,
+                 dfac: f64|
+     -> InputResult<(String, f64)> {
+        let t = c.text(col, 20);
+        if t.is_empty() {
+            return Ok((dname.to_string(), dfac));
+        }
+        if let Ok(v) = super::fields::parse_real(t) {
+            if v > 0.0 {
+                return Ok((t.to_string(), v));
             }
-            if let Ok(v) = super::fields::parse_real(t) {
-                if v > 0.0 {
-                    return Ok((t.to_string(), v));
-                }
-                return Err(c.err(name, format!("{v}: a unit factor must be > 0")));
-            }
-            unit_factor(t, base)
-                .map(|f| (t.to_string(), f))
-                .ok_or_else(|| {
-                    c.err(
-                        name,
-                        format!(
-                            "'{t}': expected a unit like {} or a positive factor",
-                            match base {
-                                "g" => "kg, g, Mg, mg",
-                                "m" => "m, mm, cm, km",
-                                _ => "s, ms, mus",
-                            }
-                        ),
-                    )
-                })
-        };
+            return Err(c.err(name, format!("{v}: a unit factor must be > 0")));
+        }
+        unit_factor(t, base)
+            .map(|f| (t.to_string(), f))
+            .ok_or_else(|| {
+                c.err(
+                    name,
+                    format!(
+                        "'{t}': expected a unit like {} or a positive factor",
+                        match base {
+                            "g" => "kg, g, Mg, mg",
+                            "m" => "m, mm, cm, km",
+                            _ => "s, ms, mus",
+                        }
+                    ),
+                )
+            })
+    };
     let (mass, mass_si) = field(1, "mass unit", "g", &d.mass, d.mass_si)?;
     let (length, length_si) = field(21, "length unit", "m", &d.length, d.length_si)?;
     let (time, time_si) = field(41, "time unit", "s", &d.time, d.time_si)?;
@@ -163,7 +132,7 @@ pub struct Controls {
     pub shfra: Option<String>,
 }
 
-pub(super) fn parse_control(block: &Block, deck: &mut Deck) -> DeckResult<bool> {
+pub(super) fn parse_control(block: &Block, deck: &mut Deck) -> InputResult<bool> {
     let mut cards = Cards::new(block);
     let ctl = &mut deck.controls;
     match block.parts[0].as_str() {
@@ -216,26 +185,12 @@ pub(super) fn parse_control(block: &Block, deck: &mut Deck) -> DeckResult<bool> 
     Ok(true)
 }
 
-/// /TH/type/th_ID: what to record in time histories.
-#[derive(Clone, Debug, Serialize, Deserialize)]
-pub struct TimeHistoryCard {
-    pub id: Id,
-    /// The object type as written (NODE, PART, SHELL, RWALL, RBODY, INTER, SECTIO, ...).
-    pub kind: String,
-    pub title: String,
-    /// Variable names (DEF, DX, VX, ...).
-    pub variables: Vec<String>,
-    /// Object ids.
-    pub objects: Vec<Id>,
-    pub loc: Loc,
-}
-
 /// Object types whose object lines hold one id and a name (id 1-10, skew 11-20, name 21-100).
 const TH_ONE_PER_LINE: &[&str] = &[
     "NODE", "SHELL", "SHEL", "SH3N", "BRIC", "BRICK", "SPRING", "TRUSS", "BEAM",
 ];
 
-pub(super) fn parse_th(block: &Block, deck: &mut Deck) -> DeckResult<bool> {
+pub(super) fn parse_th(block: &Block, deck: &mut Deck) -> InputResult<bool> {
     let Some(kind) = block.parts.get(1).cloned() else {
         return Ok(false);
     };
@@ -273,7 +228,7 @@ pub(super) fn parse_th(block: &Block, deck: &mut Deck) -> DeckResult<bool> {
             }
         }
     }
-    deck.time_histories.push(TimeHistoryCard {
+    deck.time_histories.push(TimeHistorySpec {
         id,
         kind,
         title,
@@ -284,16 +239,8 @@ pub(super) fn parse_th(block: &Block, deck: &mut Deck) -> DeckResult<bool> {
     Ok(true)
 }
 
-/// An /ANIM request (starter /ANIM/VERS or engine /ANIM/ELEM/..., /ANIM/VECT/...).
-#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
-pub struct AnimCard {
-    /// Header parts after ANIM, e.g. ["VECT", "DISP"].
-    pub what: Vec<String>,
-    pub loc: Loc,
-}
-
-pub(super) fn parse_anim(block: &Block, deck: &mut Deck) -> DeckResult<bool> {
-    deck.animations.push(AnimCard {
+pub(super) fn parse_anim(block: &Block, deck: &mut Deck) -> InputResult<bool> {
+    deck.animations.push(AnimationSpec {
         what: block.parts[1..].to_vec(),
         loc: block.loc.clone(),
     });

@@ -2,106 +2,15 @@
 //! frequencies. Its data lines are read list-directed (values separated by
 //! blanks), as Radioss reads them; its parameters are mostly in the header.
 
-use super::controls::AnimCard;
-use super::error::{DeckError, DeckResult, Loc};
 use super::fields::{parse_int, Cards};
 use super::source::Block;
-use serde::{Deserialize, Serialize};
+use crate::model::{AnimationSpec, DtControl, Engine, InputError, InputResult, RunSpec, StopSpec};
 
-#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
-pub struct Engine {
-    /// /RUN/name/number: run name, run number, end time.
-    pub run: Option<RunCard>,
-    /// /DT: time-step scale factor (0 → 0.9) and minimum time step.
-    pub dt_scale: f64,
-    pub dt_min: f64,
-    /// /DT/<type>/<action> cards: (type, action, scale, min).
-    pub dt_controls: Vec<DtControl>,
-    /// /PRINT/n/nline: listing every |n| cycles; header every nline lines.
-    pub print_every: i64,
-    pub print_lines: i64,
-    /// /ANIM/DT: first animation time and period.
-    pub anim_start: f64,
-    pub anim_period: Option<f64>,
-    pub anim: Vec<AnimCard>,
-    /// /TFILE/format: time-history period.
-    pub tfile_format: i64,
-    pub th_period: Option<f64>,
-    /// /RFILE/n: restart file every `rfile_cycles` cycles (None = not asked).
-    pub rfile_cycles: Option<i64>,
-    pub rfile_sets: i64,
-    /// /PARITH/ON|OFF (crashsim is always reproducible; kept for the listing).
-    pub parith: Option<bool>,
-    pub mon: Option<bool>,
-    pub version: Option<i64>,
-    /// /PROC/... values (legacy, ignored).
-    pub proc_: Vec<i64>,
-    /// /STOP: Emax, Mmax, Nmax, NTH, NANIM, NERR_POSIT.
-    pub stop: Option<StopCard>,
-    pub title: Option<String>,
-    pub loc: Loc,
-}
-
-impl Default for Engine {
-    fn default() -> Self {
-        Engine {
-            run: None,
-            dt_scale: 0.9,
-            dt_min: 0.0,
-            dt_controls: Vec::new(),
-            print_every: 0,
-            print_lines: 55,
-            anim_start: 0.0,
-            anim_period: None,
-            anim: Vec::new(),
-            tfile_format: 4,
-            th_period: None,
-            rfile_cycles: None,
-            rfile_sets: 0,
-            parith: None,
-            mon: None,
-            version: None,
-            proc_: Vec::new(),
-            stop: None,
-            title: None,
-            loc: Loc::default(),
-        }
-    }
-}
-
-#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
-pub struct RunCard {
-    pub name: String,
-    pub number: i64,
-    pub restart_letter: Option<String>,
-    pub tstop: f64,
-    pub loc: Loc,
-}
-
-#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
-pub struct DtControl {
-    pub target: String,
-    pub action: String,
-    pub scale: f64,
-    pub min: f64,
-    pub loc: Loc,
-}
-
-#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
-pub struct StopCard {
-    pub emax: f64,
-    pub mmax: f64,
-    pub nmax: f64,
-    pub nth: i64,
-    pub nanim: i64,
-    pub nerr_posit: i64,
-}
-
-fn header_int(block: &Block, idx: usize, name: &str) -> DeckResult<Option<i64>> {
+fn header_int(block: &Block, idx: usize, name: &str) -> InputResult<Option<i64>> {
     match block.parts.get(idx).map(|s| s.trim()) {
         None | Some("") => Ok(None),
         Some(t) => parse_int(t).map(Some).map_err(|m| {
-            DeckError::new(
+            InputError::new(
                 block.loc.clone(),
                 &block.header,
                 name,
@@ -112,13 +21,13 @@ fn header_int(block: &Block, idx: usize, name: &str) -> DeckResult<Option<i64>> 
 }
 
 /// Returns false for a keyword the engine reader does not know.
-pub(super) fn parse_engine_block(block: &Block, eng: &mut Engine) -> DeckResult<bool> {
+pub(super) fn parse_engine_block(block: &Block, eng: &mut Engine) -> InputResult<bool> {
     let mut cards = Cards::new(block);
     let p1 = block.parts.get(1).map(String::as_str).unwrap_or("");
     match block.parts[0].as_str() {
         "RUN" => {
             if p1.is_empty() {
-                return Err(DeckError::new(
+                return Err(InputError::new(
                     block.loc.clone(),
                     &block.header,
                     "RunName",
@@ -139,7 +48,7 @@ pub(super) fn parse_engine_block(block: &Block, eng: &mut Engine) -> DeckResult<
             if tstop <= 0.0 {
                 return Err(c.err("Tstop", format!("{tstop}: the end time must be > 0")));
             }
-            eng.run = Some(RunCard {
+            eng.run = Some(RunSpec {
                 name,
                 number,
                 restart_letter: block.parts.get(3).cloned(),
@@ -190,7 +99,7 @@ pub(super) fn parse_engine_block(block: &Block, eng: &mut Engine) -> DeckResult<
                 }
                 eng.anim_period = Some(f);
             } else {
-                eng.anim.push(AnimCard {
+                eng.anim.push(AnimationSpec {
                     what: block.parts[1..].to_vec(),
                     loc: block.loc.clone(),
                 });
@@ -218,7 +127,7 @@ pub(super) fn parse_engine_block(block: &Block, eng: &mut Engine) -> DeckResult<
                     None => 0,
                 };
                 if n < 0 {
-                    return Err(DeckError::new(
+                    return Err(InputError::new(
                         block.loc.clone(),
                         &block.header,
                         "Ncycle",
@@ -252,7 +161,7 @@ pub(super) fn parse_engine_block(block: &Block, eng: &mut Engine) -> DeckResult<
                 None | Some(0.0) => 1e30,
                 Some(v) => v,
             };
-            eng.stop = Some(StopCard {
+            eng.stop = Some(StopSpec {
                 emax: or_big(c.tok_real(0, "Emax")?),
                 mmax: or_big(c.tok_real(1, "Mmax")?),
                 nmax: or_big(c.tok_real(2, "Nmax")?),

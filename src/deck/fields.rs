@@ -5,8 +5,8 @@
 //! Engine-file cards (e.g. `/DT` then `0.9 0.0`) are read list-directed: the
 //! values are separated by blanks or commas, as Radioss reads them.
 
-use super::error::{DeckError, DeckResult, Loc};
 use super::source::{Block, Line};
+use crate::model::{InputError, InputResult, Loc};
 
 /// Reads the cards of one block in order.
 pub struct Cards<'a> {
@@ -21,7 +21,7 @@ impl<'a> Cards<'a> {
 
     /// The next card, which must exist: `what` names it for the error message
     /// (e.g. "the card with RHO_I").
-    pub fn next(&mut self, what: &str) -> DeckResult<Card<'a>> {
+    pub fn next(&mut self, what: &str) -> InputResult<Card<'a>> {
         match self.block.lines.get(self.pos) {
             Some(line) => {
                 self.pos += 1;
@@ -37,7 +37,7 @@ impl<'a> Cards<'a> {
                     .last()
                     .map(|l| l.loc.clone())
                     .unwrap_or_else(|| self.block.loc.clone());
-                Err(DeckError::new(
+                Err(InputError::new(
                     loc,
                     &self.block.header,
                     "",
@@ -99,8 +99,8 @@ impl<'a> Card<'a> {
         self.line.loc.clone()
     }
 
-    pub fn err(&self, field: &str, message: impl Into<String>) -> DeckError {
-        DeckError::new(self.loc(), self.kw, field, message)
+    pub fn err(&self, field: &str, message: impl Into<String>) -> InputError {
+        InputError::new(self.loc(), self.kw, field, message)
     }
 
     pub fn is_blank(&self) -> bool {
@@ -113,7 +113,7 @@ impl<'a> Card<'a> {
     }
 
     /// Integer field; `None` when blank.
-    pub fn int_opt(&self, col: usize, width: usize, name: &str) -> DeckResult<Option<i64>> {
+    pub fn int_opt(&self, col: usize, width: usize, name: &str) -> InputResult<Option<i64>> {
         let t = self.text(col, width);
         if t.is_empty() {
             return Ok(None);
@@ -127,12 +127,12 @@ impl<'a> Card<'a> {
     }
 
     /// 10-column integer field with a default for blank.
-    pub fn int(&self, col: usize, name: &str, default: i64) -> DeckResult<i64> {
+    pub fn int(&self, col: usize, name: &str, default: i64) -> InputResult<i64> {
         Ok(self.int_opt(col, 10, name)?.unwrap_or(default))
     }
 
     /// Real field; `None` when blank.
-    pub fn real_opt(&self, col: usize, width: usize, name: &str) -> DeckResult<Option<f64>> {
+    pub fn real_opt(&self, col: usize, width: usize, name: &str) -> InputResult<Option<f64>> {
         let t = self.text(col, width);
         if t.is_empty() {
             return Ok(None);
@@ -146,7 +146,7 @@ impl<'a> Card<'a> {
     }
 
     /// 20-column real field with a default for blank.
-    pub fn real(&self, col: usize, name: &str, default: f64) -> DeckResult<f64> {
+    pub fn real(&self, col: usize, name: &str, default: f64) -> InputResult<f64> {
         Ok(self.real_opt(col, 20, name)?.unwrap_or(default))
     }
 
@@ -160,7 +160,7 @@ impl<'a> Card<'a> {
     }
 
     /// The i-th list-directed value as a real (`None` if absent).
-    pub fn tok_real(&self, i: usize, name: &str) -> DeckResult<Option<f64>> {
+    pub fn tok_real(&self, i: usize, name: &str) -> InputResult<Option<f64>> {
         match self.tokens().get(i) {
             None => Ok(None),
             Some(t) => parse_real(t)
@@ -170,7 +170,7 @@ impl<'a> Card<'a> {
     }
 
     /// The i-th list-directed value as an integer (`None` if absent).
-    pub fn tok_int(&self, i: usize, name: &str) -> DeckResult<Option<i64>> {
+    pub fn tok_int(&self, i: usize, name: &str) -> InputResult<Option<i64>> {
         match self.tokens().get(i) {
             None => Ok(None),
             Some(t) => parse_int(t)

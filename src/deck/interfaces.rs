@@ -14,219 +14,19 @@
 //! built-in default is 1000, meaning the historic/"off" behaviour. Those flags
 //! are stored as 1000, as the listing prints them.
 
-use super::error::{DeckResult, Loc, Warning};
 use super::fields::{Card, Cards};
 use super::source::Block;
-use super::{header_id, header_id_opt, Deck, Id};
-use serde::{Deserialize, Serialize};
-
-/// "No limit" value the Starter substitutes for Tstop, Stmax, Gapmax, Ptlim.
-pub const EP30: f64 = 1.0e30;
-/// Starter's "infinite" rupture distance for TYPE2 (Max_N_Dist, Max_T_Dist).
-pub const EP20: f64 = 1.0e20;
-
-/// One `/INTER/TYPEn/inter_ID[/unit_ID]` block.
-#[derive(Clone, Debug, Serialize, Deserialize)]
-pub struct InterfaceCard {
-    pub id: Id,
-    /// Header unit_ID (0 = none).
-    pub unit_id: Id,
-    /// inter_title: the line after the header (up to 100 characters).
-    pub title: String,
-    pub kind: InterfaceKind,
-    /// Where the keyword line is.
-    pub loc: Loc,
-    /// Where card 1 (the ids of both sides) is.
-    #[serde(default)]
-    pub ids_loc: Loc,
-}
-
-// A deck holds few interfaces: the size of the TYPE7 variant does not matter,
-// and boxing it would change the public shape `Type7(Type7)`.
-#[allow(clippy::large_enum_variant)]
-#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
-pub enum InterfaceKind {
-    Type2(Type2),
-    Type3(Type3),
-    Type5(Type5),
-    Type7(Type7),
-    Type11(Type11),
-}
-
-/// What one side of an interface references.
-#[derive(Clone, Copy, Debug, Serialize, Deserialize, PartialEq)]
-pub enum Side {
-    /// A `/GRNOD` node group.
-    NodeGroup(Id),
-    /// A `/SURF` surface (segments).
-    Surface(Id),
-    /// A `/LINE` set of 2-node segments.
-    Line(Id),
-    /// self-contact (TYPE7 grnod=0 / TYPE11 main line 0): same as the other side
-    SameAsOther,
-    None,
-}
-
-impl InterfaceCard {
-    /// 2, 3, 5, 7 or 11.
-    pub fn type_number(&self) -> u32 {
-        match self.kind {
-            InterfaceKind::Type2(_) => 2,
-            InterfaceKind::Type3(_) => 3,
-            InterfaceKind::Type5(_) => 5,
-            InterfaceKind::Type7(_) => 7,
-            InterfaceKind::Type11(_) => 11,
-        }
-    }
-
-    /// What the secondary (slave) side references.
-    pub fn secondary_side(&self) -> Side {
-        match &self.kind {
-            InterfaceKind::Type2(t) => Side::NodeGroup(t.grnod_ids),
-            InterfaceKind::Type3(t) => Side::Surface(t.surf_id1),
-            InterfaceKind::Type5(t) => Side::NodeGroup(t.grnod_ids),
-            InterfaceKind::Type7(t) => {
-                if t.grnod_ids == 0 {
-                    Side::SameAsOther
-                } else if t.ists != 0 {
-                    Side::Surface(t.grnod_ids)
-                } else {
-                    Side::NodeGroup(t.grnod_ids)
-                }
-            }
-            InterfaceKind::Type11(t) => Side::Line(t.line_ids),
-        }
-    }
-
-    /// The field names of (secondary side, main side) on card 1.
-    pub fn side_fields(&self) -> (&'static str, &'static str) {
-        match &self.kind {
-            InterfaceKind::Type3(_) => ("surf_ID1", "surf_ID2"),
-            InterfaceKind::Type11(_) => ("line_IDs", "line_IDm"),
-            _ => ("grnd_IDs", "surf_IDm"),
-        }
-    }
-
-    /// What the main (master) side references.
-    pub fn main_side(&self) -> Side {
-        match &self.kind {
-            InterfaceKind::Type2(t) => Side::Surface(t.surf_idm),
-            InterfaceKind::Type3(t) => Side::Surface(t.surf_id2),
-            InterfaceKind::Type5(t) => Side::Surface(t.surf_idm),
-            InterfaceKind::Type7(t) => Side::Surface(t.surf_idm),
-            InterfaceKind::Type11(t) => {
-                if t.line_idm == 0 {
-                    Side::SameAsOther
-                } else {
-                    Side::Line(t.line_idm)
-                }
-            }
-        }
-    }
-}
+use super::{header_id, header_id_opt, Deck};
+use crate::model::contact::*;
+use crate::model::{InputResult, Warning};
 
 // ---------------------------------------------------------------------------
 // TYPE2
 // ---------------------------------------------------------------------------
 
-/// /INTER/TYPE2: tied interface (kinematic, or penalty for Spotflag 25-28).
-///
-/// Card 1: grnd_IDs (1-10), surf_IDm (11-20), Ignore (21-30), Spotflag (31-40),
-/// Level (41-50), Isearch (51-60), Idel2 (61-70), surf_IDs (71-80), dsearch (81-100).
-/// Then, in this order: two rupture cards if Spotflag ∈ {20, 21, 22}; the
-/// penalty card if Spotflag ∈ {25..28}; the optional thermal card (read when
-/// present: no flag announces it).
-#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
-pub struct Type2 {
-    /// grnd_IDs (1-10): secondary node group, required.
-    pub grnod_ids: Id,
-    /// surf_IDm (11-20): main surface, required.
-    pub surf_idm: Id,
-    /// Ignore (21-30): 0 → 1000 = keep secondary nodes with no main segment;
-    /// 1, 2, 3 = remove them (2 and 3 also recompute dsearch when it is 0).
-    pub ignore: i64,
-    /// Spotflag (31-40): formulation. 0 → 5 (standard kinematic). Allowed: 1-5,
-    /// 10-12, 20-22 (rupture), 25-28 (penalty / kinematic with penalty switch), 30.
-    pub spotflag: i64,
-    /// Level (41-50): hierarchy level, >= 0 (0 default). Forced to 0 for Spotflag 25-28.
-    pub level: i64,
-    /// Isearch (51-60): 0 → 2; 1 = old search.
-    pub isearch: i64,
-    /// Idel2 (61-70): 0 → 1000 = no deletion; 1 = release when all elements of
-    /// the main segment are deleted; 2 = when one is. Forced to 1000 (none)
-    /// unless Spotflag ∈ {1, 5, 25..28}, as the Starter does.
-    pub idel2: i64,
-    /// surf_IDs (71-80, format 2025+): optional secondary surface (0 = none).
-    /// Informational: the Starter does not use it yet.
-    pub surf_ids: Id,
-    /// dsearch (81-100): search distance; 0 = computed by the Starter.
-    pub dsearch: f64,
-    /// Rupture cards (Spotflag 20, 21, 22).
-    pub rupture: Option<Type2Rupture>,
-    /// Penalty card (Spotflag 25..28).
-    pub penalty: Option<Type2Penalty>,
-    /// Thermal card; `None` when absent or blank.
-    pub thermal: Option<Type2Thermal>,
-}
-
-/// TYPE2 rupture cards (Spotflag 20-22).
-#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
-pub struct Type2Rupture {
-    /// Rupt (1-10): 0 → 2 (failure when Max_N_Dist or Max_T_Dist is reached);
-    /// 1 = failure on the combined criterion.
-    pub rupt: i64,
-    /// Ifiltr (11-20): 0 none, 1 alpha filter.
-    pub ifiltr: i64,
-    /// fct_IDsr (21-30): stress factor vs stress rate (0 = none).
-    pub fct_idsr: Id,
-    /// fct_IDsn (31-40): max normal stress vs normal distance, required.
-    pub fct_idsn: Id,
-    /// fct_IDst (41-50): max tangential stress vs tangential distance, required.
-    pub fct_idst: Id,
-    /// Isym (51-60): 0 symmetric rupture, 1 traction only.
-    pub isym: i64,
-    /// Max_N_Dist (61-80): 0 → 1e20.
-    pub max_n_dist: f64,
-    /// Max_T_Dist (81-100): 0 → 1e20.
-    pub max_t_dist: f64,
-    /// Fscalestress (card 2, 1-20): 0 → 1.0.
-    pub fscale_stress: f64,
-    /// Fscalestr_rate (21-40): 0 → 1.0.
-    pub fscale_str_rate: f64,
-    /// Fscaledist (41-60): 0 → 1.0.
-    pub fscale_dist: f64,
-    /// Alpha (61-80): filter coefficient; with Ifiltr = 1, 0 → 1.0 and clamped to [0, 1].
-    pub alpha: f64,
-    /// Area (81-100): area used when the secondary node has none (0 = none).
-    pub area: f64,
-}
-
-/// TYPE2 penalty card (Spotflag 25-28).
-#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
-pub struct Type2Penalty {
-    /// Stfac (1-20): stiffness factor, 0 → 1.0.
-    pub stfac: f64,
-    /// Visc (21-40): critical damping, 0 → 0.05.
-    pub visc: f64,
-    /// Istf (61-70): 0 → 2; 1..5 as in TYPE7.
-    pub istf: i64,
-}
-
-/// TYPE2 optional thermal card.
-#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
-pub struct Type2Thermal {
-    /// Ithe (1-10): 0 none, 1 heat transfer.
-    pub ithe: i64,
-    /// Kthe (11-30): heat exchange coefficient.
-    pub kthe: f64,
-    /// Iproj (91-100): 0 → 1 = move the secondary projection to the main edge;
-    /// 2 = unchanged. Not on the card for Spotflag ∈ {1, 28, 30} (then 1).
-    pub iproj: i64,
-}
-
 const SPOTFLAGS: &[i64] = &[0, 1, 2, 3, 4, 5, 10, 11, 12, 20, 21, 22, 25, 26, 27, 28, 30];
 
-fn read_type2(cards: &mut Cards) -> DeckResult<Type2> {
+fn read_type2(cards: &mut Cards) -> InputResult<Type2> {
     let c1 = cards.next(
         "the card with grnd_IDs, surf_IDm, Ignore, Spotflag, Level, Isearch, Idel2, dsearch",
     )?;
@@ -338,49 +138,7 @@ fn read_type2(cards: &mut Cards) -> DeckResult<Type2> {
 // TYPE3
 // ---------------------------------------------------------------------------
 
-/// /INTER/TYPE3: surface to surface "sliding and voids" (symmetric: the nodes of
-/// each surface are checked against the segments of the other).
-///
-/// Card 1: surf_ID1 (1-10), surf_ID2 (11-20), Idel (71-80).
-/// Card 2: Stfac (1-20), Fric (21-40), Gap (41-60), Tstart (61-80), Tstop (81-100).
-/// Card 3: IBCX IBCY IBCZ (8, 9, 10), IRS (11-20), IRM (21-30).
-/// Card 4 (may be absent): Ptlim (61-80).
-#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
-pub struct Type3 {
-    /// surf_ID1 (1-10): the first surface, stored on the *secondary* side
-    /// (the Starter listing prints its segments as SECONDARY SURFACE). Required.
-    pub surf_id1: Id,
-    /// surf_ID2 (11-20): the second surface, the main side. Required.
-    pub surf_id2: Id,
-    /// Idel (71-80): 0 no deletion; 1 / 2 remove main segments when all / one of
-    /// their elements are deleted; -1 / -2 the same keeping non-connected nodes.
-    pub idel: i64,
-    /// Stfac (card 2, 1-20): stiffness factor, 0 → 0.2 (the Starter listing
-    /// prints 0.2). The theory manual recommends <= 1.0; larger values are
-    /// accepted.
-    pub stfac: f64,
-    /// Fric (21-40): Coulomb friction, default 0.
-    pub fric: f64,
-    /// Gap (41-60): initial gap, default 0 (not computed: the listing prints 0).
-    pub gap: f64,
-    /// Tstart (61-80), default 0.
-    pub tstart: f64,
-    /// Tstop (81-100): 0 → 1e30.
-    pub tstop: f64,
-    /// IBCX, IBCY, IBCZ (card 3, columns 8, 9, 10): deactivate the secondary
-    /// nodes' boundary conditions in X, Y, Z at impact.
-    pub ibc: [bool; 3],
-    /// IRS (11-20): renumbering of surface 1 segments: 0 = reverse a normal that
-    /// points into the solid, 1 = always reverse, 2 = never.
-    pub irs: i64,
-    /// IRM (21-30): the same for surface 2.
-    pub irm: i64,
-    /// Ptlim (card 4, 61-80): maximum tangential pressure, 0 → 1e30. Card 4 is
-    /// often absent (e.g. INT357); the listing still prints 1e30.
-    pub ptlim: f64,
-}
-
-fn read_type3(cards: &mut Cards) -> DeckResult<Type3> {
+fn read_type3(cards: &mut Cards) -> InputResult<Type3> {
     let c1 = cards.next("the card with surf_ID1, surf_ID2, Idel")?;
     let c2 = cards.next("the card with Stfac, Fric, Gap, Tstart, Tstop")?;
     let c3 = cards.next("the card with IBC, IRS, IRM")?;
@@ -409,55 +167,7 @@ fn read_type3(cards: &mut Cards) -> DeckResult<Type3> {
 // TYPE5
 // ---------------------------------------------------------------------------
 
-/// /INTER/TYPE5: node to surface "sliding and voids" (non-symmetric).
-///
-/// Card 1: grnd_IDs (1-10), surf_IDm (11-20), Ibag (61-70), Idel (71-80).
-/// Card 2: Stfac (1-20), Fric (21-40), Gap (41-60), Tstart (61-80), Tstop (81-100).
-/// Card 3: IBCX IBCY IBCZ (8, 9, 10), IRM (21-30), Inacti (31-40).
-/// Card 4: Ifric (1-10), Ifiltr (11-20), Xfreq (21-40), sens_ID (51-60), Ptlim (61-80).
-/// Then C1..C5 if Ifric > 0 and C6 if Ifric > 1.
-#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
-pub struct Type5 {
-    /// grnd_IDs (1-10): secondary node group, required.
-    pub grnod_ids: Id,
-    /// surf_IDm (11-20): main surface, required.
-    pub surf_idm: Id,
-    /// Ibag (61-70): 0 = no airbag vent closure, 1 = closure (no 1000 convention here).
-    pub ibag: i64,
-    /// Idel (71-80): 0 no deletion; 1, 2, -1, -2 as in TYPE3.
-    pub idel: i64,
-    /// Stfac (card 2, 1-20): stiffness factor, 0 → 0.2 (listing prints 0.2).
-    pub stfac: f64,
-    /// Fric (21-40): Coulomb friction, default 0.
-    pub fric: f64,
-    /// Gap (41-60): default 0 (not computed).
-    pub gap: f64,
-    /// Tstart (61-80), default 0.
-    pub tstart: f64,
-    /// Tstop (81-100): 0 → 1e30.
-    pub tstop: f64,
-    /// IBCX, IBCY, IBCZ (card 3, columns 8, 9, 10).
-    pub ibc: [bool; 3],
-    /// IRM (21-30): main segment renumbering, 0 / 1 / 2 as in TYPE3.
-    pub irm: i64,
-    /// Inacti (31-40): 0 no action; 3 move secondary nodes; 4 move main nodes.
-    pub inacti: i64,
-    /// Ifric (card 4, 1-10): 0 Coulomb, 1 generalized viscous, 2 Darmstad, 3 Renard.
-    pub ifric: i64,
-    /// Ifiltr (11-20): friction filter 0..3; forced to 0 when Xfreq = 0 (as the Starter does).
-    pub ifiltr: i64,
-    /// Xfreq (21-40): filtering coefficient, default 0.
-    pub xfreq: f64,
-    /// sens_ID (51-60): activation sensor (0 = none; overrides Tstart/Tstop).
-    pub sens_id: Id,
-    /// Ptlim (61-80): maximum tangential pressure, 0 → 1e30.
-    pub ptlim: f64,
-    /// C1..C6: friction law coefficients; `Some` when Ifric > 0 (C6 read only
-    /// when Ifric > 1, else 0).
-    pub fric_coefs: Option<[f64; 6]>,
-}
-
-fn read_type5(cards: &mut Cards) -> DeckResult<Type5> {
+fn read_type5(cards: &mut Cards) -> InputResult<Type5> {
     let c1 = cards.next("the card with grnd_IDs, surf_IDm, Ibag, Idel")?;
     let c2 = cards.next("the card with Stfac, Fric, Gap, Tstart, Tstop")?;
     let c3 = cards.next("the card with IBC, IRM, Inacti")?;
@@ -505,173 +215,7 @@ fn read_type5(cards: &mut Cards) -> DeckResult<Type5> {
 // TYPE7
 // ---------------------------------------------------------------------------
 
-/// /INTER/TYPE7: general node to surface penalty contact (format 2020-2026).
-///
-/// Card 1: grnd_IDs (1-10), surf_IDm (11-20), Istf (21-30), Ithe (31-40),
-/// Igap (41-50), [Multimp 51-60, ignored], Ibag (61-70), Idel (71-80),
-/// Icurv (81-90), Iadm (91-100).
-/// Card 2: Fscalegap (1-20), Gapmax (21-40), Fpenmax (41-60), Itied (81-90), Ists (91-100).
-/// Card 3: Stmin (1-20), Stmax (21-40), %mesh_size (41-60), dtmin (61-80),
-/// Irem_gap (81-90), Irem_i2 (91-100).
-/// If Icurv ∈ {1, 2}: node_ID1 (1-10), node_ID2 (11-20).
-/// Card 4: Stfac (1-20), Fric (21-40), Gapmin (41-60), Tstart (61-80), Tstop (81-100).
-/// Card 5: IBCX IBCY IBCZ (8, 9, 10), Inacti (31-40), VISs (41-60), VISF (61-80), Bumult (81-100).
-/// Card 6: Ifric (1-10), Ifiltr (11-20), Xfreq (21-40), Iform (41-50),
-/// sens_ID (51-60), fct_IDF (61-70), AscaleF (71-90), fric_ID (91-100).
-/// Then: C1..C5 if Ifric > 0; C6 if Ifric > 1; the Iadm card if Iadm = 2;
-/// two thermal cards if Ithe = 1 (the Starter's order).
-#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
-pub struct Type7 {
-    /// grnd_IDs (1-10): secondary node group. 0 = self-contact: the secondary
-    /// nodes are the nodes of surf_IDm. With Ists ≠ 0 it is a surface id.
-    pub grnod_ids: Id,
-    /// surf_IDm (11-20): main surface, required.
-    pub surf_idm: Id,
-    /// Istf (21-30): stiffness definition. 0 → 1000 = K from the main side only
-    /// (Stfac·Km); 1 = Stfac is the stiffness; 2/3/4/5 = mean/max/min/series of
-    /// Km and Ks, clamped to [Stmin, Stmax].
-    pub istf: i64,
-    /// Ithe (31-40): 0 no heat; 1 heat transfer / frictional heating (adds the thermal cards).
-    pub ithe: i64,
-    /// Igap (41-50): 0 → 1000 = constant gap Gapmin; 1 variable; 2 variable with
-    /// Fscalegap and Gapmax; 3 = 2 plus %mesh_size.
-    pub igap: i64,
-    /// Ibag (61-70): airbag vent closure. 0 → 1000 = no closure (the Starter's
-    /// built-in default; the reference card names 2 "no closure, default":
-    /// 2 and 1000 mean the same); 1 = closure.
-    pub ibag: i64,
-    /// Idel (71-80): 0 → 1000 = no deletion; 1 / 2 = remove main segments when
-    /// all / one of their elements are deleted (and non-connected secondary
-    /// nodes); -1 / -2 the same keeping the secondary nodes.
-    pub idel: i64,
-    /// Icurv (81-90): gap curvature: 0 none, 1 spherical, 2 cylindrical, 3 bicubic.
-    pub icurv: i64,
-    /// Iadm (91-100): adaptive meshing refinement: 0 off, 1 mesh size, 2 + penetration and angle.
-    pub iadm: i64,
-    /// Fscalegap (card 2, 1-20): gap scale factor (Igap 2, 3), 0 → 1.0.
-    pub fscalegap: f64,
-    /// Gapmax (21-40): maximum gap (Igap 2, 3), 0 → 1e30 (no maximum).
-    pub gapmax: f64,
-    /// Fpenmax (41-60): maximum initial penetration fraction; 0 = not used.
-    pub fpenmax: f64,
-    /// Itied (81-90): 0 not tied; 1 tied with rebound; 2 tied without rebound
-    /// (when the contact time step falls below dtmin).
-    pub itied: i64,
-    /// Ists (91-100, format 2026): 0 node to surface; 1 linear STS, 2 STS with
-    /// smoothing (grnd_IDs is then a surface). 0 in older formats.
-    pub ists: i64,
-    /// Stmin (card 3, 1-20): minimum stiffness (Istf 2..5 only), default 0.
-    pub stmin: f64,
-    /// Stmax (21-40): maximum stiffness (Istf 2..5 only), 0 → 1e30.
-    pub stmax: f64,
-    /// %mesh_size (41-60): fraction of the mesh size (Igap = 3 only), 0 → 0.4.
-    /// The listing prints 0 when Igap ≠ 3, where it is unused.
-    pub mesh_size_pct: f64,
-    /// dtmin (61-80): minimum interface time step; 0 = none (/DT/INTER/DEL applies).
-    pub dtmin: f64,
-    /// Irem_gap (81-90): 0 → 1 = keep secondary nodes when the element size is
-    /// below the gap in self-contact; 2 = deactivate them.
-    pub irem_gap: i64,
-    /// Irem_i2 (91-100): 0 → 3 = no change (the Starter uses 1 in implicit
-    /// runs); 1 = remove secondary nodes also tied by a TYPE2.
-    pub irem_i2: i64,
-    /// node_ID1, node_ID2 (Icurv 1 or 2 only): sphere centre / cylinder axis
-    /// nodes. Icurv 1 needs node_ID1 (node_ID2 may be 0); Icurv 2 needs both.
-    pub curv_nodes: Option<[Id; 2]>,
-    /// Stfac (card 4, 1-20): 0 → 1.0. A scale factor on Km, or the stiffness
-    /// itself when Istf = 1.
-    pub stfac: f64,
-    /// Fric (21-40): Coulomb friction, default 0; with fct_IDF ≠ 0 it is a
-    /// scale factor and 0 → 1.0.
-    pub fric: f64,
-    /// Gapmin (41-60): minimum gap; 0 = computed by the Starter (from the main
-    /// side's thickness and smallest edge).
-    pub gapmin: f64,
-    /// Tstart (61-80), default 0.
-    pub tstart: f64,
-    /// Tstop (81-100): 0 → 1e30.
-    pub tstop: f64,
-    /// IBCX, IBCY, IBCZ (card 5, columns 8, 9, 10): deactivate the secondary
-    /// nodes' boundary conditions in X, Y, Z at impact.
-    pub ibc: [bool; 3],
-    /// Inacti (31-40): initial penetrations. 0 → 1000 = no action; 1 deactivate
-    /// node stiffness; 2 element stiffness; 3 move nodes; 5, 6 variable gap.
-    pub inacti: i64,
-    /// VISs (41-60): critical damping on the stiffness, 0 → 0.05.
-    pub viss: f64,
-    /// VISF (61-80): critical damping on friction, 0 → 1.0 (the card default).
-    /// The Starter substitutes 1.0 only when there is friction (Fric ≠ 0 or
-    /// Ifric ≠ 0) and uses 0 with Iform = 2, so its listing prints 0 without
-    /// friction; VISF has no effect in those cases, so the value is the same in use.
-    pub visf: f64,
-    /// Bumult (81-100): sorting (bucket) factor, 0 → 0.2 (the Starter raises it
-    /// ×1.5 above 1.5M nodes and ×2 above 2.5M).
-    pub bumult: f64,
-    /// Ifric (card 6, 1-10): 0 Coulomb; 1 generalized viscous; 2 Darmstad;
-    /// 3 Renard; 4 exponential decay (in the Starter's reader, not on the
-    /// reference card). Ignored when fric_ID ≠ 0.
-    pub ifric: i64,
-    /// Ifiltr (11-20): friction filter: 0 none; 1 simple (α = Xfreq); 2 −3 dB
-    /// with period; 3 −3 dB with cut-off frequency. Forced to 0 when Xfreq = 0,
-    /// as the Starter does.
-    pub ifiltr: i64,
-    /// Xfreq (21-40): filtering coefficient, default 0.
-    pub xfreq: f64,
-    /// Iform (41-50): friction penalty formulation: 0 → 1 viscous (total); 2 stiffness (incremental).
-    pub iform: i64,
-    /// sens_ID (51-60): activation sensor (0 = none; overrides Tstart/Tstop).
-    pub sens_id: Id,
-    /// fct_IDF (61-70): friction vs temperature function (0 = none).
-    pub fct_idf: Id,
-    /// AscaleF (71-90): abscissa scale on fct_IDF, 0 → 1.0.
-    pub ascalef: f64,
-    /// fric_ID (91-100): /FRICTION to use (0 = this card's friction).
-    pub fric_id: Id,
-    /// C1..C6 (friction law coefficients): `Some` when Ifric > 0; C6 is read
-    /// only when Ifric > 1 (else 0).
-    pub fric_coefs: Option<[f64; 6]>,
-    /// The Iadm = 2 card.
-    pub adm: Option<Type7Adm>,
-    /// The two thermal cards (Ithe = 1).
-    pub thermal: Option<Type7Thermal>,
-}
-
-/// TYPE7 adaptive-meshing card (Iadm = 2).
-#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
-pub struct Type7Adm {
-    /// NRadm (1-10): elements through a 90° radius, 0 → 3.
-    pub nradm: i64,
-    /// Padm (11-30): penetration percentage criterion, 0 → 1.0.
-    pub padm: f64,
-    /// Angladm (31-50): angle criterion in degrees, default 0.
-    pub angladm: f64,
-}
-
-/// TYPE7 thermal cards (Ithe = 1).
-#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
-pub struct Type7Thermal {
-    /// Kthe (1-20): heat exchange coefficient (or a scale factor when
-    /// fct_IDK ≠ 0, then 0 → 1.0); default 0.
-    pub kthe: f64,
-    /// fct_IDK (21-30): heat exchange vs contact pressure function (0 = none).
-    pub fct_idk: Id,
-    /// Tint (41-60): interface temperature (Ithe_form = 0), default 0.
-    pub tint: f64,
-    /// Ithe_form (61-70): 0 exchange with a constant-temperature interface only; 1 between all parts.
-    pub ithe_form: i64,
-    /// AscaleK (71-90): abscissa scale on fct_IDK, 0 → 1.0.
-    pub ascalek: f64,
-    /// Frad (card 2, 1-20): radiation factor, default 0 (no radiation).
-    pub frad: f64,
-    /// Drad (21-40): maximum radiation distance; 0 = computed by the Starter.
-    pub drad: f64,
-    /// Fheats (41-60): fraction of frictional heat to the secondary side, default 0.
-    pub fheats: f64,
-    /// Fheatm (61-80): fraction of frictional heat to the main side, default 0.
-    pub fheatm: f64,
-}
-
-fn read_type7(cards: &mut Cards) -> DeckResult<Type7> {
+fn read_type7(cards: &mut Cards) -> InputResult<Type7> {
     let c1 = cards
         .next("the card with grnd_IDs, surf_IDm, Istf, Ithe, Igap, Ibag, Idel, Icurv, Iadm")?;
     let grnod_ids = c1.id_opt(1, "grnd_IDs")?;
@@ -847,97 +391,7 @@ fn read_type7(cards: &mut Cards) -> DeckResult<Type7> {
 // TYPE11
 // ---------------------------------------------------------------------------
 
-/// /INTER/TYPE11: edge to edge contact between two /LINE sets (format 2018-2024).
-///
-/// Card 1: line_IDs (1-10), line_IDm (11-20), Istf (21-30), Ithe (31-40),
-/// Igap (41-50), [Multimp 51-60, ignored], Irem_gap (61-70), Idel (71-80).
-/// Card 2: Stmin (1-20), Stmax (21-40), %mesh_size (41-60), dtmin (61-80), Iform (81-90), sens_ID (91-100).
-/// Card 3: Stfac (1-20), Fric (21-40), Gapmin (41-60), Tstart (61-80), Tstop (81-100).
-/// Card 4: IBCX IBCY IBCZ (8, 9, 10), Inacti (31-40), VISs (41-60), VISF (61-80), Bumult (81-100).
-/// Card 5: fric_ID (91-100).
-/// If Ithe > 0: Kthe (1-20), fct_IDK (21-30), AscaleK (31-50), Tint (51-70),
-/// Ithe_form (71-80); then Frad (1-20), Drad (21-40).
-#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
-pub struct Type11 {
-    /// line_IDs (1-10): secondary /LINE, required.
-    pub line_ids: Id,
-    /// line_IDm (11-20): main /LINE; 0 = the secondary line (self-contact).
-    pub line_idm: Id,
-    /// Istf (21-30): 0 → 5 (Km and Ks in series); 1 = Stfac is the stiffness;
-    /// 2/3/4 = mean/max/min. A negative Stfac in the deck means Istf = 1 with
-    /// stiffness |Stfac| (as the Starter reads it).
-    pub istf: i64,
-    /// Ithe (31-40): 0 none; 1 heat transfer with constant main temperature Tint; 2 variable.
-    pub ithe: i64,
-    /// Igap (41-50): 0 → 1000 = constant gap Gapmin; 1 variable; 3 variable +
-    /// mesh size (2 is not allowed for TYPE11).
-    pub igap: i64,
-    /// Irem_gap (61-70, format 2020+): 0 → 1 = no deactivation; 2 = deactivate
-    /// secondary nodes when the element size is below the gap. Forced to 1
-    /// with Igap = 3, as the Starter does.
-    pub irem_gap: i64,
-    /// Idel (71-80): 0 → 1000 = no deletion; 1, 2, -1, -2 as in TYPE7.
-    pub idel: i64,
-    /// Stmin (card 2, 1-20): minimum stiffness (not with Istf = 1), default 0.
-    pub stmin: f64,
-    /// Stmax (21-40): maximum stiffness, 0 → 1e30.
-    pub stmax: f64,
-    /// %mesh_size (41-60): Igap = 3 only, 0 → 0.4.
-    pub mesh_size_pct: f64,
-    /// dtmin (61-80): minimum interface time step, default 0 (none).
-    pub dtmin: f64,
-    /// Iform (81-90): friction penalty formulation: 0 → 1 viscous; 2 incremental.
-    pub iform: i64,
-    /// sens_ID (91-100): activation sensor (0 = none).
-    pub sens_id: Id,
-    /// Stfac (card 3, 1-20): 0 → 1.0; the stiffness itself when Istf = 1 (stored positive).
-    pub stfac: f64,
-    /// Fric (21-40): Coulomb friction, default 0.
-    pub fric: f64,
-    /// Gapmin (41-60): minimum gap; 0 = computed by the Starter.
-    pub gapmin: f64,
-    /// Tstart (61-80), default 0.
-    pub tstart: f64,
-    /// Tstop (81-100): 0 → 1e30.
-    pub tstop: f64,
-    /// IBCX, IBCY, IBCZ (card 4, columns 8, 9, 10).
-    pub ibc: [bool; 3],
-    /// Inacti (31-40): 0 → 1000 = no action; 1, 2, 3, 5, 6 as in TYPE7.
-    pub inacti: i64,
-    /// VISs (41-60): 0 → 0.05.
-    pub viss: f64,
-    /// VISF (61-80): 0 → 1.0 (card default; the Starter keeps 0 when Fric = 0
-    /// or Iform = 2, where VISF has no effect).
-    pub visf: f64,
-    /// Bumult (81-100): 0 → 0.2.
-    pub bumult: f64,
-    /// fric_ID (card 5, 91-100): /FRICTION to use (0 = Fric). Card 5 may be
-    /// absent in pre-2018 decks when Ithe = 0.
-    pub fric_id: Id,
-    /// The thermal cards (Ithe > 0).
-    pub thermal: Option<Type11Thermal>,
-}
-
-/// TYPE11 thermal cards (Ithe > 0). The layout differs from TYPE7's.
-#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
-pub struct Type11Thermal {
-    /// Kthe (1-20): heat exchange coefficient (scale factor when fct_IDK ≠ 0, then 0 → 1.0).
-    pub kthe: f64,
-    /// fct_IDK (21-30): heat exchange vs pressure function (0 = none).
-    pub fct_idk: Id,
-    /// AscaleK (31-50): abscissa scale on fct_IDK, 0 → 1.0.
-    pub ascalek: f64,
-    /// Tint (51-70): interface temperature, default 0.
-    pub tint: f64,
-    /// Ithe_form (71-80): 0 constant-temperature interface; 1 between all parts.
-    pub ithe_form: i64,
-    /// Frad (card 2, 1-20): radiation factor, default 0.
-    pub frad: f64,
-    /// Drad (21-40): maximum radiation distance, default 0.
-    pub drad: f64,
-}
-
-fn read_type11(cards: &mut Cards) -> DeckResult<Type11> {
+fn read_type11(cards: &mut Cards) -> InputResult<Type11> {
     let c1 = cards.next("the card with line_IDs, line_IDm, Istf, Ithe, Igap, Irem_gap, Idel")?;
     let line_ids = c1.id(1, "line_IDs")?;
     let line_idm = c1.id_opt(11, "line_IDm")?;
@@ -1061,7 +515,7 @@ fn read_type11(cards: &mut Cards) -> DeckResult<Type11> {
 
 /// Reads one /INTER block. Returns false for an interface type this reader
 /// does not support (the caller warns, or fails with --strict).
-pub(super) fn parse_interface(block: &Block, deck: &mut Deck) -> DeckResult<bool> {
+pub(super) fn parse_interface(block: &Block, deck: &mut Deck) -> InputResult<bool> {
     let ty = block.parts.get(1).map(String::as_str).unwrap_or("");
     let which = match ty {
         "TYPE2" => 2,
@@ -1098,7 +552,7 @@ pub(super) fn parse_interface(block: &Block, deck: &mut Deck) -> DeckResult<bool
             ),
         });
     }
-    deck.interfaces.push(InterfaceCard {
+    deck.interfaces.push(InterfaceSpec {
         id,
         unit_id,
         title,
@@ -1114,7 +568,7 @@ pub(super) fn parse_interface(block: &Block, deck: &mut Deck) -> DeckResult<bool
 
 /// A 10-column integer flag at `col` that must be one of `allowed`; 0 (or
 /// blank) becomes `zero`.
-fn flag(c: &Card, col: usize, name: &str, allowed: &[i64], zero: i64) -> DeckResult<i64> {
+fn flag(c: &Card, col: usize, name: &str, allowed: &[i64], zero: i64) -> InputResult<i64> {
     let width = 10;
     let v = c.int_opt(col, width, name)?.unwrap_or(0);
     if !allowed.contains(&v) {
@@ -1130,7 +584,7 @@ fn flag(c: &Card, col: usize, name: &str, allowed: &[i64], zero: i64) -> DeckRes
 }
 
 /// A 20-column real at `col` that must be >= 0; 0 (or blank) becomes `zero`.
-fn real_ge0(c: &Card, col: usize, name: &str, zero: f64, what: &str) -> DeckResult<f64> {
+fn real_ge0(c: &Card, col: usize, name: &str, zero: f64, what: &str) -> InputResult<f64> {
     let width = 20;
     let v = c.real_opt(col, width, name)?.unwrap_or(0.0);
     if v < 0.0 {
@@ -1146,7 +600,7 @@ fn real_ge0(c: &Card, col: usize, name: &str, zero: f64, what: &str) -> DeckResu
 }
 
 /// Tstart (61-80, default 0) and Tstop (81-100, 0 → 1e30) of a card.
-fn times(c: &Card) -> DeckResult<(f64, f64)> {
+fn times(c: &Card) -> InputResult<(f64, f64)> {
     let tstart = real_ge0(c, 61, "Tstart", 0.0, "the start time")?;
     let tstop = real_ge0(c, 81, "Tstop", EP30, "the stop time")?;
     if tstop < tstart {
@@ -1160,7 +614,7 @@ fn times(c: &Card) -> DeckResult<(f64, f64)> {
 
 /// IBC: three one-column 0/1 flags IBCX, IBCY, IBCZ in columns 8, 9, 10
 /// (written e.g. `       000`); columns 1-7 are blank.
-fn read_ibc(c: &Card) -> DeckResult<[bool; 3]> {
+fn read_ibc(c: &Card) -> InputResult<[bool; 3]> {
     let lead = c.text(1, 7);
     if !lead.is_empty() {
         return Err(c.err(
@@ -1184,7 +638,7 @@ fn read_ibc(c: &Card) -> DeckResult<[bool; 3]> {
 /// rules: Ifiltr is forced to 0 when Xfreq = 0; with Ifiltr = 1, Xfreq is the
 /// filter coefficient α in (0, 1]; with Ifiltr = 2 it is the number of steps
 /// per period (α = 2π/Xfreq must be <= 1).
-fn filter(c: &Card) -> DeckResult<(i64, f64)> {
+fn filter(c: &Card) -> InputResult<(i64, f64)> {
     let ifiltr = flag(c, 11, "Ifiltr", &[0, 1, 2, 3], 0)?;
     let xfreq = real_ge0(c, 21, "Xfreq", 0.0, "the filtering coefficient")?;
     if xfreq == 0.0 {
@@ -1204,7 +658,7 @@ fn filter(c: &Card) -> DeckResult<(i64, f64)> {
 }
 
 /// C1..C5 (when Ifric > 0) and C6 (when Ifric > 1), 20 columns each.
-fn friction_coefs(cards: &mut Cards, ifric: i64) -> DeckResult<Option<[f64; 6]>> {
+fn friction_coefs(cards: &mut Cards, ifric: i64) -> InputResult<Option<[f64; 6]>> {
     if ifric <= 0 {
         return Ok(None);
     }
@@ -1224,6 +678,7 @@ fn friction_coefs(cards: &mut Cards, ifric: i64) -> DeckResult<Option<[f64; 6]>>
 mod tests {
     use super::super::source::Line;
     use super::*;
+    use crate::model::Loc;
 
     /// A block as the source reader makes it (comment lines already removed).
     fn block(header: &str, lines: &[&str]) -> Block {
@@ -1252,7 +707,7 @@ mod tests {
         }
     }
 
-    fn parse(header: &str, lines: &[&str]) -> DeckResult<(InterfaceCard, Deck)> {
+    fn parse(header: &str, lines: &[&str]) -> InputResult<(InterfaceSpec, Deck)> {
         let mut deck = Deck::default();
         let ok = parse_interface(&block(header, lines), &mut deck)?;
         assert!(ok, "{header} should be supported");

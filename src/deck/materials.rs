@@ -1,97 +1,13 @@
 //! /MAT/LAW1 (/MAT/ELAST) and /MAT/LAW2 (/MAT/PLAS_JOHNS).
 //! Other laws are reported as unsupported (the caller warns, or fails with --strict).
 
-use super::error::{DeckResult, Loc};
 use super::fields::Cards;
 use super::source::Block;
-use super::{header_id, header_id_opt, Deck, Id};
-use serde::{Deserialize, Serialize};
-
-#[derive(Clone, Debug, Serialize, Deserialize)]
-pub struct MaterialCard {
-    pub id: Id,
-    pub unit_id: Id,
-    pub title: String,
-    /// Initial density RHO_I.
-    pub rho: f64,
-    /// Reference density RHO_0 (0 = RHO_I).
-    pub rho_ref: f64,
-    pub e: f64,
-    pub nu: f64,
-    pub law: MaterialLaw,
-    pub loc: Loc,
-}
-
-#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
-pub enum MaterialLaw {
-    /// LAW1: linear elastic.
-    Elastic,
-    /// LAW2: Johnson-Cook elasto-plastic,
-    /// σ_y = (a + b·ε_p^n)·(1 + c·ln(ε̇/ε̇₀))·(1 − T*^m), capped at SIG_max0.
-    JohnsonCook(JohnsonCook),
-}
-
-#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
-pub struct JohnsonCook {
-    /// Iflag as given: 0 = (a, b, n) input, 1 = (σ_y, UTS, ε_UTS) input.
-    pub iflag: i64,
-    pub a: f64,
-    pub b: f64,
-    pub n: f64,
-    /// Plastic strain at failure (blank/0 → 1e20: no failure).
-    pub eps_p_max: f64,
-    /// Maximum flow stress (blank/0 → 1e20).
-    pub sig_max0: f64,
-    /// Strain-rate coefficient c.
-    pub c: f64,
-    /// Reference strain rate ε̇₀ (required > 0 when c ≠ 0; 1 when c = 0).
-    pub eps_dot_0: f64,
-    /// 1: the strain-rate term also scales σ_max (default 1); 2: it does not.
-    pub icc: i64,
-    /// Strain-rate filtering flag (0 off, 1 on).
-    pub fsmooth: i64,
-    /// Cut-off frequency for strain-rate filtering (blank/0 → 1e20).
-    pub f_cut: f64,
-    /// Hardening: 0 isotropic … 1 kinematic (mixed between).
-    pub chard: f64,
-    /// Temperature exponent m (blank/0 → 1).
-    pub m: f64,
-    /// Melting temperature (blank/0 → 1e20).
-    pub t_melt: f64,
-    /// ρ·Cp (blank/0 → 1e20: no adiabatic heating).
-    pub rho_cp: f64,
-    /// Reference (room) temperature (blank/0 → 298).
-    pub t_r: f64,
-}
-
-impl JohnsonCook {
-    /// The (a, b, n) law with every other field at its blank-card default:
-    /// no failure, no stress cap, no strain-rate or temperature term,
-    /// isotropic hardening.
-    pub fn hardening(a: f64, b: f64, n: f64) -> JohnsonCook {
-        JohnsonCook {
-            iflag: 0,
-            a,
-            b,
-            n,
-            eps_p_max: NO_LIMIT,
-            sig_max0: NO_LIMIT,
-            c: 0.0,
-            eps_dot_0: 1.0,
-            icc: 1,
-            fsmooth: 0,
-            f_cut: NO_LIMIT,
-            chard: 0.0,
-            m: 1.0,
-            t_melt: NO_LIMIT,
-            rho_cp: NO_LIMIT,
-            t_r: 298.0,
-        }
-    }
-}
+use super::{header_id, header_id_opt, Deck};
+use crate::model::{InputResult, JohnsonCook, MaterialLaw, MaterialSpec, NO_LIMIT};
 
 /// Returns false for a law this reader does not support.
-pub(super) fn parse_material(block: &Block, deck: &mut Deck) -> DeckResult<bool> {
+pub(super) fn parse_material(block: &Block, deck: &mut Deck) -> InputResult<bool> {
     let law = block.parts.get(1).map(String::as_str).unwrap_or("");
     let is_elastic = matches!(law, "LAW1" | "ELAST");
     let is_jc = matches!(law, "LAW2" | "PLAS_JOHNS");
@@ -228,7 +144,7 @@ pub(super) fn parse_material(block: &Block, deck: &mut Deck) -> DeckResult<bool>
         })
     };
     super::warn_surplus(&cards, "the last card of this law", &mut deck.warnings);
-    deck.materials.push(MaterialCard {
+    deck.materials.push(MaterialSpec {
         id,
         unit_id,
         title,
@@ -241,9 +157,6 @@ pub(super) fn parse_material(block: &Block, deck: &mut Deck) -> DeckResult<bool>
     });
     Ok(true)
 }
-
-/// What Radioss puts for "no limit" when a limit field is 0 (the starter listing prints 1E+20).
-pub const NO_LIMIT: f64 = 1e20;
 
 fn no_limit_if_zero(v: f64) -> f64 {
     super::fields::zero_default(v, NO_LIMIT)

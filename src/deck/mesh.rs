@@ -1,10 +1,10 @@
 //! /NODE and the element keywords (/SHELL, /SH3N, /BRICK, /TETRA4, /SPRING,
 //! /TRUSS, /BEAM). Elements keep their part id from the keyword line.
 
-use super::error::{DeckResult, Loc};
 use super::fields::Cards;
 use super::source::Block;
 use super::{header_id, Deck, Id};
+use crate::model::{ElementKind, InputResult, Loc};
 use serde::{Deserialize, Serialize};
 
 /// `/NODE`: node_ID (1-10), X (11-30), Y (31-50), Z (51-70).
@@ -13,42 +13,6 @@ pub struct NodeCard {
     pub id: Id,
     pub x: [f64; 3],
     pub loc: Loc,
-}
-
-/// The element kinds the reader knows.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize, PartialOrd, Ord)]
-pub enum ElementKind {
-    Shell4,
-    Shell3,
-    Brick8,
-    Tetra4,
-    Spring,
-    Truss,
-    Beam,
-}
-
-impl ElementKind {
-    pub fn keyword(self) -> &'static str {
-        match self {
-            ElementKind::Shell4 => "/SHELL",
-            ElementKind::Shell3 => "/SH3N",
-            ElementKind::Brick8 => "/BRICK",
-            ElementKind::Tetra4 => "/TETRA4",
-            ElementKind::Spring => "/SPRING",
-            ElementKind::Truss => "/TRUSS",
-            ElementKind::Beam => "/BEAM",
-        }
-    }
-
-    /// Number of nodes that define the element (beams: 2 + orientation node).
-    pub fn nodes(self) -> usize {
-        match self {
-            ElementKind::Shell4 | ElementKind::Tetra4 => 4,
-            ElementKind::Shell3 | ElementKind::Beam => 3,
-            ElementKind::Brick8 => 8,
-            ElementKind::Spring | ElementKind::Truss => 2,
-        }
-    }
 }
 
 /// One element card. `nodes` holds node ids; 0 = not given (a /BEAM or
@@ -100,19 +64,12 @@ impl Elements {
             ElementKind::Beam => &mut self.beam,
         }
     }
-    pub const KINDS: [ElementKind; 7] = [
-        ElementKind::Shell4,
-        ElementKind::Shell3,
-        ElementKind::Brick8,
-        ElementKind::Tetra4,
-        ElementKind::Spring,
-        ElementKind::Truss,
-        ElementKind::Beam,
-    ];
+    /// The kinds in the model's order.
+    pub const KINDS: [ElementKind; 7] = ElementKind::ALL;
 }
 
 /// `/NODE` (and `/NODE/unit_ID`): one node a line until the next keyword.
-pub(super) fn parse_nodes(block: &Block, deck: &mut Deck) -> DeckResult<()> {
+pub(super) fn parse_nodes(block: &Block, deck: &mut Deck) -> InputResult<()> {
     let mut cards = Cards::new(block);
     deck.nodes.reserve(block.lines.len());
     while let Some(c) = cards.next_nonblank() {
@@ -138,7 +95,7 @@ pub(super) fn parse_nodes(block: &Block, deck: &mut Deck) -> DeckResult<()> {
 /// - `/SPRING/part_ID`: spring_ID, node_ID1, node_ID2, (node_ID3 for TYPE13 orientation, 41-50).
 /// - `/TRUSS/part_ID`: truss_ID, node_ID1, node_ID2.
 /// - `/BEAM/part_ID`: beam_ID, node_ID1, node_ID2, node_ID3 (orientation; 0 = none).
-pub(super) fn parse_elements(block: &Block, deck: &mut Deck) -> DeckResult<()> {
+pub(super) fn parse_elements(block: &Block, deck: &mut Deck) -> InputResult<()> {
     let kind = match block.parts[0].as_str() {
         "SHELL" => ElementKind::Shell4,
         "SH3N" => ElementKind::Shell3,

@@ -2,38 +2,44 @@
 //!
 //! `source` turns files into keyword blocks, `fields` reads fixed-column
 //! fields, and one file per keyword family turns blocks into typed cards that
-//! keep their file:line. Nothing here resolves ids: that is `model::build`.
+//! keep their file:line; what the model holds as is (materials, properties,
+//! functions, conditions, interfaces, controls) is read straight into the
+//! model's types (`crate::model`). `to_model` then resolves every id and
+//! builds the [`Model`](crate::model::Model): it is the only step that reads
+//! a [`Deck`], so nothing outside this folder knows the Radioss cards.
 
-pub mod error;
 pub mod fields;
 pub mod source;
 
 mod conditions;
 mod controls;
 mod engine;
+mod id_index;
 mod interfaces;
 mod materials;
 mod mesh;
 mod parts;
+mod resolve_sets;
 mod sets;
+mod to_model;
 
-pub use conditions::*;
 pub use controls::*;
-pub use engine::*;
-pub use error::{DeckError, DeckResult, Loc, Warning};
-pub use interfaces::*;
-pub use materials::*;
 pub use mesh::*;
 pub use parts::*;
 pub use sets::*;
+pub use to_model::build_model;
+
+use crate::model::{
+    AnimationSpec, Begin, BoundarySpec, ConcentratedLoadSpec, CrossSectionSpec, DefShell, DefSolid,
+    Engine, Function, GravitySpec, Id, ImposedMotionSpec, InitialVelocitySpec, InputError,
+    InputResult, InterfaceSpec, Loc, MaterialSpec, PropertySpec, RigidBodySpec, RigidWallSpec,
+    TimeHistorySpec, Warning,
+};
 
 use fields::Cards;
 use serde::{Deserialize, Serialize};
 use source::Block;
 use std::path::{Path, PathBuf};
-
-/// An entity id as written in the deck (strictly positive).
-pub type Id = u64;
 
 /// Everything read from a starter deck (and its engine file, if any).
 #[derive(Clone, Debug, Default, Serialize, Deserialize)]
@@ -45,28 +51,28 @@ pub struct Deck {
     pub nodes: Vec<NodeCard>,
     pub elements: Elements,
     pub parts: Vec<PartCard>,
-    pub materials: Vec<MaterialCard>,
-    pub properties: Vec<PropertyCard>,
+    pub materials: Vec<MaterialSpec>,
+    pub properties: Vec<PropertySpec>,
     pub def_shell: Option<DefShell>,
     pub def_solid: Option<DefSolid>,
-    pub functions: Vec<FunctionCard>,
+    pub functions: Vec<Function>,
     pub added_masses: Vec<AddedMassCard>,
     pub node_groups: Vec<NodeGroupCard>,
     pub shell_groups: Vec<ShellGroupCard>,
     pub surfaces: Vec<SurfaceCard>,
     pub subsets: Vec<SubsetCard>,
-    pub bcs: Vec<BcsCard>,
-    pub imposed_velocities: Vec<ImposedMotionCard>,
-    pub imposed_displacements: Vec<ImposedMotionCard>,
-    pub initial_velocities: Vec<InitialVelocityCard>,
-    pub concentrated_loads: Vec<ConcentratedLoadCard>,
-    pub gravity: Vec<GravityCard>,
-    pub rigid_walls: Vec<RigidWallCard>,
-    pub rigid_bodies: Vec<RigidBodyCard>,
-    pub sections: Vec<SectionCard>,
-    pub interfaces: Vec<InterfaceCard>,
-    pub time_histories: Vec<TimeHistoryCard>,
-    pub animations: Vec<AnimCard>,
+    pub bcs: Vec<BoundarySpec>,
+    pub imposed_velocities: Vec<ImposedMotionSpec>,
+    pub imposed_displacements: Vec<ImposedMotionSpec>,
+    pub initial_velocities: Vec<InitialVelocitySpec>,
+    pub concentrated_loads: Vec<ConcentratedLoadSpec>,
+    pub gravity: Vec<GravitySpec>,
+    pub rigid_walls: Vec<RigidWallSpec>,
+    pub rigid_bodies: Vec<RigidBodySpec>,
+    pub sections: Vec<CrossSectionSpec>,
+    pub interfaces: Vec<InterfaceSpec>,
+    pub time_histories: Vec<TimeHistorySpec>,
+    pub animations: Vec<AnimationSpec>,
     pub engine: Option<Engine>,
     pub warnings: Vec<Warning>,
 }
@@ -80,7 +86,7 @@ pub struct ReadOptions {
 
 /// Reads a starter deck, and the engine file `NAME_0001.rad` beside it when
 /// `engine` is `Auto` and it exists (or the given file).
-pub fn read_deck(starter: &Path, engine: EngineFile, opts: ReadOptions) -> DeckResult<Deck> {
+pub fn read_deck(starter: &Path, engine: EngineFile, opts: ReadOptions) -> InputResult<Deck> {
     let src = source::read(starter)?;
     let mut deck = Deck {
         path: starter.to_path_buf(),
@@ -103,7 +109,7 @@ pub fn read_deck(starter: &Path, engine: EngineFile, opts: ReadOptions) -> DeckR
                 file: starter.to_path_buf(),
                 line: 0,
             });
-        return Err(DeckError::new(
+        return Err(InputError::new(
             loc,
             "/END",
             "",
@@ -111,7 +117,7 @@ pub fn read_deck(starter: &Path, engine: EngineFile, opts: ReadOptions) -> DeckR
         ));
     }
     if deck.begin.is_none() {
-        return Err(DeckError::new(
+        return Err(InputError::new(
             Loc {
                 file: starter.to_path_buf(),
                 line: src.blocks.first().map(|b| b.loc.line).unwrap_or(1),
@@ -155,7 +161,7 @@ pub fn read_engine(
     path: &Path,
     warnings: &mut Vec<Warning>,
     opts: ReadOptions,
-) -> DeckResult<Engine> {
+) -> InputResult<Engine> {
     let src = source::read(path)?;
     let mut eng = Engine::default();
     for block in &src.blocks {
@@ -171,13 +177,13 @@ fn unknown_keyword(
     warnings: &mut Vec<Warning>,
     opts: ReadOptions,
     file_kind: &str,
-) -> DeckResult<()> {
+) -> InputResult<()> {
     let msg = format!(
         "keyword not supported in the {file_kind} file; its {} line(s) are skipped",
         block.lines.len()
     );
     if opts.strict {
-        return Err(DeckError::new(
+        return Err(InputError::new(
             block.loc.clone(),
             &block.header,
             "",
@@ -193,7 +199,7 @@ fn unknown_keyword(
 }
 
 /// Dispatches one starter block to its family's parser.
-fn parse_starter_block(block: &Block, deck: &mut Deck, opts: ReadOptions) -> DeckResult<()> {
+fn parse_starter_block(block: &Block, deck: &mut Deck, opts: ReadOptions) -> InputResult<()> {
     let p: Vec<&str> = block.parts.iter().map(String::as_str).collect();
     let handled = match p[0] {
         "BEGIN" => controls::parse_begin(block, deck).map(|_| true)?,
@@ -250,10 +256,10 @@ pub(crate) fn warn_surplus(cards: &Cards, what: &str, warnings: &mut Vec<Warning
 
 /// The id that follows the keyword name in the header (`/PART/12` → 12),
 /// at position `idx` of the header parts. Must be a positive integer.
-pub(crate) fn header_id(block: &Block, idx: usize, name: &str) -> DeckResult<Id> {
+pub(crate) fn header_id(block: &Block, idx: usize, name: &str) -> InputResult<Id> {
     let t = block.parts.get(idx).map(String::as_str).unwrap_or("");
     if t.is_empty() {
-        return Err(DeckError::new(
+        return Err(InputError::new(
             block.loc.clone(),
             &block.header,
             name,
@@ -265,7 +271,7 @@ pub(crate) fn header_id(block: &Block, idx: usize, name: &str) -> DeckResult<Id>
     }
     match fields::parse_int(t) {
         Ok(v) if v > 0 => Ok(v as Id),
-        _ => Err(DeckError::new(
+        _ => Err(InputError::new(
             block.loc.clone(),
             &block.header,
             name,
@@ -275,12 +281,12 @@ pub(crate) fn header_id(block: &Block, idx: usize, name: &str) -> DeckResult<Id>
 }
 
 /// An optional id in the header (unit_ID etc.): 0 when absent.
-pub(crate) fn header_id_opt(block: &Block, idx: usize, name: &str) -> DeckResult<Id> {
+pub(crate) fn header_id_opt(block: &Block, idx: usize, name: &str) -> InputResult<Id> {
     match block.parts.get(idx).map(|s| s.trim()) {
         None | Some("") => Ok(0),
         Some(t) => match fields::parse_int(t) {
             Ok(v) if v >= 0 => Ok(v as Id),
-            _ => Err(DeckError::new(
+            _ => Err(InputError::new(
                 block.loc.clone(),
                 &block.header,
                 name,
@@ -292,7 +298,7 @@ pub(crate) fn header_id_opt(block: &Block, idx: usize, name: &str) -> DeckResult
 
 impl<'a> fields::Card<'a> {
     /// A 10-column id field that must be given and positive.
-    pub fn id(&self, col: usize, name: &str) -> DeckResult<Id> {
+    pub fn id(&self, col: usize, name: &str) -> InputResult<Id> {
         match self.int_opt(col, 10, name)? {
             Some(v) if v > 0 => Ok(v as Id),
             Some(v) => Err(self.err(name, format!("{v}: expected a positive id"))),
@@ -301,7 +307,7 @@ impl<'a> fields::Card<'a> {
     }
 
     /// A 10-column optional id field: 0 (or blank) means none.
-    pub fn id_opt(&self, col: usize, name: &str) -> DeckResult<Id> {
+    pub fn id_opt(&self, col: usize, name: &str) -> InputResult<Id> {
         match self.int_opt(col, 10, name)? {
             None | Some(0) => Ok(0),
             Some(v) if v > 0 => Ok(v as Id),
@@ -310,7 +316,7 @@ impl<'a> fields::Card<'a> {
     }
 
     /// A 10-column flag that must be one of `allowed` (blank → `default`).
-    pub fn flag(&self, col: usize, name: &str, default: i64, allowed: &[i64]) -> DeckResult<i64> {
+    pub fn flag(&self, col: usize, name: &str, default: i64, allowed: &[i64]) -> InputResult<i64> {
         let v = self.int(col, name, default)?;
         if allowed.contains(&v) {
             Ok(v)
@@ -320,7 +326,7 @@ impl<'a> fields::Card<'a> {
     }
 
     /// A 20-column real that must be > 0 (`what` says what it is).
-    pub fn positive_real(&self, col: usize, name: &str, what: &str) -> DeckResult<f64> {
+    pub fn positive_real(&self, col: usize, name: &str, what: &str) -> InputResult<f64> {
         let v = self.real(col, name, 0.0)?;
         if v > 0.0 {
             Ok(v)

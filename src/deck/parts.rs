@@ -1,12 +1,15 @@
 //! /PART, /PROP/TYPE1 (SHELL), /PROP/TYPE14 (SOLID), /PROP/TYPE4 (SPRING),
 //! /PROP/TYPE13 (SPR_BEAM), /DEF_SHELL, /DEF_SOLID, /FUNCT, /ADMAS.
-//! Values are kept as written (0 = "default"); `model::build` resolves the
+//! Values are kept as written (0 = "default"); `to_model` resolves the
 //! defaults that depend on other cards (/DEF_SHELL, the material law).
 
-use super::error::{DeckError, DeckResult, Loc};
 use super::fields::{zero_default, Cards};
 use super::source::Block;
 use super::{header_id, header_id_opt, Deck, Id};
+use crate::model::{
+    DefShell, DefSolid, Function, InputError, InputResult, Loc, PropertyKind, PropertySpec,
+    ShellProperty, SolidProperty, SpringBeamProperty, SpringProperty,
+};
 use serde::{Deserialize, Serialize};
 
 /// `/PART/part_ID`: title; prop_ID (1-10), mat_ID (11-20), subset_ID (21-30), Thick (31-50).
@@ -22,7 +25,7 @@ pub struct PartCard {
     pub loc: Loc,
 }
 
-pub(super) fn parse_part(block: &Block, deck: &mut Deck) -> DeckResult<()> {
+pub(super) fn parse_part(block: &Block, deck: &mut Deck) -> InputResult<()> {
     let id = header_id(block, 1, "part_ID")?;
     let mut cards = Cards::new(block);
     let title = cards.title();
@@ -54,114 +57,8 @@ pub(super) fn parse_part(block: &Block, deck: &mut Deck) -> DeckResult<()> {
     Ok(())
 }
 
-#[derive(Clone, Debug, Serialize, Deserialize)]
-pub struct PropertyCard {
-    pub id: Id,
-    pub unit_id: Id,
-    pub title: String,
-    pub kind: PropertyKind,
-    pub loc: Loc,
-}
-
-#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
-pub enum PropertyKind {
-    Shell(ShellProperty),
-    Solid(SolidProperty),
-    Spring(SpringProperty),
-    SpringBeam(SpringBeamProperty),
-}
-
-/// /PROP/TYPE1 (/PROP/SHELL), as written (0 = default).
-#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
-pub struct ShellProperty {
-    pub ishell: i64,
-    pub ismstr: i64,
-    pub ish3n: i64,
-    pub idrill: i64,
-    pub p_thick_fail: f64,
-    pub hm: f64,
-    pub hf: f64,
-    pub hr: f64,
-    pub dm: f64,
-    pub dn: f64,
-    /// Integration points through the thickness (0 = global/default).
-    pub n: i64,
-    pub istrain: i64,
-    pub thick: f64,
-    pub ashear: f64,
-    pub ithick: i64,
-    pub iplas: i64,
-}
-
-/// /PROP/TYPE14 (/PROP/SOLID), as written (0 = default).
-#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
-pub struct SolidProperty {
-    pub isolid: i64,
-    pub ismstr: i64,
-    pub icpre: i64,
-    pub itetra10: i64,
-    /// Integration points, packed ijk (Isolid 14/16).
-    pub inpts: i64,
-    pub itetra4: i64,
-    pub iframe: i64,
-    pub dn: f64,
-    /// Quadratic bulk viscosity (0 → 1.1).
-    pub qa: f64,
-    /// Linear bulk viscosity (0 → 0.05).
-    pub qb: f64,
-    /// Hourglass coefficient (0 → 0.1).
-    pub h: f64,
-    pub lambda_v: f64,
-    pub mu_v: f64,
-    pub dtmin: f64,
-    pub istrain: i64,
-}
-
-/// /PROP/TYPE4 (/PROP/SPRING): axial spring, linear or through functions.
-#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
-pub struct SpringProperty {
-    pub mass: f64,
-    pub sens_id: Id,
-    pub isflag: i64,
-    pub ileng: i64,
-    pub k: f64,
-    pub c: f64,
-    pub a: f64,
-    pub b: f64,
-    pub d: f64,
-    pub fct_id1: Id,
-    pub h: i64,
-    pub fct_id2: Id,
-    pub fct_id3: Id,
-    /// Failure elongations (0 → none).
-    pub delta_min: f64,
-    pub delta_max: f64,
-    pub fscale: f64,
-    pub e: f64,
-    pub ascale: f64,
-}
-
-/// /PROP/TYPE13 (/PROP/SPR_BEAM): six-degree-of-freedom spring beam.
-/// Read: mass, inertia and per-direction K, C (six blocks of three cards:
-/// K C A B D / fct_ID1 H fct_ID2 fct_ID3 fct_ID4 δmin δmax / F E Ascale Hscale).
-/// The function and scale cards are not interpreted yet.
-#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
-pub struct SpringBeamProperty {
-    pub mass: f64,
-    pub inertia: f64,
-    pub skew_id: Id,
-    pub sens_id: Id,
-    pub isflag: i64,
-    pub ifail: i64,
-    pub ileng: i64,
-    /// Stiffness per direction (tension, shear s, shear t, torsion, bending y, bending z).
-    pub k: [f64; 6],
-    /// Damping per direction.
-    pub c: [f64; 6],
-}
-
 /// Returns false for a property type this reader does not support.
-pub(super) fn parse_property(block: &Block, deck: &mut Deck) -> DeckResult<bool> {
+pub(super) fn parse_property(block: &Block, deck: &mut Deck) -> InputResult<bool> {
     let ty = block.parts.get(1).map(String::as_str).unwrap_or("");
     let which = match ty {
         "TYPE1" | "SHELL" => 1,
@@ -183,7 +80,7 @@ pub(super) fn parse_property(block: &Block, deck: &mut Deck) -> DeckResult<bool>
     if which == 1 {
         super::warn_surplus(&cards, "the card with N, Thick", &mut deck.warnings);
     }
-    deck.properties.push(PropertyCard {
+    deck.properties.push(PropertySpec {
         id,
         unit_id,
         title,
@@ -193,7 +90,7 @@ pub(super) fn parse_property(block: &Block, deck: &mut Deck) -> DeckResult<bool>
     Ok(true)
 }
 
-fn read_shell(cards: &mut Cards) -> DeckResult<ShellProperty> {
+fn read_shell(cards: &mut Cards) -> InputResult<ShellProperty> {
     // Ishell (1-10) Ismstr (11-20) Ish3n (21-30) Idrill (31-40) P_thick_fail (61-80)
     let c1 = cards.next("the card with Ishell, Ismstr, Ish3n, Idrill")?;
     // hm (1-20) hf (21-40) hr (41-60) dm (61-80) dn (81-100)
@@ -234,7 +131,7 @@ fn read_shell(cards: &mut Cards) -> DeckResult<ShellProperty> {
     Ok(p)
 }
 
-fn read_solid(cards: &mut Cards) -> DeckResult<SolidProperty> {
+fn read_solid(cards: &mut Cards) -> InputResult<SolidProperty> {
     // Isolid (1-10) Ismstr (11-20) Icpre (31-40) Itetra10 (41-50) Inpts (51-60) Itetra4 (61-70) Iframe (71-80) dn (81-100)
     let c1 =
         cards.next("the card with Isolid, Ismstr, Icpre, Itetra10, Inpts, Itetra4, Iframe, dn")?;
@@ -274,7 +171,7 @@ fn read_solid(cards: &mut Cards) -> DeckResult<SolidProperty> {
     Ok(p)
 }
 
-fn read_spring(cards: &mut Cards) -> DeckResult<SpringProperty> {
+fn read_spring(cards: &mut Cards) -> InputResult<SpringProperty> {
     // Mass (1-20) sens_ID (51-60) Isflag (61-70) Ileng (71-80)
     let c1 = cards.next("the card with Mass, sens_ID, Isflag, Ileng")?;
     // K (1-20) C (21-40) A (41-60) B (61-80) D (81-100)
@@ -332,7 +229,7 @@ fn read_spring(cards: &mut Cards) -> DeckResult<SpringProperty> {
     })
 }
 
-fn read_spring_beam(cards: &mut Cards) -> DeckResult<SpringBeamProperty> {
+fn read_spring_beam(cards: &mut Cards) -> InputResult<SpringBeamProperty> {
     // Mass (1-20) Inertia (21-40) skew_ID (41-50) sens_ID (51-60) Isflag (61-70) Ifail (71-80) Ileng (81-90)
     let c1 = cards.next("the card with Mass, Inertia, skew_ID, sens_ID, Isflag, Ifail, Ileng")?;
     let mut k = [0.0; 6];
@@ -363,28 +260,7 @@ fn read_spring_beam(cards: &mut Cards) -> DeckResult<SpringBeamProperty> {
     })
 }
 
-/// /DEF_SHELL: global shell defaults (used where a /PROP/SHELL field is 0).
-#[derive(Clone, Debug, Serialize, Deserialize, Default, PartialEq)]
-pub struct DefShell {
-    pub ishell: i64,
-    pub ismstr: i64,
-    pub ithick: i64,
-    pub iplas: i64,
-    pub istrain: i64,
-    pub ish3n: i64,
-    pub idrill: i64,
-}
-
-/// /DEF_SOLID: global solid defaults.
-#[derive(Clone, Debug, Serialize, Deserialize, Default, PartialEq)]
-pub struct DefSolid {
-    pub isolid: i64,
-    pub ismstr: i64,
-    pub istrain: i64,
-    pub iframe: i64,
-}
-
-pub(super) fn parse_defaults(block: &Block, deck: &mut Deck) -> DeckResult<()> {
+pub(super) fn parse_defaults(block: &Block, deck: &mut Deck) -> InputResult<()> {
     let mut cards = Cards::new(block);
     if block.parts[0] == "DEF_SHELL" {
         // ISHELL (1-10) ISMSTR (11-20) ITHICK (21-30) IPLAS (31-40) ISTRAIN (41-50) I_SH3N (71-80) IDRIL (81-90)
@@ -412,17 +288,7 @@ pub(super) fn parse_defaults(block: &Block, deck: &mut Deck) -> DeckResult<()> {
     Ok(())
 }
 
-/// /FUNCT/fct_ID: title, then (X, Y) pairs (X 1-20, Y 21-40), X strictly increasing.
-#[derive(Clone, Debug, Serialize, Deserialize)]
-pub struct FunctionCard {
-    pub id: Id,
-    pub title: String,
-    pub x: Vec<f64>,
-    pub y: Vec<f64>,
-    pub loc: Loc,
-}
-
-pub(super) fn parse_function(block: &Block, deck: &mut Deck) -> DeckResult<()> {
+pub(super) fn parse_function(block: &Block, deck: &mut Deck) -> InputResult<()> {
     let id = header_id(block, 1, "fct_ID")?;
     let mut cards = Cards::new(block);
     let title = cards.title();
@@ -442,14 +308,14 @@ pub(super) fn parse_function(block: &Block, deck: &mut Deck) -> DeckResult<()> {
         y.push(yi);
     }
     if x.is_empty() {
-        return Err(DeckError::new(
+        return Err(InputError::new(
             block.loc.clone(),
             &block.header,
             "X",
             "function has no points; expected at least one (X, Y) line",
         ));
     }
-    deck.functions.push(FunctionCard {
+    deck.functions.push(Function {
         id,
         title,
         x,
@@ -474,7 +340,7 @@ pub struct AddedMassCard {
 }
 
 /// Returns false for an /ADMAS type that is not supported.
-pub(super) fn parse_admas(block: &Block, deck: &mut Deck) -> DeckResult<bool> {
+pub(super) fn parse_admas(block: &Block, deck: &mut Deck) -> InputResult<bool> {
     let kind = match block.parts.get(1).map(|s| super::fields::parse_int(s)) {
         Some(Ok(k)) if k == 0 || k == 1 => k,
         _ => return Ok(false),

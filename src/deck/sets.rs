@@ -1,12 +1,12 @@
 //! Sets: /GRNOD/NODE, /GRNOD/GRNOD, /GRNOD/PART, /GRSHEL/SHEL, /SURF/PART,
 //! /SURF/SEG, /SURF/GRSHEL, /SUBSET. Each is a title line then a list of ids,
 //! ten 10-column fields a line, until the next keyword (/SURF/SEG: one
-//! segment a line). Ids are resolved by `model::build`.
+//! segment a line). Ids are resolved by `to_model`.
 
-use super::error::{DeckError, DeckResult, Loc};
 use super::fields::Cards;
 use super::source::Block;
 use super::{header_id, Deck, Id};
+use crate::model::{InputError, InputResult, Loc};
 use serde::{Deserialize, Serialize};
 
 /// What the ids of a node group's list name.
@@ -94,7 +94,7 @@ pub struct SubsetCard {
 }
 
 /// Returns false for a set type this reader does not support.
-pub(super) fn parse_set(block: &Block, deck: &mut Deck) -> DeckResult<bool> {
+pub(super) fn parse_set(block: &Block, deck: &mut Deck) -> InputResult<bool> {
     let p0 = block.parts[0].as_str();
     let p1 = block.parts.get(1).map(String::as_str).unwrap_or("");
     match (p0, p1) {
@@ -180,7 +180,7 @@ pub(super) fn parse_set(block: &Block, deck: &mut Deck) -> DeckResult<bool> {
             let mut children = Vec::new();
             for v in id_list(&mut cards, "subset_ID")?.0 {
                 if v < 0 {
-                    return Err(DeckError::new(
+                    return Err(InputError::new(
                         block.loc.clone(),
                         &block.header,
                         "subset_ID",
@@ -203,7 +203,7 @@ pub(super) fn parse_set(block: &Block, deck: &mut Deck) -> DeckResult<bool> {
 
 /// Ten 10-column ids a line until the block ends; blank and 0 fields are
 /// skipped. Also gives where each line's items start.
-fn id_list(cards: &mut Cards, name: &str) -> DeckResult<(Vec<i64>, ItemLocs)> {
+fn id_list(cards: &mut Cards, name: &str) -> InputResult<(Vec<i64>, ItemLocs)> {
     let mut out = Vec::new();
     let mut locs = Vec::new();
     while let Some(c) = cards.next_nonblank() {

@@ -9,7 +9,7 @@
 //! - every other line belongs to the block above it (blank lines too: in a
 //!   fixed-card block a blank line is a card whose fields all take defaults).
 
-use super::error::{DeckError, DeckResult, Loc};
+use crate::model::{InputError, InputResult, Loc};
 use std::path::{Path, PathBuf};
 
 /// Longest line accepted. Block-format cards use 100 columns (titles a few more);
@@ -66,7 +66,7 @@ pub struct Source {
 /// Reads `path` and everything it includes, and splits it into blocks.
 /// Whether `/END` was met is in [`Source::end`]; the caller decides if it is required
 /// (after the blocks are parsed, so that a truncated card is reported as such).
-pub fn read(path: &Path) -> DeckResult<Source> {
+pub fn read(path: &Path) -> InputResult<Source> {
     let mut lines = Vec::new();
     let mut files = Vec::new();
     let mut stack = Vec::new();
@@ -83,7 +83,7 @@ fn read_file(
     out: &mut Vec<Line>,
     files: &mut Vec<PathBuf>,
     end: &mut Option<Loc>,
-) -> DeckResult<()> {
+) -> InputResult<()> {
     let here = Loc {
         file: path.to_path_buf(),
         line: 0,
@@ -93,7 +93,7 @@ fn read_file(
         None => (here.clone(), ""),
     };
     let canon = std::fs::canonicalize(path).map_err(|e| {
-        DeckError::new(
+        InputError::new(
             err_loc.clone(),
             kw,
             "",
@@ -106,7 +106,7 @@ fn read_file(
             .chain(std::iter::once(&canon))
             .map(|p| p.display().to_string())
             .collect();
-        return Err(DeckError::new(
+        return Err(InputError::new(
             err_loc,
             kw,
             "",
@@ -114,7 +114,7 @@ fn read_file(
         ));
     }
     if stack.len() >= MAX_INCLUDE_DEPTH {
-        return Err(DeckError::new(
+        return Err(InputError::new(
             err_loc,
             kw,
             "",
@@ -122,7 +122,7 @@ fn read_file(
         ));
     }
     let meta = std::fs::metadata(&canon).map_err(|e| {
-        DeckError::new(
+        InputError::new(
             err_loc.clone(),
             kw,
             "",
@@ -130,7 +130,7 @@ fn read_file(
         )
     })?;
     if meta.is_dir() {
-        return Err(DeckError::new(
+        return Err(InputError::new(
             err_loc,
             kw,
             "",
@@ -140,7 +140,7 @@ fn read_file(
     if !meta.is_file() {
         // A device, FIFO or socket (`#include /dev/zero`, `/dev/stdin`): reading
         // it would never end or block; its size says nothing.
-        return Err(DeckError::new(
+        return Err(InputError::new(
             err_loc,
             kw,
             "",
@@ -151,7 +151,7 @@ fn read_file(
         ));
     }
     if meta.len() > MAX_FILE_BYTES {
-        return Err(DeckError::new(
+        return Err(InputError::new(
             err_loc,
             kw,
             "",
@@ -164,7 +164,7 @@ fn read_file(
         ));
     }
     let bytes = std::fs::read(&canon).map_err(|e| {
-        DeckError::new(
+        InputError::new(
             err_loc.clone(),
             kw,
             "",
@@ -192,7 +192,7 @@ fn read_file(
             let text = decode_line(raw, &loc, true).map_err(|e| in_block(e, out))?;
             if let Some(target) = include_target(&text) {
                 let target = target.ok_or_else(|| {
-                    DeckError::new(
+                    InputError::new(
                         loc.clone(),
                         "#include",
                         "FILE",
@@ -221,7 +221,7 @@ fn read_file(
 }
 
 /// Names the keyword block a bad line falls in (the last keyword line read so far).
-fn in_block(mut e: DeckError, out: &[Line]) -> DeckError {
+fn in_block(mut e: InputError, out: &[Line]) -> InputError {
     if e.keyword.is_empty() {
         if let Some(h) = out.iter().rev().find(|l| l.text.starts_with('/')) {
             e.keyword = h.text.trim_end().to_string();
@@ -259,9 +259,9 @@ fn include_target(text: &str) -> Option<Option<&str>> {
 /// text; bytes that are not UTF-8 are taken as Latin-1 (older decks carry
 /// accented titles). Comments may hold tabs; data lines may not, because the
 /// block format is positional and a tab has no column.
-fn decode_line(raw: &[u8], loc: &Loc, comment: bool) -> DeckResult<String> {
+fn decode_line(raw: &[u8], loc: &Loc, comment: bool) -> InputResult<String> {
     if raw.len() > MAX_LINE_BYTES {
-        return Err(DeckError::new(
+        return Err(InputError::new(
             loc.clone(),
             "",
             "",
@@ -276,7 +276,7 @@ fn decode_line(raw: &[u8], loc: &Loc, comment: bool) -> DeckResult<String> {
         .iter()
         .position(|&b| (b < 0x20 && b != b'\t') || b == 0x7f)
     {
-        return Err(DeckError::new(
+        return Err(InputError::new(
             loc.clone(),
             "",
             "",
@@ -289,7 +289,7 @@ fn decode_line(raw: &[u8], loc: &Loc, comment: bool) -> DeckResult<String> {
     }
     if !comment {
         if let Some(pos) = raw.iter().position(|&b| b == b'\t') {
-            return Err(DeckError::new(
+            return Err(InputError::new(
                 loc.clone(),
                 "",
                 "",
@@ -306,7 +306,7 @@ fn decode_line(raw: &[u8], loc: &Loc, comment: bool) -> DeckResult<String> {
     })
 }
 
-fn split_blocks(lines: Vec<Line>) -> DeckResult<Vec<Block>> {
+fn split_blocks(lines: Vec<Line>) -> InputResult<Vec<Block>> {
     let mut blocks: Vec<Block> = Vec::new();
     for line in lines {
         if line.text.starts_with('/') {
@@ -316,7 +316,7 @@ fn split_blocks(lines: Vec<Line>) -> DeckResult<Vec<Block>> {
                 .map(|p| p.trim().to_ascii_uppercase())
                 .collect();
             if parts.first().is_none_or(|p| p.is_empty()) {
-                return Err(DeckError::new(
+                return Err(InputError::new(
                     line.loc,
                     &header,
                     "",
@@ -332,7 +332,7 @@ fn split_blocks(lines: Vec<Line>) -> DeckResult<Vec<Block>> {
         } else if let Some(b) = blocks.last_mut() {
             b.lines.push(line);
         } else if !line.text.trim().is_empty() {
-            return Err(DeckError::new(
+            return Err(InputError::new(
                 line.loc,
                 "",
                 "",

@@ -4,7 +4,7 @@
 //! A node lives on every rank that has an element touching it. Local node
 //! numbering follows global order, so per-rank loops keep the global order.
 
-use crate::deck::{ElementKind, Elements};
+use crate::model::ElementKind;
 use crate::model::{Model, NO_NODE};
 use crashsim_partition as part;
 use serde::{Deserialize, Serialize};
@@ -70,7 +70,7 @@ impl Subdomain {
     }
 }
 
-/// Element → node connectivity of the whole model, kinds in `Elements::KINDS`
+/// Element → node connectivity of the whole model, kinds in `ElementKind::ALL`
 /// order, for the partitioner (absent optional nodes left out).
 pub fn mesh_csr(model: &Model) -> (Vec<usize>, Vec<u32>) {
     let mut ptr = vec![0usize];
@@ -138,7 +138,7 @@ pub fn element_weights(model: &Model) -> Result<Vec<i32>, part::PartitionError> 
 
 /// Partitions the model's elements over `nranks` (METIS k-way on the
 /// shared-node dual graph, fixed seed: the same deck and `nranks` give the
-/// same map). Returns the element → rank map (kinds in `Elements::KINDS`
+/// same map). Returns the element → rank map (kinds in `ElementKind::ALL`
 /// order) and its quality report.
 pub fn partition(
     model: &Model,
@@ -192,7 +192,7 @@ pub fn split(model: &Model, owner: &[u32], nranks: usize) -> Vec<Subdomain> {
             let mut offset = 0;
             for (k, set) in model.elements.iter().enumerate() {
                 let mut le = LocalElements {
-                    kind: Elements::KINDS[k],
+                    kind: ElementKind::ALL[k],
                     global: Vec::new(),
                     part: Vec::new(),
                     nodes: Vec::new(),

@@ -4,7 +4,6 @@
 //! final state. The solver sees every kind through the `Block` trait.
 
 use super::SLOT;
-use crate::deck::{ElementKind, FunctionCard, PropertyKind, SpringProperty};
 use crate::domain::LocalElements;
 use crate::element::hex8::{self, Hex8State, SolidSection};
 use crate::element::shell3::{self, Shell3State};
@@ -12,6 +11,7 @@ use crate::element::shell4::{self, Shell4State, ShellSection};
 use crate::element::spring::{self, SpringState};
 use crate::element::tet4::{self, Tet4State};
 use crate::material::Material;
+use crate::model::{ElementKind, Function, PropertyKind, SpringProperty};
 use crate::model::{Part, Property};
 use rayon::prelude::*;
 use std::collections::HashMap;
@@ -136,7 +136,7 @@ fn shell_sections(
     le: &LocalElements,
     parts: &[Part],
     props: &[Property],
-    mats: &[crate::deck::MaterialCard],
+    mats: &[crate::model::MaterialSpec],
     tri: bool,
 ) -> Result<(Vec<ShellSection>, Vec<u16>), String> {
     let mut sections = Vec::new();
@@ -190,7 +190,7 @@ macro_rules! shell_block {
                 x: &[[f64; 3]],
                 parts: &[Part],
                 props: &[Property],
-                mats: &[crate::deck::MaterialCard],
+                mats: &[crate::model::MaterialSpec],
             ) -> Result<Self, String> {
                 let (sections, section) = shell_sections(&le, parts, props, mats, $tri)?;
                 let n = le.global.len();
@@ -403,7 +403,7 @@ fn solid_sections(
     le: &LocalElements,
     parts: &[Part],
     props: &[Property],
-    mats: &[crate::deck::MaterialCard],
+    mats: &[crate::model::MaterialSpec],
     tetra: bool,
 ) -> Result<(Vec<SolidSection>, Vec<u16>), String> {
     let mut sections = Vec::new();
@@ -453,7 +453,7 @@ macro_rules! solid_block {
                 x: &[[f64; 3]],
                 parts: &[Part],
                 props: &[Property],
-                mats: &[crate::deck::MaterialCard],
+                mats: &[crate::model::MaterialSpec],
             ) -> Result<Self, String> {
                 let (sections, section) = solid_sections(&le, parts, props, mats, $tetra)?;
                 let n = le.global.len();
@@ -638,7 +638,7 @@ solid_block!(
 pub struct SpringBlock {
     le: LocalElements,
     props: Vec<SpringProperty>,
-    fcts: Vec<Option<FunctionCard>>,
+    fcts: Vec<Option<Function>>,
     prop_of: Vec<u16>,
     l0: Vec<f64>,
     state: Vec<SpringState>,
@@ -656,7 +656,7 @@ impl SpringBlock {
         mass: &[f64],
         parts: &[Part],
         props: &[Property],
-        functions: &[FunctionCard],
+        functions: &[Function],
     ) -> Result<Self, String> {
         let mut sp = Vec::new();
         let mut fcts = Vec::new();
@@ -857,8 +857,8 @@ pub fn make_block(
     mass: &[f64],
     parts: &[Part],
     props: &[Property],
-    mats: &[crate::deck::MaterialCard],
-    functions: &[FunctionCard],
+    mats: &[crate::model::MaterialSpec],
+    functions: &[Function],
 ) -> Result<Option<Box<dyn Block>>, String> {
     if le.global.is_empty() {
         return Ok(None);

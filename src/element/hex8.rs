@@ -188,22 +188,7 @@ pub struct Hex8Out {
 
 // ---- small 3-vector / 3×3 helpers (shared with tet4) ---------------------------
 
-#[inline]
-pub(crate) fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-#[inline]
-pub(crate) fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-#[inline]
-pub(crate) fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
+pub(crate) use crate::vec3::{cross, dot, sub};
 
 /// Permutation table of Flanagan & Belytschko (1981) for the closed-form
 /// uniform gradient: row a lists the nodes playing the roles 1..8 for node a.

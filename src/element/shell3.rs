@@ -98,22 +98,7 @@ pub struct Shell3Out {
     pub bad_area: bool,
 }
 
-#[inline]
-fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-#[inline]
-fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-#[inline]
-fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
+use crate::vec3::{cross, dot, sub};
 #[inline]
 fn dot3(a: &[f64; 3], b: &[f64; 3]) -> f64 {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
@@ -674,8 +659,8 @@ mod tests {
 
     /// Johnson-Cook (BOX1BL's LAW2 without rate term), hardening `b`.
     fn jc(b: f64) -> Material {
-        use crate::deck::{JohnsonCook, Loc, MaterialCard, MaterialLaw};
-        Material::from_card(&MaterialCard {
+        use crate::model::{JohnsonCook, Loc, MaterialLaw, MaterialSpec};
+        Material::from_card(&MaterialSpec {
             id: 1,
             unit_id: 0,
             title: "t".into(),

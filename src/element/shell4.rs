@@ -357,26 +357,7 @@ pub struct Shell4Out {
     pub bad_area: bool,
 }
 
-#[inline(always)]
-fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-#[inline(always)]
-fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-#[inline(always)]
-fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-#[inline(always)]
-fn scale(a: [f64; 3], s: f64) -> [f64; 3] {
-    [a[0] * s, a[1] * s, a[2] * s]
-}
+use crate::vec3::{cross, dot, scale, sub};
 /// a·p + b·q + c·r for vectors p, q, r.
 #[inline(always)]
 fn comb3(a: f64, p: [f64; 3], b: f64, q: [f64; 3], c: f64, r: [f64; 3]) -> [f64; 3] {

@@ -3,10 +3,10 @@
 #![allow(clippy::needless_range_loop)] // index loops mirror the tensor formulas
 
 use super::*;
-use crate::deck::{JohnsonCook, Loc, MaterialCard, MaterialLaw};
+use crate::model::{JohnsonCook, Loc, MaterialLaw, MaterialSpec};
 
-fn card(law: MaterialLaw) -> MaterialCard {
-    MaterialCard {
+fn card(law: MaterialLaw) -> MaterialSpec {
+    MaterialSpec {
         id: 1,
         unit_id: 0,
         title: "t".into(),
@@ -76,9 +76,7 @@ impl Lcg {
     }
 }
 
-fn norm(a: [f64; 3]) -> f64 {
-    dot(a, a).sqrt()
-}
+use crate::vec3::norm;
 
 /// Rotation matrix about the unit axis `u` by `ang`.
 fn rotation(u: [f64; 3], ang: f64) -> [[f64; 3]; 3] {

@@ -31,8 +31,8 @@
 //!
 //! No heap allocation.
 
-use crate::deck::{FunctionCard, SpringProperty};
 use crate::kinematics::function::eval;
+use crate::model::{Function, SpringProperty};
 use serde::{Deserialize, Serialize};
 
 /// Per-spring state kept by the solver.
@@ -69,7 +69,7 @@ pub struct SpringOut {
 
 /// What the engine cannot compute for this spring property, by name.
 /// `f1` is the resolved fct_ID1 function (None when fct_ID1 = 0 or missing).
-pub fn spring_check(p: &SpringProperty, f1: Option<&FunctionCard>) -> Result<(), String> {
+pub fn spring_check(p: &SpringProperty, f1: Option<&Function>) -> Result<(), String> {
     if p.h != 0 {
         return Err(format!(
             "H = {}: only non-linear elastic springs (H = 0) are supported, not elasto-plastic or hysteretic unloading",
@@ -119,7 +119,7 @@ pub fn spring_init(x: &[[f64; 3]; 2]) -> SpringState {
 }
 
 /// Largest |slope| of a function's segments (0 for a single point).
-fn max_slope(f: &FunctionCard) -> f64 {
+fn max_slope(f: &Function) -> f64 {
     let mut s: f64 = 0.0;
     for i in 1..f.x.len() {
         s = s.max(((f.y[i] - f.y[i - 1]) / (f.x[i] - f.x[i - 1])).abs());
@@ -131,7 +131,7 @@ fn max_slope(f: &FunctionCard) -> f64 {
 /// `f1`: the fct_ID1 function (ignored when fct_ID1 = 0); `l0`: initial length.
 pub fn spring_step(
     p: &SpringProperty,
-    f1: Option<&FunctionCard>,
+    f1: Option<&Function>,
     x: &[[f64; 3]; 2],
     v: &[[f64; 3]; 2],
     l0: f64,
@@ -209,7 +209,7 @@ pub fn spring_step(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::deck::Loc;
+    use crate::model::Loc;
 
     fn prop(k: f64, c: f64) -> SpringProperty {
         SpringProperty {
@@ -234,8 +234,8 @@ mod tests {
         }
     }
 
-    fn func(x: Vec<f64>, y: Vec<f64>) -> FunctionCard {
-        FunctionCard {
+    fn func(x: Vec<f64>, y: Vec<f64>) -> Function {
+        Function {
             id: 7,
             title: String::new(),
             x,

@@ -1,10 +1,10 @@
 //! /FUNCT evaluation: piecewise linear through the points, extrapolated
 //! linearly from the first and last segments (as Radioss does).
 
-use crate::deck::FunctionCard;
+use crate::model::Function;
 
 /// y(x) of a /FUNCT.
-pub fn eval(f: &FunctionCard, x: f64) -> f64 {
+pub fn eval(f: &Function, x: f64) -> f64 {
     let n = f.x.len();
     if n == 1 {
         return f.y[0];
@@ -19,16 +19,12 @@ pub fn eval(f: &FunctionCard, x: f64) -> f64 {
 }
 
 /// Fscale · f(t / Ascale), the value of a load or imposed motion at time t.
-pub fn scaled(f: &FunctionCard, t: f64, ascale_x: f64, fscale_y: f64) -> f64 {
+pub fn scaled(f: &Function, t: f64, ascale_x: f64, fscale_y: f64) -> f64 {
     fscale_y * eval(f, t / ascale_x)
 }
 
 /// The value of an /IMPVEL or /IMPDISP at time t, or `None` outside [Tstart, Tstop].
-pub fn imposed_value(
-    f: &FunctionCard,
-    card: &crate::deck::ImposedMotionCard,
-    t: f64,
-) -> Option<f64> {
+pub fn imposed_value(f: &Function, card: &crate::model::ImposedMotionSpec, t: f64) -> Option<f64> {
     (t >= card.tstart && t <= card.tstop).then(|| scaled(f, t, card.ascale_x, card.fscale_y))
 }
 
@@ -36,8 +32,8 @@ pub fn imposed_value(
 mod tests {
     use super::*;
 
-    fn f() -> FunctionCard {
-        FunctionCard {
+    fn f() -> Function {
+        Function {
             id: 1,
             title: String::new(),
             x: vec![0.0, 1.0, 3.0],

@@ -51,13 +51,7 @@ fn mat_mul(a: &[[f64; 3]; 3], b: &[[f64; 3]; 3]) -> [[f64; 3]; 3] {
 fn transpose(a: &[[f64; 3]; 3]) -> [[f64; 3]; 3] {
     [0, 1, 2].map(|i| [a[0][i], a[1][i], a[2][i]])
 }
-pub fn cross(a: V3, b: V3) -> V3 {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
+pub use crate::vec3::cross;
 
 /// Solves the 3×3 system A·x = b (Cramer); the inertia is positive definite
 /// for a real body. A singular (flat or line-like) body gets no rotation about

@@ -7,10 +7,7 @@
 
 type V3 = [f64; 3];
 
-#[inline]
-fn dot(a: V3, b: V3) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
+use crate::vec3::dot;
 
 /// The velocity a node leaves the step with and the wall force it exerted.
 /// `x`: position at the start of the step, `v`: velocity after the

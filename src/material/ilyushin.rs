@@ -172,11 +172,11 @@ impl PointLaw {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::deck::{JohnsonCook, Loc, MaterialCard, MaterialLaw};
     use crate::material::Material;
+    use crate::model::{JohnsonCook, Loc, MaterialLaw, MaterialSpec};
 
     fn jc(b: f64) -> Material {
-        Material::from_card(&MaterialCard {
+        Material::from_card(&MaterialSpec {
             id: 1,
             unit_id: 0,
             title: "t".into(),

@@ -81,7 +81,7 @@ pub(super) fn rate_factor(c: f64, eps_dot_0: f64, eps_dot: f64) -> f64 {
 /// Thermal factor 1 − T*^m (1 when ρC_p is not given or T ≤ T_r).
 #[inline]
 pub(super) fn thermal_factor(rho_cp: f64, t_r: f64, t_melt: f64, m: f64, temp: f64) -> f64 {
-    if rho_cp >= crate::deck::NO_LIMIT || temp <= t_r || t_melt >= crate::deck::NO_LIMIT {
+    if rho_cp >= crate::model::NO_LIMIT || temp <= t_r || t_melt >= crate::model::NO_LIMIT {
         return 1.0;
     }
     let ts = ((temp - t_r) / (t_melt - t_r)).clamp(0.0, 1.0);

@@ -4,10 +4,10 @@
 //! Units are the deck's; nothing here assumes SI.
 
 use super::johnson_cook::{self as jc, Flow};
-use crate::deck::{MaterialCard, MaterialLaw, NO_LIMIT};
+use crate::model::{MaterialLaw, MaterialSpec, NO_LIMIT};
 use serde::{Deserialize, Serialize};
 
-/// Built from a deck [`MaterialCard`] (LAW1 or LAW2), values in deck units.
+/// Built from a deck [`MaterialSpec`] (LAW1 or LAW2), values in deck units.
 ///
 /// `rho` is RHO_I (initial density, used for masses); `rho_ref` is RHO_0 (or
 /// RHO_I when blank), the density Radioss uses for the sound speed and the
@@ -75,7 +75,7 @@ pub struct PointLaw {
 }
 
 impl Material {
-    pub fn from_card(c: &MaterialCard) -> Material {
+    pub fn from_card(c: &MaterialSpec) -> Material {
         let rho = c.rho;
         let rho_ref = if c.rho_ref > 0.0 { c.rho_ref } else { c.rho };
         let (e, nu) = (c.e, c.nu);
@@ -471,12 +471,12 @@ impl PointLaw {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::deck::{JohnsonCook, Loc};
+    use crate::model::{JohnsonCook, Loc};
 
     /// The BOX1BL material (OpenRadioss QA deck), with overrides.
-    fn box1bl_card(law: Option<JohnsonCook>) -> MaterialCard {
+    fn box1bl_card(law: Option<JohnsonCook>) -> MaterialSpec {
         let jc = JohnsonCook::hardening(0.25, 0.349999994, 0.519999981);
-        MaterialCard {
+        MaterialSpec {
             id: 1,
             unit_id: 0,
             title: "test".into(),

@@ -1,28 +1,7 @@
 //! Element measures used by the model (areas, volumes, edge lengths).
 //! Pure functions of coordinates.
 
-type V3 = [f64; 3];
-
-#[inline]
-pub fn sub(a: V3, b: V3) -> V3 {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-#[inline]
-pub fn cross(a: V3, b: V3) -> V3 {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-#[inline]
-pub fn dot(a: V3, b: V3) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-#[inline]
-pub fn norm(a: V3) -> f64 {
-    dot(a, a).sqrt()
-}
+pub use crate::vec3::{cross, dot, norm, sub, V3};
 
 /// Area of a 4-node shell as Radioss takes it for mass: half the norm of the
 /// cross product of the diagonals, A = ½‖(x3 − x1) × (x4 − x2)‖ (exact for a
@@ -77,7 +56,7 @@ pub fn hexa_volume(x: [V3; 8]) -> f64 {
 
 /// Shortest element edge in the model (shells, solids, 1-D elements).
 pub fn geometry_edge_min(model: &super::Model) -> f64 {
-    use crate::deck::ElementKind;
+    use crate::model::ElementKind;
     let x = &model.nodes.x;
     let mut best = f64::INFINITY;
     let mut edge = |a: u32, b: u32| {

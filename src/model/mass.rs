@@ -19,7 +19,7 @@
 
 use super::geometry::{hexa_volume, quad_area, tetra_volume, triangle_area};
 use super::{ElementSet, Model, NO_NODE};
-use crate::deck::{DeckError, ElementKind, Loc, PropertyKind};
+use crate::model::{ElementKind, InputError, Loc, PropertyKind};
 use serde::{Deserialize, Serialize};
 
 #[derive(Clone, Debug, Default, Serialize, Deserialize)]
@@ -41,11 +41,11 @@ pub struct MassSummary {
 }
 
 /// Element masses for one element set, with an error for a non-positive measure.
-pub(super) fn element_masses(
+pub fn element_masses(
     model: &Model,
     set: &ElementSet,
     locs: &[Loc],
-) -> Result<Vec<f64>, DeckError> {
+) -> Result<Vec<f64>, InputError> {
     let x = &model.nodes.x;
     let mut out = Vec::with_capacity(set.len());
     for e in 0..set.len() {
@@ -88,7 +88,7 @@ pub(super) fn element_masses(
             ElementKind::Spring | ElementKind::Truss | ElementKind::Beam => (1.0, ""),
         };
         if (measure.is_nan() || measure <= 0.0) && !what.is_empty() {
-            return Err(DeckError::new(
+            return Err(InputError::new(
                 locs[e].clone(),
                 set.kind.keyword(),
                 "",
@@ -121,7 +121,7 @@ fn share(kind: ElementKind) -> f64 {
 
 /// Adds the element masses to the nodes (in element order: deterministic) and
 /// accumulates part mass, first moment and second moments.
-pub(super) fn lump(model: &mut Model, masses: &[Vec<f64>]) {
+pub fn lump(model: &mut Model, masses: &[Vec<f64>]) {
     let nparts = model.parts.len();
     let mut rot = vec![0.0; nparts]; // Σ nodal rotational inertia of the part's shells
     let mut m = vec![0.0; nparts];
@@ -222,7 +222,7 @@ fn shell_rotational_factor(model: &Model, set: &ElementSet, e: usize) -> f64 {
 }
 
 /// Total mass and centre: nodal masses (elements + /ADMAS) plus rigid-body MASS on main nodes.
-pub(super) fn totals(model: &mut Model) {
+pub fn totals(model: &mut Model) {
     let mut total = 0.0;
     let mut s = [0.0; 3];
     for (i, &mi) in model.nodal_mass.iter().enumerate() {

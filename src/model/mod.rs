@@ -1,28 +1,48 @@
-//! The validated model: every id resolved to a dense index, defaults applied,
-//! lumped masses computed. Built once on rank 0 from the [`Deck`]; serde
+//! The model: what every stage after input reads. It speaks physics, not
+//! an input format: materials and their laws, properties (section and
+//! formulation choices), functions, loads and boundary conditions, contact
+//! interfaces, rigid walls and bodies, output requests and run controls,
+//! with every id resolved to a dense index, defaults applied and lumped
+//! masses computed. A reader (`deck` for Radioss) fills it; serde
 //! serializable so it (or a rank's share of it) can be sent to other ranks.
 //!
 //! Dense order is global id order: nodes and each element kind are sorted by
 //! id, so "the fixed global order" of the determinism rules is index order.
 
-mod build;
+pub mod contact;
+mod controls;
+mod element_kind;
+mod function;
 pub mod geometry;
-mod index;
+mod input_error;
+mod loads;
 mod mass;
+mod material;
+mod output_request;
 mod properties;
-mod sets;
+mod property;
+mod rigid;
+mod source_location;
 
-pub use build::build;
+pub use contact::{InterfaceKind, InterfaceSpec, Side};
+pub use controls::*;
+pub use element_kind::ElementKind;
+pub use function::Function;
 pub use geometry::{geometry_edge_min, hexa_volume, quad_area, tetra_volume, triangle_area};
-pub use index::IdIndex;
-pub use mass::{MassSummary, PartMass};
-pub use properties::{ResolvedShell, ResolvedSolid};
+pub use input_error::{InputError, InputResult, Warning};
+pub use loads::*;
+pub use mass::{element_masses, lump, totals, MassSummary, PartMass};
+pub use material::*;
+pub use output_request::*;
+pub use properties::{resolve_shell, resolve_solid, ResolvedShell, ResolvedSolid};
+pub use property::*;
+pub use rigid::*;
+pub use source_location::Loc;
 
-use crate::deck::{
-    Begin, Dof, ElementKind, Engine, FunctionCard, Id, InterfaceCard, MaterialCard, PropertyCard,
-    Warning,
-};
 use serde::{Deserialize, Serialize};
+
+/// An entity id as written in the input (strictly positive).
+pub type Id = u64;
 
 /// Node coordinates by dense index (ids ascending).
 #[derive(Clone, Debug, Default, Serialize, Deserialize)]
@@ -84,7 +104,7 @@ pub struct Part {
 /// A property with the defaults that depend on /DEF_SHELL, /DEF_SOLID applied.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct Property {
-    pub card: PropertyCard,
+    pub card: PropertySpec,
     pub shell: Option<ResolvedShell>,
     pub solid: Option<ResolvedSolid>,
 }
@@ -127,7 +147,7 @@ impl Surface {
 /// An interface with its sides resolved.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct Interface {
-    pub card: InterfaceCard,
+    pub card: InterfaceSpec,
     /// Secondary nodes, ascending dense indices.
     pub secondary_nodes: Vec<u32>,
     /// Main segments.
@@ -145,7 +165,7 @@ pub struct OnNodes<C> {
 
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct RigidWall {
-    pub card: crate::deck::RigidWallCard,
+    pub card: RigidWallSpec,
     /// The node carrying a moving wall.
     pub node: Option<u32>,
     /// Point M (the moving node's position for a moving wall) and unit normal.
@@ -156,7 +176,7 @@ pub struct RigidWall {
 
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct RigidBody {
-    pub card: crate::deck::RigidBodyCard,
+    pub card: RigidBodySpec,
     pub main_node: u32,
     pub secondary_nodes: Vec<u32>,
     /// Mass of the body (secondary nodal masses + MASS), centre and inertia
@@ -167,11 +187,11 @@ pub struct RigidBody {
 }
 
 /// A direction-and-function load or imposed motion, with its nodes.
-pub type Bcs = OnNodes<crate::deck::BcsCard>;
-pub type ImposedMotion = OnNodes<crate::deck::ImposedMotionCard>;
-pub type InitialVelocity = OnNodes<crate::deck::InitialVelocityCard>;
-pub type ConcentratedLoad = OnNodes<crate::deck::ConcentratedLoadCard>;
-pub type Gravity = OnNodes<crate::deck::GravityCard>;
+pub type Bcs = OnNodes<BoundarySpec>;
+pub type ImposedMotion = OnNodes<ImposedMotionSpec>;
+pub type InitialVelocity = OnNodes<InitialVelocitySpec>;
+pub type ConcentratedLoad = OnNodes<ConcentratedLoadSpec>;
+pub type Gravity = OnNodes<GravitySpec>;
 
 /// The model: what every later stage reads.
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -180,12 +200,12 @@ pub struct Model {
     pub title: String,
     pub begin: Begin,
     pub nodes: Nodes,
-    /// One set per [`ElementKind`], in `Elements::KINDS` order.
+    /// One set per [`ElementKind`], in `ElementKind::ALL` order.
     pub elements: Vec<ElementSet>,
     pub parts: Vec<Part>,
-    pub materials: Vec<MaterialCard>,
+    pub materials: Vec<MaterialSpec>,
     pub properties: Vec<Property>,
-    pub functions: Vec<FunctionCard>,
+    pub functions: Vec<Function>,
     pub node_groups: Vec<NodeGroup>,
     pub shell_groups: Vec<ShellGroup>,
     pub surfaces: Vec<Surface>,
@@ -198,8 +218,8 @@ pub struct Model {
     pub rigid_walls: Vec<RigidWall>,
     pub rigid_bodies: Vec<RigidBody>,
     pub interfaces: Vec<Interface>,
-    pub sections: Vec<crate::deck::SectionCard>,
-    pub time_histories: Vec<crate::deck::TimeHistoryCard>,
+    pub sections: Vec<CrossSectionSpec>,
+    pub time_histories: Vec<TimeHistorySpec>,
     /// Lumped nodal mass: elements + /ADMAS (rigid-body MASS is in `rigid_bodies`).
     pub nodal_mass: Vec<f64>,
     /// Rotational inertia of shell nodes (isotropic), see `mass`.
@@ -213,10 +233,7 @@ pub struct Model {
 
 impl Model {
     pub fn elements_of(&self, kind: ElementKind) -> &ElementSet {
-        &self.elements[crate::deck::Elements::KINDS
-            .iter()
-            .position(|k| *k == kind)
-            .unwrap()]
+        &self.elements[ElementKind::ALL.iter().position(|k| *k == kind).unwrap()]
     }
     pub fn n_elements(&self) -> usize {
         self.elements.iter().map(|s| s.len()).sum()

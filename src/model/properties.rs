@@ -2,7 +2,7 @@
 //! /DEF_SHELL value, and a 0 there takes the built-in default (reference
 //! guide, confirmed against the OpenRadioss starter listings).
 
-use crate::deck::{DefShell, DefSolid, ShellProperty, SolidProperty};
+use crate::model::{DefShell, DefSolid, ShellProperty, SolidProperty};
 use serde::{Deserialize, Serialize};
 
 /// /PROP/SHELL with every default resolved.

@@ -39,9 +39,9 @@
 
 use super::h5::Member;
 use super::{Context, LoopState};
-use crate::deck::{ElementKind, PropertyKind};
 use crate::element::blocks::Block;
 use crate::model::geometry::{hexa_volume, quad_area, tetra_volume, triangle_area};
+use crate::model::{ElementKind, PropertyKind};
 use serde::{Deserialize, Serialize};
 
 /// Columns of the `global` member of `/th/rows`.

@@ -357,7 +357,7 @@ impl RestartReader {
 pub struct LoopScalars {
     pub deck: String,
     pub nodes: u64,
-    /// Elements per kind (`Elements::KINDS` order): the deck must match.
+    /// Elements per kind (`ElementKind::ALL` order): the deck must match.
     pub elements: Vec<u64>,
     pub t: f64,
     pub cycle: u64,

@@ -32,9 +32,9 @@
 use super::h5::{self, Rows, Text, Xfer};
 use super::history::{ThLayout, ThRow};
 use super::{Context, InterfaceInfo, LoopState};
-use crate::deck::{ElementKind, Elements, MaterialLaw};
 use crate::element::blocks::ElemOut;
 use crate::model::NO_NODE;
+use crate::model::{ElementKind, MaterialLaw};
 use crate::parallel::H5Access;
 use hdf5::types::VarLenUnicode;
 use hdf5::{Dataset, File, Group, H5Type};
@@ -95,7 +95,7 @@ pub fn kind_rows(
     ctx: &Context,
     blocks: &[Box<dyn crate::element::blocks::Block>],
 ) -> Vec<KindRows> {
-    Elements::KINDS
+    ElementKind::ALL
         .iter()
         .enumerate()
         .filter(|(ki, _)| !ctx.g.element_ids[*ki].is_empty())
@@ -386,7 +386,7 @@ impl RunFile {
         h5::write_rows(&ds, &self.node_rows, &ids, &self.xfer)?;
         self.write_node_array(&mesh, "coordinates", |l| sd.x[l])?;
         for kr in &self.kinds {
-            let ki = Elements::KINDS.iter().position(|&k| k == kr.kind).unwrap();
+            let ki = ElementKind::ALL.iter().position(|&k| k == kr.kind).unwrap();
             let nn = kr.kind.nodes();
             let grp = mesh
                 .create_group(kind_name(kr.kind))

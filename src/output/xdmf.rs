@@ -15,7 +15,7 @@
 //! so the file is complete after every state and a state costs the same
 //! whatever the number of states before it.
 
-use crate::deck::ElementKind;
+use crate::model::ElementKind;
 use std::fmt::Write as _;
 use std::path::Path;
 

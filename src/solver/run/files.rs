@@ -87,7 +87,7 @@ fn final_elements(cx: &Ctx, s: &State, path: &Path) -> Result<(), RunError> {
     for (ki, ge, v) in rows {
         out.push_str(&format!(
             "{},{}",
-            kind_name(crate::deck::Elements::KINDS[ki]),
+            kind_name(crate::model::ElementKind::ALL[ki]),
             cx.g.element_ids[ki][ge as usize]
         ));
         for val in &v[..6] {

@@ -6,10 +6,10 @@ use super::super::assembly::SLOT;
 use super::setup::{kind_index, Ctx, OnLocal, State};
 use super::time_step::Found;
 use crate::contact::{ContactStep, ContactSystem};
-use crate::deck::{Dof, ElementKind};
 use crate::element::blocks::Block;
 use crate::kinematics::function;
 use crate::model;
+use crate::model::{Dof, ElementKind};
 use std::collections::HashMap;
 
 /// Element, external and contact forces at the state's positions; `dt` is

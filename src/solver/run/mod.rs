@@ -17,6 +17,9 @@ mod report;
 mod setup;
 mod time_step;
 
+#[cfg(test)]
+mod tests;
+
 use crate::contact::tied::TiedSystem;
 pub use crate::error::RunError;
 use crate::global::GlobalData;

@@ -3,9 +3,9 @@
 //! replicated data and the listing's notes.
 
 use super::RunOptions;
-use crate::deck::{self, EngineFile, ReadOptions};
 use crate::domain::{self, Subdomain};
 use crate::global::GlobalData;
+use crate::input::{self, Input, InputOptions};
 use crate::kinematics::rigid_body::RigidBodyState;
 use crate::model::{self, Model};
 
@@ -13,24 +13,20 @@ use crate::model::{self, Model};
 pub(super) type Prepared = (GlobalData, Vec<Subdomain>, Vec<RigidBodyState>, Vec<String>);
 
 pub(super) fn prepare(opts: &RunOptions, nranks: usize) -> Result<Prepared, String> {
-    let engine = match &opts.engine {
-        Some(p) => EngineFile::Given(p.clone()),
-        None => EngineFile::Auto,
-    };
-    let d = deck::read_deck(
+    let d = Input::read(
         &opts.deck,
-        engine,
-        ReadOptions {
+        &InputOptions {
+            controls: opts.engine.clone(),
             strict: opts.strict,
         },
     )
     .map_err(|e| e.to_string())?;
-    let m = model::build(&d).map_err(|e| e.to_string())?;
+    let m = d.model().map_err(|e| e.to_string())?;
     let starter = opts.deck.display();
-    let eng = d.engine.clone().ok_or_else(|| {
+    let eng = m.engine.clone().ok_or_else(|| {
         format!(
             "{starter}: no engine file: expected {} beside the starter, or --engine FILE",
-            deck::engine_beside(&opts.deck)
+            input::controls_beside(&opts.deck)
                 .map(|p| p.display().to_string())
                 .unwrap_or_else(|| "NAME_0001.rad".into())
         )
@@ -46,15 +42,9 @@ pub(super) fn prepare(opts: &RunOptions, nranks: usize) -> Result<Prepared, Stri
     // every rank's elements, masses, gaps and the output mesh start there.
     let (moved, inacti3) = crate::contact::inacti3::depenetrate(&m)?;
     let m = match moved {
-        Some(x) => {
-            let mut d2 = d.clone();
-            for nc in d2.nodes.iter_mut() {
-                if let Ok(i) = m.nodes.ids.binary_search(&nc.id) {
-                    nc.x = x[i];
-                }
-            }
-            model::build(&d2).map_err(|e| e.to_string())?
-        }
+        Some(x) => d
+            .model_with_node_positions(&m.nodes.ids, &x)
+            .map_err(|e| e.to_string())?,
         None => m,
     };
     let (p, _) =
@@ -164,7 +154,7 @@ fn check_supported(m: &Model) -> Result<(), String> {
             })?;
         }
     }
-    let unsupported = |what: &str, loc: &deck::Loc| {
+    let unsupported = |what: &str, loc: &model::Loc| {
         Err(format!("{loc}: {what} is not supported by the engine yet"))
     };
     for c in &m.bcs {
@@ -219,8 +209,8 @@ fn check_supported(m: &Model) -> Result<(), String> {
 }
 
 /// Interface options the engine does not compute are refused by name.
-fn check_interface(c: &deck::InterfaceCard) -> Result<(), String> {
-    use deck::InterfaceKind as K;
+fn check_interface(c: &model::InterfaceSpec) -> Result<(), String> {
+    use model::InterfaceKind as K;
     let kw = format!("{}: /INTER/TYPE{}/{}", c.loc, c.type_number(), c.id);
     let no = |what: &str| Err(format!("{kw}: {what} is not supported by the engine yet"));
     match &c.kind {

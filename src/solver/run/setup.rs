@@ -7,13 +7,13 @@ use super::super::assembly::{key, AssemblyPlan, SLOT};
 use super::RunOptions;
 use crate::contact::tied::TiedSystem;
 use crate::contact::ContactSystem;
-use crate::deck::ElementKind;
 use crate::domain::Subdomain;
 use crate::element::blocks::{make_block, Block};
 use crate::error::RunError;
 use crate::global::GlobalData;
 use crate::kinematics::rigid_body::RigidBodyState;
 use crate::model;
+use crate::model::ElementKind;
 use crate::output;
 use crate::parallel::World;
 use std::collections::HashMap;
@@ -138,7 +138,7 @@ pub(super) struct State {
 
 /// The index of an element kind in the model's kind table.
 pub(super) fn kind_index(k: ElementKind) -> usize {
-    crate::deck::Elements::KINDS
+    crate::model::ElementKind::ALL
         .iter()
         .position(|&q| q == k)
         .unwrap()

@@ -4,9 +4,9 @@
 
 use super::setup::{kind_index, Ctx, State, Step};
 use crate::contact::ContactStep;
-use crate::deck::ElementKind;
 use crate::element::blocks::Block;
 use crate::error::RunError;
+use crate::model::ElementKind;
 
 /// What this rank found at the end of a cycle's forces.
 #[derive(Default)]
@@ -91,7 +91,7 @@ pub(super) fn global_step(cx: &Ctx, s: &State, found: Found) -> Result<Step, Run
     let contacts: Vec<ContactStep> = all.into_iter().map(|a| a.4).collect();
     let step = Step {
         dt: d,
-        what: kind_name(crate::deck::Elements::KINDS[ki]),
+        what: kind_name(crate::model::ElementKind::ALL[ki]),
         id,
     };
     let mut step = with_contact(step, &contacts);

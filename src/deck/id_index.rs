@@ -1,6 +1,6 @@
 //! Global id → dense index maps, with the error every unknown reference gets.
 
-use crate::deck::{DeckError, Id, Loc};
+use crate::model::{Id, InputError, Loc};
 use std::collections::HashMap;
 
 /// Maps deck ids of one entity kind to dense indices 0..n.
@@ -16,12 +16,12 @@ impl IdIndex {
         what: &'static str,
         ids: impl Iterator<Item = (Id, Loc)>,
         keyword: &str,
-    ) -> Result<Self, DeckError> {
+    ) -> Result<Self, InputError> {
         let mut map = HashMap::new();
         let mut first: HashMap<Id, Loc> = HashMap::new();
         for (i, (id, loc)) in ids.enumerate() {
             if let Some(prev) = first.get(&id) {
-                return Err(DeckError::new(
+                return Err(InputError::new(
                     loc,
                     keyword,
                     "",
@@ -41,22 +41,20 @@ impl IdIndex {
     }
 
     /// The index of `id`, or an error at `loc` saying that `keyword`'s `field` names an unknown id.
-    pub fn resolve(&self, id: Id, loc: &Loc, keyword: &str, field: &str) -> Result<u32, DeckError> {
+    pub fn resolve(
+        &self,
+        id: Id,
+        loc: &Loc,
+        keyword: &str,
+        field: &str,
+    ) -> Result<u32, InputError> {
         self.get(id).ok_or_else(|| {
-            DeckError::new(
+            InputError::new(
                 loc.clone(),
                 keyword,
                 field,
                 format!("{} {id} is not defined in the deck", self.what),
             )
         })
-    }
-
-    pub fn len(&self) -> usize {
-        self.map.len()
-    }
-
-    pub fn is_empty(&self) -> bool {
-        self.map.is_empty()
     }
 }

@@ -1,11 +1,9 @@
 //! Resolving groups and surfaces to dense indices. Group references may point
 //! forward in the deck and nest (/GRNOD/GRNOD); cycles are errors.
 
-use super::index::IdIndex;
-use super::{ElementSet, NodeGroup, ShellGroup, Surface};
-use crate::deck::{
-    item_loc, DeckError, Id, NodeGroupCard, NodeGroupKind, ShellGroupCard, SurfaceCard, SurfaceDef,
-};
+use super::id_index::IdIndex;
+use super::{item_loc, NodeGroupCard, NodeGroupKind, ShellGroupCard, SurfaceCard, SurfaceDef};
+use crate::model::{ElementSet, Id, InputError, NodeGroup, ShellGroup, Surface};
 use std::collections::{BTreeSet, HashMap};
 
 /// Deepest /GRNOD/GRNOD nesting accepted. Resolution recurses once per level,
@@ -22,7 +20,10 @@ pub struct SetContext<'a> {
 }
 
 /// Resolves every node group (in deck order).
-pub fn node_groups(cards: &[NodeGroupCard], ctx: &SetContext) -> Result<Vec<NodeGroup>, DeckError> {
+pub fn node_groups(
+    cards: &[NodeGroupCard],
+    ctx: &SetContext,
+) -> Result<Vec<NodeGroup>, InputError> {
     let index = IdIndex::build(
         "node group",
         cards.iter().map(|c| (c.id, c.loc.clone())),
@@ -49,7 +50,7 @@ fn resolve_group(
     ctx: &SetContext,
     done: &mut HashMap<usize, Vec<u32>>,
     stack: &mut Vec<usize>,
-) -> Result<Vec<u32>, DeckError> {
+) -> Result<Vec<u32>, InputError> {
     if let Some(n) = done.get(&i) {
         return Ok(n.clone());
     }
@@ -61,7 +62,7 @@ fn resolve_group(
             .chain(std::iter::once(&i))
             .map(|&k| cards[k].id.to_string())
             .collect();
-        return Err(DeckError::new(
+        return Err(InputError::new(
             card.loc.clone(),
             &kw,
             "grnd_ID",
@@ -72,7 +73,7 @@ fn resolve_group(
         ));
     }
     if stack.len() >= MAX_GROUP_NESTING {
-        return Err(DeckError::new(
+        return Err(InputError::new(
             card.loc.clone(),
             &kw,
             "grnd_ID",
@@ -102,7 +103,7 @@ fn resolve_group(
                                 set.nodes_of(e)
                                     .iter()
                                     .copied()
-                                    .filter(|&n| n != super::NO_NODE),
+                                    .filter(|&n| n != crate::model::NO_NODE),
                             );
                         }
                     }
@@ -125,7 +126,7 @@ fn resolve_group(
 pub fn shell_groups(
     cards: &[ShellGroupCard],
     ctx: &SetContext,
-) -> Result<Vec<ShellGroup>, DeckError> {
+) -> Result<Vec<ShellGroup>, InputError> {
     IdIndex::build(
         "shell group",
         cards.iter().map(|c| (c.id, c.loc.clone())),
@@ -174,11 +175,11 @@ fn shell_segment(nodes: &[u32], flip: bool) -> [u32; 4] {
 
 /// External faces of the solids of part `p` (faces not shared by two of its solids), outward.
 fn solid_faces(ctx: &SetContext, p: u32, flip: bool, out: &mut Vec<[u32; 4]>) {
-    use crate::deck::ElementKind;
+    use crate::model::ElementKind;
     let mut faces: Vec<[u32; 4]> = Vec::new();
     for set in ctx.elements {
         let local: &[[usize; 4]] = match set.kind {
-            ElementKind::Brick8 => &super::geometry::HEXA_FACES,
+            ElementKind::Brick8 => &crate::model::geometry::HEXA_FACES,
             ElementKind::Tetra4 => &[[0, 2, 1, 1], [0, 1, 3, 3], [1, 2, 3, 3], [2, 0, 3, 3]],
             _ => continue,
         };
@@ -220,8 +221,8 @@ pub fn surfaces(
     shell_groups: &[ShellGroup],
     grshel_cards: &[ShellGroupCard],
     ctx: &SetContext,
-) -> Result<Vec<Surface>, DeckError> {
-    use crate::deck::ElementKind;
+) -> Result<Vec<Surface>, InputError> {
+    use crate::model::ElementKind;
     IdIndex::build(
         "surface",
         cards.iter().map(|c| (c.id, c.loc.clone())),
@@ -283,7 +284,7 @@ pub fn surfaces(
             }
         }
         if segments.is_empty() {
-            return Err(DeckError::new(c.loc.clone(), &kw, "", "the surface has no segments (its parts or groups hold no shell or solid face); expected at least one"));
+            return Err(InputError::new(c.loc.clone(), &kw, "", "the surface has no segments (its parts or groups hold no shell or solid face); expected at least one"));
         }
         out.push(Surface {
             id: c.id,
@@ -309,14 +310,14 @@ mod tests {
         s
     }
 
-    fn build_text(name: &str, text: &str) -> Result<crate::model::Model, crate::deck::DeckError> {
+    fn build_text(name: &str, text: &str) -> Result<crate::model::Model, crate::model::InputError> {
         let dir = std::env::temp_dir().join(format!("crashsim-sets-{name}-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
         let path = dir.join("chain_0000.rad");
         std::fs::write(&path, text).unwrap();
         let deck = read_deck(&path, EngineFile::None, ReadOptions::default());
         let _ = std::fs::remove_dir_all(&dir);
-        crate::model::build(&deck?)
+        crate::deck::build_model(&deck?)
     }
 
     /// Found reviewing the reader for fuzzing: a long /GRNOD/GRNOD chain overflowed the stack

@@ -1,17 +1,18 @@
-//! `build`: Deck → Model. Resolves every id (an unknown one is an error at
-//! the card that names it), applies defaults, computes masses.
+//! `build_model`: Deck → Model. Resolves every id (an unknown one is an
+//! error at the card that names it), applies defaults, computes masses.
+//! The steps run in a fixed order (nodes, parts, elements, groups,
+//! conditions, rigid walls, interfaces, masses, rigid bodies): the first
+//! error met is the one reported.
 
-use super::index::IdIndex;
-use super::mass::{element_masses, lump, totals};
-use super::properties::{resolve_shell, resolve_solid};
-use super::sets::{node_groups, shell_groups, surfaces, SetContext};
-use super::*;
-use crate::deck::{Deck, DeckError, ElementCard, Elements, Loc, MaterialLaw, PropertyKind, Side};
+use super::id_index::IdIndex;
+use super::resolve_sets::{node_groups, shell_groups, surfaces, SetContext};
+use super::{Deck, ElementCard, Elements};
+use crate::model::*;
 
 /// Builds the model from a deck.
-pub fn build(deck: &Deck) -> Result<Model, DeckError> {
+pub fn build_model(deck: &Deck) -> Result<Model, InputError> {
     let begin = deck.begin.clone().ok_or_else(|| {
-        DeckError::new(
+        InputError::new(
             Loc {
                 file: deck.path.clone(),
                 line: 0,
@@ -22,8 +23,92 @@ pub fn build(deck: &Deck) -> Result<Model, DeckError> {
         )
     })?;
     let mut warnings = deck.warnings.clone();
+    let (nodes, node_index) = read_nodes(deck, &begin)?;
+    let (part_index, properties, parts) = read_parts(deck)?;
+    let (elements, element_locs, shell4_index) =
+        read_elements(deck, &node_index, &part_index, &parts, &properties)?;
 
-    // Nodes, sorted by id.
+    // Sets.
+    let ctx = SetContext {
+        nodes: &node_index,
+        parts: &part_index,
+        shells4: &shell4_index,
+        elements: &elements,
+    };
+    let node_groups = node_groups(&deck.node_groups, &ctx)?;
+    let shell_groups = shell_groups(&deck.shell_groups, &ctx)?;
+    let surfaces = surfaces(&deck.surfaces, &shell_groups, &deck.shell_groups, &ctx)?;
+    let refs = Refs {
+        node_groups: &node_groups,
+        grnod_index: IdIndex::build(
+            "node group",
+            deck.node_groups.iter().map(|g| (g.id, g.loc.clone())),
+            "/GRNOD",
+        )?,
+        surf_index: IdIndex::build(
+            "surface",
+            deck.surfaces.iter().map(|s| (s.id, s.loc.clone())),
+            "/SURF",
+        )?,
+        fct_index: IdIndex::build(
+            "function",
+            deck.functions.iter().map(|f| (f.id, f.loc.clone())),
+            "/FUNCT",
+        )?,
+    };
+
+    let conditions = read_conditions(deck, &refs, nodes.len())?;
+    refs.check_spring_functions(&properties)?;
+    let rigid_walls = read_rigid_walls(deck, &refs, &nodes, &node_index, &mut warnings)?;
+    let interfaces = read_interfaces(deck, &refs, &surfaces, &mut warnings)?;
+
+    // Masses.
+    let mut model = Model {
+        name: begin.run_name.clone(),
+        title: deck.title.clone(),
+        begin,
+        nodal_mass: vec![0.0; nodes.len()],
+        added_mass: vec![0.0; nodes.len()],
+        nodal_inertia: vec![0.0; nodes.len()],
+        nodes,
+        elements,
+        parts,
+        materials: deck.materials.clone(),
+        properties,
+        functions: deck.functions.clone(),
+        node_groups: node_groups.clone(),
+        shell_groups,
+        surfaces,
+        bcs: conditions.bcs,
+        imposed_velocities: conditions.imposed_velocities,
+        imposed_displacements: conditions.imposed_displacements,
+        initial_velocities: conditions.initial_velocities,
+        concentrated_loads: conditions.concentrated_loads,
+        gravity: conditions.gravity,
+        rigid_walls,
+        rigid_bodies: Vec::new(),
+        interfaces,
+        sections: deck.sections.clone(),
+        time_histories: deck.time_histories.clone(),
+        mass: MassSummary::default(),
+        engine: deck.engine.clone(),
+        warnings: Vec::new(),
+    };
+    let mut masses = Vec::new();
+    for (set, locs) in model.elements.iter().zip(&element_locs) {
+        masses.push(element_masses(&model, set, locs)?);
+    }
+    lump(&mut model, &masses);
+    add_masses(&mut model, deck, &refs, &mut warnings)?;
+    // Rigid bodies (after masses: their mass and inertia come from their nodes).
+    add_rigid_bodies(&mut model, deck, &refs, &node_index)?;
+    totals(&mut model);
+    model.warnings = warnings;
+    Ok(model)
+}
+
+/// Nodes, sorted by id, and their index.
+fn read_nodes(deck: &Deck, begin: &Begin) -> Result<(Nodes, IdIndex), InputError> {
     let mut order: Vec<usize> = (0..deck.nodes.len()).collect();
     order.sort_by_key(|&i| deck.nodes[i].id);
     let nodes = Nodes {
@@ -38,15 +123,19 @@ pub fn build(deck: &Deck) -> Result<Model, DeckError> {
         "/NODE",
     )?;
     if nodes.is_empty() {
-        return Err(DeckError::new(
+        return Err(InputError::new(
             begin.loc.clone(),
             "/NODE",
             "",
             "the deck defines no node; expected a /NODE block",
         ));
     }
+    Ok((nodes, node_index))
+}
 
-    // Materials, properties, parts.
+/// Materials, properties (their defaults resolved) and parts: the part index,
+/// the properties and the parts with their property and material resolved.
+fn read_parts(deck: &Deck) -> Result<(IdIndex, Vec<Property>, Vec<Part>), InputError> {
     let mat_index = IdIndex::build(
         "material",
         deck.materials.iter().map(|m| (m.id, m.loc.clone())),
@@ -109,8 +198,20 @@ pub fn build(deck: &Deck) -> Result<Model, DeckError> {
             thick: p.thick,
         });
     }
+    Ok((part_index, properties, parts))
+}
 
-    // Elements, each kind sorted by id.
+/// The element sets, each kind sorted by id, in `ElementKind::ALL` order;
+/// with each element's card location and the /SHELL index.
+type ReadElements = (Vec<ElementSet>, Vec<Vec<Loc>>, IdIndex);
+
+fn read_elements(
+    deck: &Deck,
+    node_index: &IdIndex,
+    part_index: &IdIndex,
+    parts: &[Part],
+    properties: &[Property],
+) -> Result<ReadElements, InputError> {
     let mut elements = Vec::new();
     let mut element_locs: Vec<Vec<Loc>> = Vec::new();
     let mut shell4_index = IdIndex::default();
@@ -137,10 +238,10 @@ pub fn build(deck: &Deck) -> Result<Model, DeckError> {
                 &mut set,
                 c,
                 kind,
-                &node_index,
-                &part_index,
-                &parts,
-                &properties,
+                node_index,
+                part_index,
+                parts,
+                properties,
                 &deck.materials,
             )?;
             locs.push(c.loc.clone());
@@ -151,113 +252,140 @@ pub fn build(deck: &Deck) -> Result<Model, DeckError> {
         elements.push(set);
         element_locs.push(locs);
     }
+    Ok((elements, element_locs, shell4_index))
+}
 
-    // Sets.
-    let ctx = SetContext {
-        nodes: &node_index,
-        parts: &part_index,
-        shells4: &shell4_index,
-        elements: &elements,
-    };
-    let node_groups = node_groups(&deck.node_groups, &ctx)?;
-    let shell_groups = shell_groups(&deck.shell_groups, &ctx)?;
-    let surfaces = surfaces(&deck.surfaces, &shell_groups, &deck.shell_groups, &ctx)?;
-    let grnod_index = IdIndex::build(
-        "node group",
-        deck.node_groups.iter().map(|g| (g.id, g.loc.clone())),
-        "/GRNOD",
-    )?;
-    let surf_index = IdIndex::build(
-        "surface",
-        deck.surfaces.iter().map(|s| (s.id, s.loc.clone())),
-        "/SURF",
-    )?;
-    let fct_index = IdIndex::build(
-        "function",
-        deck.functions.iter().map(|f| (f.id, f.loc.clone())),
-        "/FUNCT",
-    )?;
-    let group = |id: Id, loc: &Loc, kw: &str, field: &str| -> Result<Vec<u32>, DeckError> {
+/// What conditions, walls, interfaces and rigid bodies refer to by id: node
+/// groups, surfaces and functions.
+struct Refs<'a> {
+    node_groups: &'a [NodeGroup],
+    grnod_index: IdIndex,
+    surf_index: IdIndex,
+    fct_index: IdIndex,
+}
+
+impl Refs<'_> {
+    /// The nodes of node group `id`, named by field `field` of `kw` at `loc`.
+    fn group(&self, id: Id, loc: &Loc, kw: &str, field: &str) -> Result<Vec<u32>, InputError> {
         Ok(
-            node_groups[grnod_index.resolve(id, loc, kw, field)? as usize]
+            self.node_groups[self.grnod_index.resolve(id, loc, kw, field)? as usize]
                 .nodes
                 .clone(),
         )
-    };
-    let check_fct = |id: Id, loc: &Loc, kw: &str, field: &str| -> Result<(), DeckError> {
+    }
+
+    /// Function `id` (0 = none) must be defined.
+    fn check_fct(&self, id: Id, loc: &Loc, kw: &str, field: &str) -> Result<(), InputError> {
         if id != 0 {
-            fct_index.resolve(id, loc, kw, field)?;
+            self.fct_index.resolve(id, loc, kw, field)?;
         }
         Ok(())
-    };
-
-    // Conditions.
-    let mut bcs = Vec::new();
-    for c in &deck.bcs {
-        bcs.push(OnNodes {
-            nodes: group(c.grnod, &c.loc, &format!("/BCS/{}", c.id), "grnod_ID")?,
-            card: c.clone(),
-        });
     }
-    let motions = |cards: &[crate::deck::ImposedMotionCard],
-                   kw: &str|
-     -> Result<Vec<ImposedMotion>, DeckError> {
+
+    /// The functions a spring property names must be defined.
+    fn check_spring_functions(&self, properties: &[Property]) -> Result<(), InputError> {
+        for p in properties {
+            if let PropertyKind::Spring(s) = &p.card.kind {
+                for (f, name) in [
+                    (s.fct_id1, "fct_ID1"),
+                    (s.fct_id2, "fct_ID2"),
+                    (s.fct_id3, "fct_ID3"),
+                ] {
+                    self.check_fct(f, &p.card.loc, &format!("/PROP/SPRING/{}", p.card.id), name)?;
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Imposed velocities or displacements (`kw` /IMPVEL or /IMPDISP).
+    fn motions(
+        &self,
+        cards: &[ImposedMotionSpec],
+        kw: &str,
+    ) -> Result<Vec<ImposedMotion>, InputError> {
         let mut out = Vec::new();
         for c in cards {
             let k = format!("{kw}/{}", c.id);
-            check_fct(c.fct, &c.loc, &k, "fct_IDT")?;
+            self.check_fct(c.fct, &c.loc, &k, "fct_IDT")?;
             out.push(OnNodes {
-                nodes: group(c.grnod, &c.loc, &k, "grnod_ID")?,
+                nodes: self.group(c.grnod, &c.loc, &k, "grnod_ID")?,
                 card: c.clone(),
             });
         }
         Ok(out)
-    };
-    let imposed_velocities = motions(&deck.imposed_velocities, "/IMPVEL")?;
-    let imposed_displacements = motions(&deck.imposed_displacements, "/IMPDISP")?;
+    }
+}
+
+/// Boundary and initial conditions and loads with their nodes.
+struct Conditions {
+    bcs: Vec<Bcs>,
+    imposed_velocities: Vec<ImposedMotion>,
+    imposed_displacements: Vec<ImposedMotion>,
+    initial_velocities: Vec<InitialVelocity>,
+    concentrated_loads: Vec<ConcentratedLoad>,
+    gravity: Vec<Gravity>,
+}
+
+fn read_conditions(deck: &Deck, refs: &Refs, n_nodes: usize) -> Result<Conditions, InputError> {
+    let mut bcs = Vec::new();
+    for c in &deck.bcs {
+        bcs.push(OnNodes {
+            nodes: refs.group(c.grnod, &c.loc, &format!("/BCS/{}", c.id), "grnod_ID")?,
+            card: c.clone(),
+        });
+    }
+    let imposed_velocities = refs.motions(&deck.imposed_velocities, "/IMPVEL")?;
+    let imposed_displacements = refs.motions(&deck.imposed_displacements, "/IMPDISP")?;
     let mut initial_velocities = Vec::new();
     for c in &deck.initial_velocities {
         initial_velocities.push(OnNodes {
-            nodes: group(c.grnod, &c.loc, &format!("/INIVEL/{}", c.id), "grnod_ID")?,
+            nodes: refs.group(c.grnod, &c.loc, &format!("/INIVEL/{}", c.id), "grnod_ID")?,
             card: c.clone(),
         });
     }
     let mut concentrated_loads = Vec::new();
     for c in &deck.concentrated_loads {
         let k = format!("/CLOAD/{}", c.id);
-        check_fct(c.fct, &c.loc, &k, "fct_IDT")?;
+        refs.check_fct(c.fct, &c.loc, &k, "fct_IDT")?;
         concentrated_loads.push(OnNodes {
-            nodes: group(c.grnod, &c.loc, &k, "grnod_ID")?,
+            nodes: refs.group(c.grnod, &c.loc, &k, "grnod_ID")?,
             card: c.clone(),
         });
     }
     let mut gravity = Vec::new();
     for c in &deck.gravity {
         let k = format!("/GRAV/{}", c.id);
-        check_fct(c.fct, &c.loc, &k, "fct_IDT")?;
+        refs.check_fct(c.fct, &c.loc, &k, "fct_IDT")?;
         let nodes = if c.grnod == 0 {
-            (0..nodes.len() as u32).collect()
+            (0..n_nodes as u32).collect()
         } else {
-            group(c.grnod, &c.loc, &k, "grnod_ID")?
+            refs.group(c.grnod, &c.loc, &k, "grnod_ID")?
         };
         gravity.push(OnNodes {
             nodes,
             card: c.clone(),
         });
     }
-    for p in &properties {
-        if let PropertyKind::Spring(s) = &p.card.kind {
-            for (f, name) in [
-                (s.fct_id1, "fct_ID1"),
-                (s.fct_id2, "fct_ID2"),
-                (s.fct_id3, "fct_ID3"),
-            ] {
-                check_fct(f, &p.card.loc, &format!("/PROP/SPRING/{}", p.card.id), name)?;
-            }
-        }
-    }
+    Ok(Conditions {
+        bcs,
+        imposed_velocities,
+        imposed_displacements,
+        initial_velocities,
+        concentrated_loads,
+        gravity,
+    })
+}
 
-    // Rigid walls.
+/// Rigid walls: the plane, and the secondary nodes (group 1, plus the nodes
+/// within the search distance in front of the wall, minus group 2).
+fn read_rigid_walls(
+    deck: &Deck,
+    refs: &Refs,
+    nodes: &Nodes,
+    node_index: &IdIndex,
+    warnings: &mut Vec<Warning>,
+) -> Result<Vec<RigidWall>, InputError> {
     let mut rigid_walls = Vec::new();
     for c in &deck.rigid_walls {
         let kw = format!("/RWALL/PLANE/{}", c.id);
@@ -270,7 +398,7 @@ pub fn build(deck: &Deck) -> Result<Model, DeckError> {
         let d = [c.m1[0] - point[0], c.m1[1] - point[1], c.m1[2] - point[2]];
         let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
         if len.is_nan() || len <= 0.0 {
-            return Err(DeckError::new(
+            return Err(InputError::new(
                 c.loc.clone(),
                 &kw,
                 "X_M1",
@@ -280,7 +408,7 @@ pub fn build(deck: &Deck) -> Result<Model, DeckError> {
         let normal = [d[0] / len, d[1] / len, d[2] / len];
         let mut sec: std::collections::BTreeSet<u32> = std::collections::BTreeSet::new();
         if c.grnod1 != 0 {
-            sec.extend(group(c.grnod1, &c.loc, &kw, "grnod_ID1")?);
+            sec.extend(refs.group(c.grnod1, &c.loc, &kw, "grnod_ID1")?);
         }
         if c.d_search > 0.0 {
             for (i, x) in nodes.x.iter().enumerate() {
@@ -293,7 +421,7 @@ pub fn build(deck: &Deck) -> Result<Model, DeckError> {
             }
         }
         if c.grnod2 != 0 {
-            for n in group(c.grnod2, &c.loc, &kw, "grnod_ID2")? {
+            for n in refs.group(c.grnod2, &c.loc, &kw, "grnod_ID2")? {
                 sec.remove(&n);
             }
         }
@@ -312,8 +440,16 @@ pub fn build(deck: &Deck) -> Result<Model, DeckError> {
             secondary_nodes: sec.into_iter().collect(),
         });
     }
+    Ok(rigid_walls)
+}
 
-    // Interfaces.
+/// Contact interfaces with their sides resolved to nodes and segments.
+fn read_interfaces(
+    deck: &Deck,
+    refs: &Refs,
+    surfaces: &[Surface],
+    warnings: &mut Vec<Warning>,
+) -> Result<Vec<Interface>, InputError> {
     let mut interfaces = Vec::new();
     IdIndex::build(
         "interface",
@@ -327,16 +463,17 @@ pub fn build(deck: &Deck) -> Result<Model, DeckError> {
         } else {
             &c.ids_loc
         };
-        let side = |s: Side, field: &str| -> Result<Option<(Vec<u32>, Vec<[u32; 4]>)>, DeckError> {
-            Ok(match s {
-                Side::NodeGroup(g) => Some((group(g, loc, &kw, field)?, Vec::new())),
-                Side::Surface(sid) => {
-                    let s = &surfaces[surf_index.resolve(sid, loc, &kw, field)? as usize];
-                    Some((s.nodes(), s.segments.clone()))
-                }
-                Side::Line(_) | Side::SameAsOther | Side::None => None,
-            })
-        };
+        let side =
+            |s: Side, field: &str| -> Result<Option<(Vec<u32>, Vec<[u32; 4]>)>, InputError> {
+                Ok(match s {
+                    Side::NodeGroup(g) => Some((refs.group(g, loc, &kw, field)?, Vec::new())),
+                    Side::Surface(sid) => {
+                        let s = &surfaces[refs.surf_index.resolve(sid, loc, &kw, field)? as usize];
+                        Some((s.nodes(), s.segments.clone()))
+                    }
+                    Side::Line(_) | Side::SameAsOther | Side::None => None,
+                })
+            };
         let (sec_field, main_field) = c.side_fields();
         let main = side(c.main_side(), main_field)?;
         let sec = side(c.secondary_side(), sec_field)?;
@@ -357,47 +494,19 @@ pub fn build(deck: &Deck) -> Result<Model, DeckError> {
             secondary_segments,
         });
     }
+    Ok(interfaces)
+}
 
-    // Masses.
-    let mut model = Model {
-        name: begin.run_name.clone(),
-        title: deck.title.clone(),
-        begin,
-        nodal_mass: vec![0.0; nodes.len()],
-        added_mass: vec![0.0; nodes.len()],
-        nodal_inertia: vec![0.0; nodes.len()],
-        nodes,
-        elements,
-        parts,
-        materials: deck.materials.clone(),
-        properties,
-        functions: deck.functions.clone(),
-        node_groups: node_groups.clone(),
-        shell_groups,
-        surfaces,
-        bcs,
-        imposed_velocities,
-        imposed_displacements,
-        initial_velocities,
-        concentrated_loads,
-        gravity,
-        rigid_walls,
-        rigid_bodies: Vec::new(),
-        interfaces,
-        sections: deck.sections.clone(),
-        time_histories: deck.time_histories.clone(),
-        mass: MassSummary::default(),
-        engine: deck.engine.clone(),
-        warnings: Vec::new(),
-    };
-    let mut masses = Vec::new();
-    for (set, locs) in model.elements.iter().zip(&element_locs) {
-        masses.push(element_masses(&model, set, locs)?);
-    }
-    lump(&mut model, &masses);
+/// /ADMAS: mass added to the nodes of a group (each, or shared).
+fn add_masses(
+    model: &mut Model,
+    deck: &Deck,
+    refs: &Refs,
+    warnings: &mut Vec<Warning>,
+) -> Result<(), InputError> {
     for a in &deck.added_masses {
         let kw = format!("/ADMAS/{}/{}", a.kind, a.id);
-        let g = group(a.target, &a.loc, &kw, "grnd_ID")?;
+        let g = refs.group(a.target, &a.loc, &kw, "grnd_ID")?;
         if g.is_empty() {
             warnings.push(Warning {
                 loc: a.loc.clone(),
@@ -416,16 +525,27 @@ pub fn build(deck: &Deck) -> Result<Model, DeckError> {
             model.nodal_mass[n as usize] += each;
         }
     }
-    // Rigid bodies (after masses: their mass and inertia come from their nodes).
+    Ok(())
+}
+
+/// Rigid bodies: main node, secondary nodes, and the body's mass, centre
+/// and inertia about the centre from its nodes' masses.
+fn add_rigid_bodies(
+    model: &mut Model,
+    deck: &Deck,
+    refs: &Refs,
+    node_index: &IdIndex,
+) -> Result<(), InputError> {
     for c in &deck.rigid_bodies {
         let kw = format!("/RBODY/{}", c.id);
         let main_node = node_index.resolve(c.main_node, &c.loc, &kw, "RBID")?;
-        let secondary_nodes: Vec<u32> = group(c.grnod, &c.loc, &kw, "Gnod_id")?
+        let secondary_nodes: Vec<u32> = refs
+            .group(c.grnod, &c.loc, &kw, "Gnod_id")?
             .into_iter()
             .filter(|&n| n != main_node)
             .collect();
         if secondary_nodes.is_empty() {
-            return Err(DeckError::new(c.loc.clone(), &kw, "Gnod_id", "the rigid body's node group is empty (or holds only the main node); expected its secondary nodes"));
+            return Err(InputError::new(c.loc.clone(), &kw, "Gnod_id", "the rigid body's node group is empty (or holds only the main node); expected its secondary nodes"));
         }
         let xm = model.nodes.x[main_node as usize];
         let mut m = c.mass + model.nodal_mass[main_node as usize];
@@ -474,9 +594,7 @@ pub fn build(deck: &Deck) -> Result<Model, DeckError> {
             inertia,
         });
     }
-    totals(&mut model);
-    model.warnings = warnings;
-    Ok(model)
+    Ok(())
 }
 
 /// Resolves an id, mentioning in the error when the card that would define it was skipped as unsupported.
@@ -488,7 +606,7 @@ fn resolve_skipped(
     field: &str,
     family: &str,
     deck: &Deck,
-) -> Result<u32, DeckError> {
+) -> Result<u32, InputError> {
     index.resolve(id, loc, kw, field).map_err(|mut e| {
         let id_s = id.to_string();
         if let Some(w) = deck.warnings.iter().find(|w| {
@@ -512,8 +630,8 @@ fn add_element(
     part_index: &IdIndex,
     parts: &[Part],
     properties: &[Property],
-    materials: &[crate::deck::MaterialCard],
-) -> Result<(), DeckError> {
+    materials: &[MaterialSpec],
+) -> Result<(), InputError> {
     let kw = format!("{}/{}", kind.keyword(), c.part);
     let p = part_index.resolve(c.part, &c.loc, &kw, "part_ID")?;
     let part = &parts[p as usize];
@@ -531,7 +649,7 @@ fn add_element(
             None => "no property".to_string(),
             Some(p) => format!("property {} of another kind", p.card.id),
         };
-        return Err(DeckError::new(
+        return Err(InputError::new(
             c.loc.clone(),
             &kw,
             "part_ID",
@@ -553,7 +671,7 @@ fn add_element(
     ) {
         match part.mat {
             None => {
-                return Err(DeckError::new(
+                return Err(InputError::new(
                     c.loc.clone(),
                     &kw,
                     "mat_ID",

@@ -1,29 +1,13 @@
-//! Input errors: every problem with a deck is reported with where it is
-//! (file:line), which keyword and field, and what was expected.
+//! Input errors and warnings: every problem with an input is reported with
+//! where it is (file:line), which keyword and field, and what was expected.
+//! The readers and the model's validation both return them.
 
+use super::Loc;
 use std::fmt;
-use std::path::PathBuf;
-
-/// A place in the input: a file and a 1-based line number (0 = whole file).
-#[derive(Clone, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize, Default)]
-pub struct Loc {
-    pub file: PathBuf,
-    pub line: usize,
-}
-
-impl fmt::Display for Loc {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        if self.line == 0 {
-            write!(f, "{}", self.file.display())
-        } else {
-            write!(f, "{}:{}", self.file.display(), self.line)
-        }
-    }
-}
 
 /// One bad-input error. `Display` gives the one-line message the user sees.
 #[derive(Clone, Debug, PartialEq)]
-pub struct DeckError {
+pub struct InputError {
     pub loc: Loc,
     /// The keyword (e.g. `/MAT/PLAS_JOHNS/1`), empty when the problem is outside a block.
     pub keyword: String,
@@ -33,9 +17,9 @@ pub struct DeckError {
     pub message: String,
 }
 
-impl DeckError {
+impl InputError {
     pub fn new(loc: Loc, keyword: &str, field: &str, message: impl Into<String>) -> Self {
-        DeckError {
+        InputError {
             loc,
             keyword: keyword.to_string(),
             field: field.to_string(),
@@ -44,7 +28,19 @@ impl DeckError {
     }
 }
 
-impl fmt::Display for DeckError {
+impl std::error::Error for InputError {}
+
+pub type InputResult<T> = Result<T, InputError>;
+
+/// A non-fatal remark about the input (unknown keyword skipped, ignored field ...).
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct Warning {
+    pub loc: Loc,
+    pub keyword: String,
+    pub message: String,
+}
+
+impl fmt::Display for InputError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(f, "{}: error", self.loc)?;
         if !self.keyword.is_empty() {
@@ -55,18 +51,6 @@ impl fmt::Display for DeckError {
         }
         write!(f, ": {}", self.message)
     }
-}
-
-impl std::error::Error for DeckError {}
-
-pub type DeckResult<T> = Result<T, DeckError>;
-
-/// A non-fatal remark about the input (unknown keyword skipped, ignored field ...).
-#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
-pub struct Warning {
-    pub loc: Loc,
-    pub keyword: String,
-    pub message: String,
 }
 
 impl fmt::Display for Warning {

@@ -1,0 +1,126 @@
+//! Contact interfaces as the input specifies them: which interface type
+//! (tied, node-to-surface, surface-to-surface, general penalty contact,
+//! edge-to-edge), what each side references (node group, surface, line) and
+//! the type's options after default resolution. One file per interface type.
+
+mod type11;
+mod type2;
+mod type3;
+mod type5;
+mod type7;
+
+pub use type11::*;
+pub use type2::*;
+pub use type3::*;
+pub use type5::*;
+pub use type7::*;
+
+use super::{Id, Loc};
+use serde::{Deserialize, Serialize};
+
+/// "No limit" value the Starter substitutes for Tstop, Stmax, Gapmax, Ptlim.
+pub const EP30: f64 = 1.0e30;
+
+/// Starter's "infinite" rupture distance for TYPE2 (Max_N_Dist, Max_T_Dist).
+pub const EP20: f64 = 1.0e20;
+
+/// One contact interface: its type with the type's options, and where it is
+/// defined (Radioss: an `/INTER/TYPEn/inter_ID[/unit_ID]` block).
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct InterfaceSpec {
+    pub id: Id,
+    /// Header unit_ID (0 = none).
+    pub unit_id: Id,
+    /// inter_title: the line after the header (up to 100 characters).
+    pub title: String,
+    pub kind: InterfaceKind,
+    /// Where the keyword line is.
+    pub loc: Loc,
+    /// Where card 1 (the ids of both sides) is.
+    #[serde(default)]
+    pub ids_loc: Loc,
+}
+
+// A deck holds few interfaces: the size of the TYPE7 variant does not matter,
+// and boxing it would change the public shape `Type7(Type7)`.
+#[allow(clippy::large_enum_variant)]
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub enum InterfaceKind {
+    Type2(Type2),
+    Type3(Type3),
+    Type5(Type5),
+    Type7(Type7),
+    Type11(Type11),
+}
+
+/// What one side of an interface references.
+#[derive(Clone, Copy, Debug, Serialize, Deserialize, PartialEq)]
+pub enum Side {
+    /// A `/GRNOD` node group.
+    NodeGroup(Id),
+    /// A `/SURF` surface (segments).
+    Surface(Id),
+    /// A `/LINE` set of 2-node segments.
+    Line(Id),
+    /// self-contact (TYPE7 grnod=0 / TYPE11 main line 0): same as the other side
+    SameAsOther,
+    None,
+}
+
+impl InterfaceSpec {
+    /// 2, 3, 5, 7 or 11.
+    pub fn type_number(&self) -> u32 {
+        match self.kind {
+            InterfaceKind::Type2(_) => 2,
+            InterfaceKind::Type3(_) => 3,
+            InterfaceKind::Type5(_) => 5,
+            InterfaceKind::Type7(_) => 7,
+            InterfaceKind::Type11(_) => 11,
+        }
+    }
+
+    /// What the secondary (slave) side references.
+    pub fn secondary_side(&self) -> Side {
+        match &self.kind {
+            InterfaceKind::Type2(t) => Side::NodeGroup(t.grnod_ids),
+            InterfaceKind::Type3(t) => Side::Surface(t.surf_id1),
+            InterfaceKind::Type5(t) => Side::NodeGroup(t.grnod_ids),
+            InterfaceKind::Type7(t) => {
+                if t.grnod_ids == 0 {
+                    Side::SameAsOther
+                } else if t.ists != 0 {
+                    Side::Surface(t.grnod_ids)
+                } else {
+                    Side::NodeGroup(t.grnod_ids)
+                }
+            }
+            InterfaceKind::Type11(t) => Side::Line(t.line_ids),
+        }
+    }
+
+    /// The field names of (secondary side, main side) on card 1.
+    pub fn side_fields(&self) -> (&'static str, &'static str) {
+        match &self.kind {
+            InterfaceKind::Type3(_) => ("surf_ID1", "surf_ID2"),
+            InterfaceKind::Type11(_) => ("line_IDs", "line_IDm"),
+            _ => ("grnd_IDs", "surf_IDm"),
+        }
+    }
+
+    /// What the main (master) side references.
+    pub fn main_side(&self) -> Side {
+        match &self.kind {
+            InterfaceKind::Type2(t) => Side::Surface(t.surf_idm),
+            InterfaceKind::Type3(t) => Side::Surface(t.surf_id2),
+            InterfaceKind::Type5(t) => Side::Surface(t.surf_idm),
+            InterfaceKind::Type7(t) => Side::Surface(t.surf_idm),
+            InterfaceKind::Type11(t) => {
+                if t.line_idm == 0 {
+                    Side::SameAsOther
+                } else {
+                    Side::Line(t.line_idm)
+                }
+            }
+        }
+    }
+}

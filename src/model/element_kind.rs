@@ -1,0 +1,54 @@
+//! The element kinds the model knows (shell, brick, tetrahedron, spring ...),
+//! with their node counts and the fixed order of the model's element sets.
+
+use serde::{Deserialize, Serialize};
+
+/// The element kinds the reader knows.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize, PartialOrd, Ord)]
+pub enum ElementKind {
+    Shell4,
+    Shell3,
+    Brick8,
+    Tetra4,
+    Spring,
+    Truss,
+    Beam,
+}
+
+impl ElementKind {
+    /// Every kind, in the fixed order of the model's element sets
+    /// (`Model::elements`), of partitioning and of the output.
+    pub const ALL: [ElementKind; 7] = [
+        ElementKind::Shell4,
+        ElementKind::Shell3,
+        ElementKind::Brick8,
+        ElementKind::Tetra4,
+        ElementKind::Spring,
+        ElementKind::Truss,
+        ElementKind::Beam,
+    ];
+
+    /// The name messages give the kind: the Radioss keyword that defines
+    /// such elements (`/SHELL` ...), which every reader's messages share.
+    pub fn keyword(self) -> &'static str {
+        match self {
+            ElementKind::Shell4 => "/SHELL",
+            ElementKind::Shell3 => "/SH3N",
+            ElementKind::Brick8 => "/BRICK",
+            ElementKind::Tetra4 => "/TETRA4",
+            ElementKind::Spring => "/SPRING",
+            ElementKind::Truss => "/TRUSS",
+            ElementKind::Beam => "/BEAM",
+        }
+    }
+
+    /// Number of nodes that define the element (beams: 2 + orientation node).
+    pub fn nodes(self) -> usize {
+        match self {
+            ElementKind::Shell4 | ElementKind::Tetra4 => 4,
+            ElementKind::Shell3 | ElementKind::Beam => 3,
+            ElementKind::Brick8 => 8,
+            ElementKind::Spring | ElementKind::Truss => 2,
+        }
+    }
+}

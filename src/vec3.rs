@@ -1,0 +1,54 @@
+//! 3-vector algebra on plain `[f64; 3]`, the one copy every kernel uses
+//! (elements, contact geometry, rigid bodies and walls, model measures).
+//! Always inlined: the hot kernels pay nothing for the call, and each
+//! expression is written once, so every caller rounds alike.
+//!
+//! Why not nalgebra's `Vector3` here: the kernels keep their state as plain
+//! arrays in structure-of-arrays blocks (serde, MPI buffers, HDF5 rows); a
+//! conversion at every call would cost more than these one-line bodies.
+
+/// A 3-vector.
+pub type V3 = [f64; 3];
+
+#[inline(always)]
+pub fn add(a: V3, b: V3) -> V3 {
+    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
+}
+#[inline(always)]
+pub fn sub(a: V3, b: V3) -> V3 {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+#[inline(always)]
+pub fn scale(a: V3, s: f64) -> V3 {
+    [a[0] * s, a[1] * s, a[2] * s]
+}
+#[inline(always)]
+pub fn dot(a: V3, b: V3) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+#[inline(always)]
+pub fn cross(a: V3, b: V3) -> V3 {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+#[inline(always)]
+pub fn norm(a: V3) -> f64 {
+    dot(a, a).sqrt()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_basis_multiplies_as_it_should() {
+        let (x, y, z) = ([1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]);
+        assert_eq!(cross(x, y), z);
+        assert_eq!(cross(y, x), scale(z, -1.0));
+        assert_eq!(dot(add(x, y), sub(x, y)), 0.0);
+        assert_eq!(norm([3.0, 4.0, 12.0]), 13.0);
+    }
+}
