@@ -6,7 +6,8 @@
 //! Parallel design (ARCHITECTURE "Contact across ranks", "Determinism"):
 //! - the owner of a secondary node spreads its force and moment over the main
 //!   nodes; each share goes to every rank holding that main node, keyed by
-//!   (interface, secondary node global id, corner), and each rank sums a main
+//!   (interface, secondary node global id, corner) (`key::SumKey`, pass and
+//!   main entity 0), and each rank sums a main
 //!   node's shares in key order, so the sum has the same bits on every rank
 //!   and for any number of ranks;
 //! - after the velocity update, the owners of main nodes send their velocities
@@ -21,6 +22,7 @@
 
 use super::geometry::{self as geo, V3};
 use super::interfaces::type2;
+use super::key::SumKey;
 use super::setup::NONE;
 use crate::deck::InterfaceKind;
 use crate::domain::Subdomain;
@@ -500,8 +502,8 @@ impl TiedSystem {
         for s in self.sums.iter_mut() {
             *s = TiedSums::default();
         }
-        // (tnode, key hi, key lo, share)
-        let mut out: Vec<(u32, u64, u64, [f64; 6])> = Vec::new();
+        // (tnode, key, share)
+        let mut out: Vec<(u32, SumKey, [f64; 6])> = Vec::new();
         for (ii, it) in self.setup.interfaces.iter().enumerate() {
             for (j, tie) in it.ties.iter().enumerate() {
                 let l = self.local[tie.sec as usize];
@@ -520,12 +522,12 @@ impl TiedSystem {
                     su.force[k] += force[k];
                     su.moment[k] += moment[k];
                 }
-                let hi = ((ii as u64) << 32) | self.setup.nodes[tie.sec as usize] as u64;
+                let key = SumKey::pair(ii, 0, self.setup.nodes[tie.sec as usize], 0);
                 for (i, &q) in tie.seg.iter().enumerate() {
                     if tie.shape[i] == 0.0 && sh[i] == [0.0; 6] {
                         continue;
                     }
-                    out.push((q, hi, i as u64, sh[i]));
+                    out.push((q, key.at(i as u8), sh[i]));
                 }
             }
         }
@@ -537,8 +539,9 @@ impl TiedSystem {
             for c in &out {
                 for &r in self.setup.holders_of(c.0) {
                     let b = &mut send[r as usize];
-                    b.extend_from_slice(&[c.0 as u64, c.1, c.2]);
-                    b.extend(c.3.iter().map(|x| x.to_bits()));
+                    b.push(c.0 as u64);
+                    b.extend_from_slice(&c.1.to_words());
+                    b.extend(c.2.iter().map(|x| x.to_bits()));
                 }
             }
             let recv = world.alltoallv_u64(&send);
@@ -549,13 +552,13 @@ impl TiedSystem {
                         for k in 0..6 {
                             s[k] = f64::from_bits(c[3 + k]);
                         }
-                        (c[0] as u32, c[1], c[2], s)
+                        (c[0] as u32, SumKey::from_words([c[1], c[2]]), s)
                     })
                 })
                 .collect()
         };
-        got.sort_unstable_by(|a, b| (a.0, a.1, a.2).cmp(&(b.0, b.1, b.2)));
-        for (q, _, _, s) in got {
+        got.sort_unstable_by(|a, b| (a.0, a.1).cmp(&(b.0, b.1)));
+        for (q, _, s) in got {
             let l = self.local[q as usize];
             if l == NONE {
                 continue;
