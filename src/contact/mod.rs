@@ -1,14 +1,17 @@
 //! Contact interfaces, laid out as Tribol does: `search` finds candidate
 //! pairs, `geometry` measures them, `stiffness`/`gap`/`friction` turn a
-//! measured gap into a force, `interfaces` composes them per interface type,
-//! and `exchange` carries ghosts and forces between ranks.
+//! measured gap into a force, `interfaces` composes them per interface type
+//! (one file per type behind the `interfaces::InterfaceType` trait and its
+//! registry), and `exchange` carries ghosts and forces between ranks, summed
+//! in the order of `key::SumKey`.
 //!
 //! [`ContactSystem`] is one rank's runtime: it keeps the positions and
 //! velocities of the contact nodes it holds or receives as ghosts, rebuilds
 //! candidate lists when the largest motion since the last sort exceeds half
 //! the sorting margin (decided globally), computes the pairs of the secondary
-//! nodes it owns, and returns each node's contact force summed in a fixed
-//! global order.
+//! nodes it owns (`pairs`, through each interface's type), and returns each
+//! node's contact force summed in a fixed global order. It never names an
+//! interface type.
 
 pub mod exchange;
 pub mod friction;

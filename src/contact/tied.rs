@@ -109,24 +109,18 @@ impl TiedSetup {
     }
 }
 
-/// Builds the TYPE2 set-up on rank 0; `holders[g]` lists the ranks holding global node g.
-pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<TiedSetup, String> {
-    let mut raw: Vec<(
-        u64,
-        String,
-        Vec<(u32, [u32; 4], [f64; 4], V3, bool)>,
-        Vec<u64>,
-        bool,
-        f64,
-    )> = Vec::new();
-    // Every node constrained by some other condition, for the conflict checks:
-    // the first card that holds it, by kind.
-    type Holder = std::collections::HashMap<u32, String>;
-    fn mark<'a>(map: &mut Holder, nodes: impl IntoIterator<Item = &'a u32>, card: String) {
-        for &n in nodes {
-            map.entry(n).or_insert_with(|| card.clone());
-        }
+/// The first card that holds each node, by card name.
+type Holder = std::collections::HashMap<u32, String>;
+
+fn mark<'a>(map: &mut Holder, nodes: impl IntoIterator<Item = &'a u32>, card: String) {
+    for &n in nodes {
+        map.entry(n).or_insert_with(|| card.clone());
     }
+}
+
+/// Every node constrained by some other condition, for the conflict checks:
+/// (boundary conditions and imposed motions, rigid bodies and walls).
+fn constrained_nodes(m: &Model) -> (Holder, Holder) {
     let mut bc_of: Holder = Default::default();
     for c in &m.bcs {
         if c.card.fixed.iter().any(|&f| f) {
@@ -170,6 +164,54 @@ pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<TiedSetup, String> {
             format!("{}: /RWALL/{}", w.card.loc, w.card.id),
         );
     }
+    (bc_of, rb_of)
+}
+
+/// One TYPE2 interface before the tnode numbering: (id, title, ties as
+/// (secondary node, segment, shape, offset, rotations), untied node ids,
+/// untied nodes removed, dsearch).
+type RawTied = (
+    u64,
+    String,
+    Vec<(u32, [u32; 4], [f64; 4], V3, bool)>,
+    Vec<u64>,
+    bool,
+    f64,
+);
+
+/// Main nodes that are themselves tied (chains) or on a rigid body: refused.
+fn check_main_nodes(
+    raw: &[RawTied],
+    kws: &[String],
+    tied_by: &std::collections::HashMap<u32, u64>,
+    rb_of: &Holder,
+    nid: &dyn Fn(u32) -> u64,
+) -> Result<(), String> {
+    for ((_, _, ties, _, _, _), kw) in raw.iter().zip(kws) {
+        for (_, seg, _, _, _) in ties {
+            for &q in seg {
+                if let Some(other) = tied_by.get(&q) {
+                    return Err(format!(
+                        "{kw}, field surf_IDm: main node {} is itself a secondary node of /INTER/TYPE2/{other}: tied-interface hierarchies (Level) are not supported by the engine yet",
+                        nid(q)
+                    ));
+                }
+                if let Some(what) = rb_of.get(&q) {
+                    return Err(format!(
+                        "{kw}, field surf_IDm: main node {} is also constrained by {what}: a tie onto a rigid body or wall is not supported by the engine yet",
+                        nid(q)
+                    ));
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Builds the TYPE2 set-up on rank 0; `holders[g]` lists the ranks holding global node g.
+pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<TiedSetup, String> {
+    let mut raw: Vec<RawTied> = Vec::new();
+    let (bc_of, rb_of) = constrained_nodes(m);
     // Secondary nodes over all TYPE2 (tied twice) and main nodes (chains).
     let mut tied_by: std::collections::HashMap<u32, u64> = Default::default();
     let mut kws: Vec<String> = Vec::new();
@@ -254,25 +296,7 @@ pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<TiedSetup, String> {
         raw.push((c.id, c.title.clone(), ties, untied, removed, dsearch));
         kws.push(kw);
     }
-    // Chains and rigid-body main nodes.
-    for ((_, _, ties, _, _, _), kw) in raw.iter().zip(&kws) {
-        for (_, seg, _, _, _) in ties {
-            for &q in seg {
-                if let Some(other) = tied_by.get(&q) {
-                    return Err(format!(
-                        "{kw}, field surf_IDm: main node {} is itself a secondary node of /INTER/TYPE2/{other}: tied-interface hierarchies (Level) are not supported by the engine yet",
-                        nid(q)
-                    ));
-                }
-                if let Some(what) = rb_of.get(&q) {
-                    return Err(format!(
-                        "{kw}, field surf_IDm: main node {} is also constrained by {what}: a tie onto a rigid body or wall is not supported by the engine yet",
-                        nid(q)
-                    ));
-                }
-            }
-        }
-    }
+    check_main_nodes(&raw, &kws, &tied_by, &rb_of, &nid)?;
     let mut all: Vec<u32> = raw
         .iter()
         .flat_map(|r| r.2.iter().flat_map(|t| std::iter::once(t.0).chain(t.1)))
