@@ -190,6 +190,6 @@ pub fn route(world: &World, setup: &ContactSetup, out: Vec<Contribution>) -> Vec
             .flat_map(|b| b.chunks_exact(8).map(Contribution::decode))
             .collect()
     };
-    got.sort_unstable_by(|a, b| (a.c, a.key).cmp(&(b.c, b.key)));
+    got.sort_unstable_by_key(|a| (a.c, a.key));
     got
 }

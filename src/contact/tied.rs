@@ -581,7 +581,7 @@ impl TiedSystem {
                 })
                 .collect()
         };
-        got.sort_unstable_by(|a, b| (a.0, a.1).cmp(&(b.0, b.1)));
+        got.sort_unstable_by_key(|a| (a.0, a.1));
         for (q, _, s) in got {
             let l = self.local[q as usize];
             if l == NONE {

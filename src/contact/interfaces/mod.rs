@@ -11,7 +11,14 @@
 //! the trait and never names a type.
 //!
 //! Adding a type (say TYPE11): one file here implementing [`InterfaceType`]
-//! on the type's own options struct, and one line in `registry!`.
+//! on the type's own options struct, and one line in `registry!`
+//! (`11 => type11::Type11`). The runtime lays out node-to-segment pairs
+//! today (`contact::pairs`, `setup::Pass`); the first type of another
+//! [`CandidateKind`] also teaches it that kind's sides once.
+//!
+//! Restart: a type's pair memory lives in the records `contact::restart`
+//! writes for every type (`NodeState`, the candidates' `PairState`, the walk
+//! pair); none of today's types has state of its own beyond them.
 //!
 //! TYPE2 (`type2.rs`, run by `contact::tied`) is not in the registry: it is
 //! a kinematic condition, not a penalty force. It has no candidates and no
@@ -27,9 +34,6 @@
 //! the main side takes −N_i times it (EQ. 8.6.6.4–6).
 
 pub mod type2;
-pub mod type3;
-pub mod type5;
-pub mod type7;
 
 use super::friction::FrictionLaw;
 use super::gap::{GapRule, InitialPenetration};
@@ -303,16 +307,19 @@ pub trait InterfaceType: Sync {
     ) -> (InitialPenetration, f64);
 }
 
-/// The registry: one line per interface type, `number => Variant(type)`.
-/// It makes [`TypeOptions`] (a serialisable enum with one variant per type,
-/// holding the type's options), its dispatch to the type's [`InterfaceType`],
-/// the look-up by type number and the conversion from the deck's card.
+/// The registry: one line per interface type, `number => file::Type`.
+/// It declares the type's file (module), and makes [`TypeOptions`] (a
+/// serialisable enum with one variant per type, holding the type's options),
+/// its dispatch to the type's [`InterfaceType`], the look-up by type number
+/// and the conversion from the deck's card.
 macro_rules! registry {
-    ($($number:literal => $variant:ident($ty:ty)),* $(,)?) => {
+    ($($number:literal => $file:ident :: $variant:ident),* $(,)?) => {
+        $(pub mod $file;)*
+
         /// The options of one registered interface type.
         #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
         pub enum TypeOptions {
-            $($variant($ty)),*
+            $($variant($file::$variant)),*
         }
 
         impl TypeOptions {
@@ -326,7 +333,7 @@ macro_rules! registry {
             /// The type of number `n` with its default options.
             pub fn by_number(n: u32) -> Option<TypeOptions> {
                 match n {
-                    $($number => Some(TypeOptions::$variant(<$ty>::default())),)*
+                    $($number => Some(TypeOptions::$variant(<$file::$variant>::default())),)*
                     _ => None,
                 }
             }
@@ -337,7 +344,7 @@ macro_rules! registry {
             /// The type of the deck's card, with the common options; `None`
             /// for a card of a type the engine does not compute.
             pub fn from_card(kind: &InterfaceKind) -> Option<(TypeOptions, CardCommon)> {
-                $(if let Some((t, c)) = <$ty as InterfaceType>::from_card(kind) {
+                $(if let Some((t, c)) = <$file::$variant as InterfaceType>::from_card(kind) {
                     return Some((TypeOptions::$variant(t), c));
                 })*
                 None
@@ -347,9 +354,9 @@ macro_rules! registry {
 }
 
 registry! {
-    3 => Type3(type3::Type3),
-    5 => Type5(type5::Type5),
-    7 => Type7(type7::Type7),
+    3 => type3::Type3,
+    5 => type5::Type5,
+    7 => type7::Type7,
 }
 
 #[cfg(test)]
