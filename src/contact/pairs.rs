@@ -3,12 +3,14 @@
 //! its walk reaches), the type's pair kernel on each, and each pair's
 //! contributions to its nodes, keyed for the fixed summation order
 //! (`key::SumKey`). Nodes are computed in parallel and gathered in order.
+//! The loops are compiled for each registered type
+//! (`interfaces::TypeOptions::visit`), so the type's kernel inlines.
 
 use super::exchange::Contribution;
 use super::geometry::{self as geo, V3};
 use super::interfaces::{
     CandidateSearch, InterfaceType, NodeState, PairContext, PairForce, PairNodes, PairOutcome,
-    PairState, Side,
+    PairState, Side, TypeVisitor,
 };
 use super::key::{SumKey, SECONDARY_CORNER};
 use super::setup::{Interface, Pass, NONE};
@@ -26,7 +28,6 @@ struct NodeOut {
 
 /// What every node of one pass reads.
 struct PassView<'a> {
-    ty: &'a dyn InterfaceType,
     it: &'a Interface,
     p: &'a Pass,
     ii: usize,
@@ -75,7 +76,6 @@ impl ContactSystem {
             let ibc = (it.ibc[0] as u8) | ((it.ibc[1] as u8) << 1) | ((it.ibc[2] as u8) << 2);
             for (pi, p) in it.passes.iter().enumerate() {
                 let view = PassView {
-                    ty: it.ty(),
                     it,
                     p,
                     ii,
@@ -89,7 +89,10 @@ impl ContactSystem {
                     ibc,
                     dt,
                 };
-                let results = pass_pairs(&view, &mut self.runs[ii][pi]);
+                let results = it.options.visit(PassPairs {
+                    v: &view,
+                    run: &mut self.runs[ii][pi],
+                });
                 let acc = &mut self.sums[ii];
                 for r in results {
                     out.extend(r.contribs);
@@ -111,8 +114,21 @@ impl ContactSystem {
     }
 }
 
+/// One pass's pairs, for the pass's interface type.
+struct PassPairs<'a, 'b> {
+    v: &'b PassView<'a>,
+    run: &'b mut PassRun,
+}
+
+impl TypeVisitor for PassPairs<'_, '_> {
+    type Out = Vec<NodeOut>;
+    fn visit<T: InterfaceType>(self, ty: &T) -> Vec<NodeOut> {
+        pass_pairs(ty, self.v, self.run)
+    }
+}
+
 /// The pairs of every node this rank owns in one pass, in node order.
-fn pass_pairs(v: &PassView, run: &mut PassRun) -> Vec<NodeOut> {
+fn pass_pairs<T: InterfaceType>(ty: &T, v: &PassView, run: &mut PassRun) -> Vec<NodeOut> {
     let PassRun {
         mine,
         nodes,
@@ -143,23 +159,30 @@ fn pass_pairs(v: &PassView, run: &mut PassRun) -> Vec<NodeOut> {
                 walk_pair,
             };
             let segs = &cand.segs[cand.ptr[j]..cand.ptr[j + 1]];
-            node_pairs(v, removal, k as usize, segs, mem)
+            node_pairs(ty, v, removal, k as usize, segs, mem)
         })
         .collect()
 }
 
 /// The pairs of secondary node k (index into the pass's `sec`): its sorted
 /// candidates `segs`, or the segment its walk reaches.
-fn node_pairs(v: &PassView, removal: &Removal, k: usize, segs: &[u32], mem: NodeMemory) -> NodeOut {
+fn node_pairs<T: InterfaceType>(
+    ty: &T,
+    v: &PassView,
+    removal: &Removal,
+    k: usize,
+    segs: &[u32],
+    mem: NodeMemory,
+) -> NodeOut {
     let mut out = NodeOut::default();
     let ns = mem.ns;
     if ns.off {
         return out;
     }
-    match v.ty.search() {
+    match ty.search() {
         CandidateSearch::Sort => {
             for (q, &m) in segs.iter().enumerate() {
-                if !one_pair(v, k, m, ns, &mut mem.pairs[q], &mut out) {
+                if !one_pair(ty, v, k, m, ns, &mut mem.pairs[q], &mut out) {
                     return NodeOut::default();
                 }
             }
@@ -178,7 +201,7 @@ fn node_pairs(v: &PassView, removal: &Removal, k: usize, segs: &[u32], mem: Node
                 }
             };
             let seg_on = |m: u32| !removal.seg_off.get(m as usize).copied().unwrap_or(false);
-            let Some(m) = v.ty.walk(v.it, v.p, ns.last_seg, xs, &x_of, &seg_on) else {
+            let Some(m) = ty.walk(v.it, v.p, ns.last_seg, xs, &x_of, &seg_on) else {
                 return out;
             };
             ns.last_seg = m;
@@ -186,7 +209,7 @@ fn node_pairs(v: &PassView, removal: &Removal, k: usize, segs: &[u32], mem: Node
             if wp.0 != m {
                 *wp = (m, PairState::default());
             }
-            if !one_pair(v, k, m, ns, &mut wp.1, &mut out) {
+            if !one_pair(ty, v, k, m, ns, &mut wp.1, &mut out) {
                 return NodeOut::default();
             }
         }
@@ -196,7 +219,8 @@ fn node_pairs(v: &PassView, removal: &Removal, k: usize, segs: &[u32], mem: Node
 
 /// Pair (secondary node k, segment m) through the type's kernel, its
 /// contributions added to `out`; false when the node leaves the interface.
-fn one_pair(
+fn one_pair<T: InterfaceType>(
+    ty: &T,
     v: &PassView,
     k: usize,
     m: u32,
@@ -227,7 +251,7 @@ fn one_pair(
         vm: &vm,
         dt: v.dt,
     };
-    let f = match v.ty.pair(&c, ns, st) {
+    let f = match ty.pair(&c, ns, st) {
         PairOutcome::Free => return true,
         PairOutcome::NodeOff => return false,
         PairOutcome::Force(f) => f,
@@ -239,7 +263,7 @@ fn one_pair(
     let key = SumKey::pair(v.ii, v.pi, v.nodes_g[s as usize], m);
     let vrel = geo::sub(c.vs, geo::interpolate(&f.shape, &vm));
     emit(out, key, &nodes, &f, v.ibc, vrel);
-    if let Some(d) = v.ty.kinematic_step(&f) {
+    if let Some(d) = ty.kinematic_step(&f) {
         if d < out.step.map_or(f64::INFINITY, |b| b.0) {
             out.step = Some((d, v.it.id));
         }

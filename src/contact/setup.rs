@@ -164,6 +164,7 @@ impl Interface {
     }
 
     /// The gap of pair (secondary k, segment m) of pass `p` (card eq. (8)–(10)).
+    #[inline]
     pub fn pair_gap(&self, p: &Pass, k: usize, m: usize) -> f64 {
         self.gap
             .pair_gap(p.sec_gap[k], p.seg_gap[m], p.sec_lmin[k], p.seg_lmin[m])

@@ -307,6 +307,12 @@ pub trait InterfaceType: Sync {
     ) -> (InitialPenetration, f64);
 }
 
+/// Work done on a type known at compile time ([`TypeOptions::visit`]).
+pub trait TypeVisitor {
+    type Out;
+    fn visit<T: InterfaceType>(self, t: &T) -> Self::Out;
+}
+
 /// The registry: one line per interface type, `number => file::Type`.
 /// It declares the type's file (module), and makes [`TypeOptions`] (a
 /// serialisable enum with one variant per type, holding the type's options),
@@ -327,6 +333,15 @@ macro_rules! registry {
             pub fn implementation(&self) -> &dyn InterfaceType {
                 match self {
                     $(TypeOptions::$variant(t) => t),*
+                }
+            }
+
+            /// `v.visit(t)` on the type `t`, statically dispatched (the
+            /// per-pair loops are compiled for each type, so its kernel
+            /// inlines).
+            pub fn visit<V: TypeVisitor>(&self, v: V) -> V::Out {
+                match self {
+                    $(TypeOptions::$variant(t) => v.visit(t)),*
                 }
             }
 

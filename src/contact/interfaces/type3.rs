@@ -116,6 +116,7 @@ impl InterfaceType for Type3 {
         2.0 * max_diag
     }
 
+    #[inline]
     fn pair(&self, c: &PairContext, _ns: &mut NodeState, st: &mut PairState) -> PairOutcome {
         let k = self.pair_stiffness(c.it, c.p, c.k, c.m as usize);
         type5::kernel(c, k, st)

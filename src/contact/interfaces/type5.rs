@@ -95,6 +95,7 @@ impl InterfaceType for Type5 {
         2.0 * max_diag
     }
 
+    #[inline]
     fn pair(&self, c: &PairContext, _ns: &mut NodeState, st: &mut PairState) -> PairOutcome {
         let k = self.pair_stiffness(c.it, c.p, c.k, c.m as usize);
         kernel(c, k, st)

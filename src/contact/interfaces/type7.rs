@@ -163,6 +163,7 @@ impl InterfaceType for Type7 {
 
     /// The pair's gap (Inacti 5, 6: the corrected one, which follows the node
     /// back out), the penalty or tied force, and dtmin / ITIED.
+    #[inline]
     fn pair(&self, c: &PairContext, ns: &mut NodeState, st: &mut PairState) -> PairOutcome {
         let (it, p, k, m) = (c.it, c.p, c.k, c.m as usize);
         let tri = p.is_tri(m);
