@@ -10,11 +10,13 @@
 //!   nodes inside that node's box, so each node–segment pair is found on the
 //!   one rank that owns the secondary node.
 //! - **Forces.** A pair's forces go to every rank that holds the node (its
-//!   holders), keyed by (interface, pass, secondary node, segment, corner);
+//!   holders), keyed by (interface, pass, secondary entity, main entity,
+//!   corner) ([`SumKey`]);
 //!   each rank sums a node's contributions in key order, so the sum is the
 //!   same bits on every rank and for any number of ranks.
 
 use super::geometry::V3;
+use super::key::SumKey;
 use super::search::Aabb;
 use super::setup::ContactSetup;
 use crate::parallel::World;
@@ -132,9 +134,8 @@ impl GhostPlan {
 pub struct Contribution {
     /// The node (cnode).
     pub c: u32,
-    /// Sort key: (interface, pass, secondary node global id) and (segment, corner).
-    pub hi: u64,
-    pub lo: u64,
+    /// Sort key: (interface, pass, secondary entity, main entity, corner).
+    pub key: SumKey,
     pub f: V3,
     /// Stiffness added to the node (nodal time step).
     pub k: f64,
@@ -143,17 +144,12 @@ pub struct Contribution {
 }
 
 impl Contribution {
-    pub fn key(iface: usize, pass: usize, sec_global: u32, seg: u32, corner: u8) -> (u64, u64) {
-        (
-            ((iface as u64) << 40) | ((pass as u64) << 32) | sec_global as u64,
-            ((seg as u64) << 8) | corner as u64,
-        )
-    }
     fn encode(&self, out: &mut Vec<u64>) {
+        let [hi, lo] = self.key.to_words();
         out.extend_from_slice(&[
             self.c as u64,
-            self.hi,
-            self.lo,
+            hi,
+            lo,
             self.f[0].to_bits(),
             self.f[1].to_bits(),
             self.f[2].to_bits(),
@@ -164,8 +160,7 @@ impl Contribution {
     fn decode(b: &[u64]) -> Contribution {
         Contribution {
             c: b[0] as u32,
-            hi: b[1],
-            lo: b[2],
+            key: SumKey::from_words([b[1], b[2]]),
             f: [
                 f64::from_bits(b[3]),
                 f64::from_bits(b[4]),
@@ -195,6 +190,6 @@ pub fn route(world: &World, setup: &ContactSetup, out: Vec<Contribution>) -> Vec
             .flat_map(|b| b.chunks_exact(8).map(Contribution::decode))
             .collect()
     };
-    got.sort_unstable_by(|a, b| (a.c, a.hi, a.lo).cmp(&(b.c, b.hi, b.lo)));
+    got.sort_unstable_by_key(|a| (a.c, a.key));
     got
 }

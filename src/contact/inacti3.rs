@@ -28,8 +28,9 @@
 //! reference geometry, masses, gaps and the output mesh all start from them.
 
 use super::geometry::{self as geo, V3};
+use super::interfaces::TypeOptions;
 use super::search::{self, Aabb};
-use super::setup::{self, Law};
+use super::setup;
 use crate::model::InterfaceKind;
 use crate::model::Model;
 
@@ -133,7 +134,7 @@ fn deepest(
         if seg.contains(&s) {
             continue;
         }
-        if it.irem_gap {
+        if it.ty().removes_initially_close() {
             let g = it.gap.gapmin;
             if seg
                 .iter()
@@ -179,7 +180,10 @@ pub fn depenetrate(m: &Model) -> Result<Depenetrated, String> {
     let mut x: Vec<V3> = cs.x0.clone();
     let mut reports = Vec::new();
     for it in &cs.interfaces {
-        if it.law != Law::Type7 || it.type_number != 7 || it.inacti != 3 {
+        let TypeOptions::Type7(t7) = &it.options else {
+            continue;
+        };
+        if it.inacti != 3 {
             continue;
         }
         let mut moved_by: std::collections::BTreeMap<u32, V3> = Default::default();
@@ -198,7 +202,7 @@ pub fn depenetrate(m: &Model) -> Result<Depenetrated, String> {
             };
             // Fpenmax, on the coordinates as they are before this interface moves anything.
             let mut skip = vec![false; p.sec.len()];
-            if it.fpenmax > 0.0 {
+            if t7.fpenmax > 0.0 {
                 let cand = candidates_on(&x);
                 for (k, sk) in skip.iter_mut().enumerate() {
                     let c = &cand.segs[cand.ptr[k]..cand.ptr[k + 1]];
@@ -206,7 +210,7 @@ pub fn depenetrate(m: &Model) -> Result<Depenetrated, String> {
                         if let Some((pen, g, _)) =
                             deepest(it, p, k, std::slice::from_ref(&mi), &x, &x0)
                         {
-                            if pen >= it.fpenmax * g {
+                            if pen >= t7.fpenmax * g {
                                 *sk = true;
                                 fpen.insert(p.sec[k]);
                                 break;

@@ -1,14 +1,17 @@
 //! Contact interfaces, laid out as Tribol does: `search` finds candidate
 //! pairs, `geometry` measures them, `stiffness`/`gap`/`friction` turn a
-//! measured gap into a force, `interfaces` composes them per interface type,
-//! and `exchange` carries ghosts and forces between ranks.
+//! measured gap into a force, `interfaces` composes them per interface type
+//! (one file per type behind the `interfaces::InterfaceType` trait and its
+//! registry), and `exchange` carries ghosts and forces between ranks, summed
+//! in the order of `key::SumKey`.
 //!
 //! [`ContactSystem`] is one rank's runtime: it keeps the positions and
 //! velocities of the contact nodes it holds or receives as ghosts, rebuilds
 //! candidate lists when the largest motion since the last sort exceeds half
 //! the sorting margin (decided globally), computes the pairs of the secondary
-//! nodes it owns, and returns each node's contact force summed in a fixed
-//! global order.
+//! nodes it owns (`pairs`, through each interface's type), and returns each
+//! node's contact force summed in a fixed global order. It never names an
+//! interface type.
 
 pub mod exchange;
 pub mod friction;
@@ -16,6 +19,8 @@ pub mod gap;
 pub mod geometry;
 pub mod inacti3;
 pub mod interfaces;
+pub mod key;
+mod pairs;
 pub mod restart;
 pub mod search;
 pub mod setup;
@@ -24,26 +29,11 @@ pub mod tied;
 
 use crate::domain::Subdomain;
 use crate::parallel::World;
-use exchange::{Contribution, GhostPlan};
+use exchange::GhostPlan;
 use geometry::{self as geo, V3};
-use interfaces::{type5, type7, PairForce, PairState};
-use rayon::prelude::*;
+use interfaces::{CandidateSearch, NodeState, PairState};
 use search::{Aabb, Candidates};
-use setup::{ContactSetup, Law, NONE};
-
-/// Per secondary node memory (owned secondary nodes of a pass).
-#[derive(Clone, Debug, Default, serde::Serialize, serde::Deserialize)]
-struct NodeState {
-    /// Removed from the interface (Inacti = 1, Fpenmax, dtmin with ITIED = 0).
-    off: bool,
-    /// TYPE5 walk: the closest segment at the last cycle.
-    last_seg: u32,
-    /// Inacti = 2: segments deactivated for this node.
-    off_segs: Vec<u32>,
-    /// Inacti = 5, 6: (segment, corrected gap, clearance the node keeps below
-    /// it: 0 with Inacti = 5, 5% of the initial distance with 6).
-    gap0: Vec<(u32, f64, f64)>,
-}
+use setup::{ContactSetup, NONE};
 
 /// Idel on one pass, replicated on every rank (every rank learns the same
 /// deleted elements at the same cycle, so every rank removes the same
@@ -81,10 +71,11 @@ struct PassRun {
     /// Indices into `Pass::sec` of the secondary nodes this rank owns.
     mine: Vec<u32>,
     nodes: Vec<NodeState>,
+    /// Sorting types: the candidate segments of each node and their pair memory.
     cand: Candidates,
     state: Vec<PairState>,
-    /// TYPE5: one pair state per node (its current segment).
-    state5: Vec<(u32, PairState)>,
+    /// Walk types: one pair per node (its current segment and memory).
+    walk_pair: Vec<(u32, PairState)>,
     /// Idel: removed segments and nodes (empty vectors when Idel is off).
     removal: Removal,
 }
@@ -262,7 +253,7 @@ impl ContactSystem {
                                 segs: Vec::new(),
                             },
                             state: Vec::new(),
-                            state5: vec![(NONE, PairState::default()); n],
+                            walk_pair: vec![(NONE, PairState::default()); n],
                             removal,
                         }
                     })
@@ -520,7 +511,7 @@ impl ContactSystem {
         touched.dedup();
         for (ii, pi) in touched {
             let run = &mut self.runs[ii][pi];
-            // TYPE7: drop the removed pairs and their memory.
+            // Sorted candidates: drop the removed pairs and their memory.
             if run.cand.ptr.len() == run.mine.len() + 1 {
                 let mut cand = Candidates {
                     ptr: vec![0],
@@ -546,10 +537,10 @@ impl ContactSystem {
                     run.state = state;
                 }
             }
-            // TYPE5: a node whose segment left starts a fresh pair.
-            for st5 in run.state5.iter_mut() {
-                if st5.0 != NONE && run.removal.seg_off[st5.0 as usize] {
-                    *st5 = (NONE, PairState::default());
+            // Walk types: a node whose segment left starts a fresh pair.
+            for wp in run.walk_pair.iter_mut() {
+                if wp.0 != NONE && run.removal.seg_off[wp.0 as usize] {
+                    *wp = (NONE, PairState::default());
                 }
             }
         }
@@ -592,11 +583,7 @@ impl ContactSystem {
                 if b.is_empty() {
                     return b;
                 }
-                let walk = if it.law == Law::Type5 {
-                    2.0 * diag
-                } else {
-                    0.0
-                };
+                let walk = it.ty().walk_reach(diag);
                 b.grown(it.max_gap + 2.0 * it.margin + diag + walk)
             })
             .collect();
@@ -617,12 +604,13 @@ impl ContactSystem {
         seg_values(seg, &self.avail, &self.cx)
     }
 
-    /// Broad phase for every TYPE7 pass: candidates within gap + margin, segments
-    /// connected to the node excluded (and, with Irem_gap = 2, segments with a node
-    /// initially closer than 2·Gap); pair memory kept for pairs that remain.
+    /// Broad phase for every pass of a sorting type: candidates within gap +
+    /// margin, segments connected to the node excluded (and, with Irem_gap =
+    /// 2, segments with a node initially closer than 2·Gap); pair memory kept
+    /// for pairs that remain.
     fn search(&mut self) {
         for (ii, it) in self.setup.interfaces.iter().enumerate() {
-            if it.law != Law::Type7 {
+            if it.ty().search() != CandidateSearch::Sort {
                 continue;
             }
             for (pi, p) in it.passes.iter().enumerate() {
@@ -662,7 +650,7 @@ impl ContactSystem {
                         if seg.contains(&s) {
                             continue;
                         }
-                        if it.irem_gap {
+                        if it.ty().removes_initially_close() {
                             let g = it.gap.gapmin;
                             if seg.iter().any(|&c| {
                                 geo::norm(geo::sub(x0[c as usize], x0[s as usize])) < 2.0 * g
@@ -707,9 +695,11 @@ impl ContactSystem {
                     let k = run.mine[j] as usize;
                     let s = p.sec[k];
                     let xs = self.cx[s as usize];
-                    let segs: Vec<u32> = match it.law {
-                        Law::Type7 => run.cand.segs[run.cand.ptr[j]..run.cand.ptr[j + 1]].to_vec(),
-                        Law::Type5 => {
+                    let segs: Vec<u32> = match it.ty().search() {
+                        CandidateSearch::Sort => {
+                            run.cand.segs[run.cand.ptr[j]..run.cand.ptr[j + 1]].to_vec()
+                        }
+                        CandidateSearch::Walk => {
                             let m = run.nodes[j].last_seg;
                             if m == NONE {
                                 vec![]
@@ -724,14 +714,9 @@ impl ContactSystem {
                             continue;
                         };
                         let tri = p.is_tri(m as usize);
-                        let g = pair_gap(it, p, k, m as usize);
-                        let p0 = match it.law {
-                            Law::Type7 => g - geo::project(xs, &xm, tri).dist,
-                            Law::Type5 => type5::penetration(xs, &xm, tri, g)
-                                .map(|r| r.0)
-                                .unwrap_or(0.0),
-                        };
-                        match gap::initial_penetration(it.inacti, it.fpenmax, p0, g) {
+                        let g = it.pair_gap(p, k, m as usize);
+                        let (decision, p0) = it.ty().initial_penetration(it, xs, &xm, tri, g);
+                        match decision {
                             gap::InitialPenetration::DeactivateNode => run.nodes[j].off = true,
                             gap::InitialPenetration::DeactivateSegment => {
                                 run.nodes[j].off_segs.push(m)
@@ -749,287 +734,6 @@ impl ContactSystem {
             }
         }
     }
-
-    /// Every owned pair's force, as contributions, and the smallest kinematic step.
-    fn pairs(&mut self, mass: &[f64], t: f64, dt: f64) -> (Vec<Contribution>, Option<(f64, u64)>) {
-        let mut out: Vec<Contribution> = Vec::new();
-        let mut best: Option<(f64, u64)> = None;
-        for s in self.sums.iter_mut() {
-            *s = InterfaceSums {
-                energy: s.energy,
-                ..Default::default()
-            };
-        }
-        let cx = &self.cx;
-        let cv = &self.cv;
-        let avail = &self.avail;
-        let local = &self.local;
-        let nodes_g = &self.setup.nodes;
-        for (ii, it) in self.setup.interfaces.iter().enumerate() {
-            if t < it.tstart || t > it.tstop {
-                continue;
-            }
-            let ibc = (it.ibc[0] as u8) | ((it.ibc[1] as u8) << 1) | ((it.ibc[2] as u8) << 2);
-            for (pi, p) in it.passes.iter().enumerate() {
-                let run = &mut self.runs[ii][pi];
-                let seg_xv = |m: u32| -> Option<([V3; 4], [V3; 4])> {
-                    let seg = &p.segs[m as usize];
-                    Some((seg_values(seg, avail, cx)?, seg_values(seg, avail, cv)?))
-                };
-                // Per node: its pairs' forces, computed in parallel, gathered in order.
-                let results: Vec<(Vec<Contribution>, Option<(f64, u64)>, InterfaceSums)> = match it
-                    .law
-                {
-                    Law::Type7 => {
-                        let cand = &run.cand;
-                        let nodes = &mut run.nodes;
-                        // Split the pair memory by node so each node owns its slice.
-                        let mut slices: Vec<&mut [PairState]> = Vec::with_capacity(run.mine.len());
-                        let mut rest: &mut [PairState] = &mut run.state;
-                        for j in 0..run.mine.len() {
-                            let (a, b) = rest.split_at_mut(cand.ptr[j + 1] - cand.ptr[j]);
-                            slices.push(a);
-                            rest = b;
-                        }
-                        run.mine
-                            .par_iter()
-                            .zip(nodes.par_iter_mut())
-                            .zip(slices.into_par_iter())
-                            .enumerate()
-                            .map(|(j, ((&k, ns), states))| {
-                                let k = k as usize;
-                                let s = p.sec[k];
-                                let ms = mass[local[s as usize] as usize];
-                                let mut contribs = Vec::new();
-                                let mut step: Option<(f64, u64)> = None;
-                                let mut sums = InterfaceSums::default();
-                                if ns.off {
-                                    return (contribs, step, sums);
-                                }
-                                let xs = cx[s as usize];
-                                let vs = cv[s as usize];
-                                for (q, &m) in
-                                    cand.segs[cand.ptr[j]..cand.ptr[j + 1]].iter().enumerate()
-                                {
-                                    if ns.off_segs.binary_search(&m).is_ok() {
-                                        continue;
-                                    }
-                                    let Some((xm, vm)) = seg_xv(m) else { continue };
-                                    let tri = p.is_tri(m as usize);
-                                    let nominal = pair_gap(it, p, k, m as usize);
-                                    let gi = ns.gap0.binary_search_by_key(&m, |e| e.0);
-                                    let g = match gi {
-                                        Ok(i) => ns.gap0[i].1,
-                                        Err(_) => nominal,
-                                    };
-                                    let k0 = pair_stiffness(it, p, k, m as usize);
-                                    let inp = type7::Pair {
-                                        xs,
-                                        vs,
-                                        ms,
-                                        xm: &xm,
-                                        vm: &vm,
-                                        tri,
-                                        k0,
-                                        gap: g,
-                                        viss: it.viss,
-                                        friction: &it.friction,
-                                        area: p.seg_area[m as usize],
-                                        dt,
-                                    };
-                                    let st = &mut states[q];
-                                    let f = if st.tie.is_some() {
-                                        type7::tied(&inp, st, it.itied)
-                                    } else {
-                                        type7::pair(&inp, st)
-                                    };
-                                    // Inacti 5/6: the corrected gap follows the node back out.
-                                    if let Ok(i) = gi {
-                                        let d = geo::project(xs, &xm, tri).dist;
-                                        let (_, g0, clear) = ns.gap0[i];
-                                        ns.gap0[i].1 = gap::relax_gap(g0, nominal, d, clear);
-                                    }
-                                    let Some(f) = f else { continue };
-                                    // dtmin / ITIED.
-                                    if it.dtmin > 0.0 && st.tie.is_none() {
-                                        let dtp = f.dt_kin.min((2.0 * ms / f.kt).sqrt());
-                                        if dtp < it.dtmin {
-                                            if it.itied == 0 {
-                                                ns.off = true;
-                                                return (
-                                                    Vec::new(),
-                                                    None,
-                                                    InterfaceSums::default(),
-                                                );
-                                            }
-                                            st.tie = Some((f.shape, geo::sub(xs, f.point)));
-                                        }
-                                    }
-                                    emit(
-                                        &mut contribs,
-                                        &mut sums,
-                                        ii,
-                                        pi,
-                                        nodes_g[s as usize],
-                                        s,
-                                        m,
-                                        &p.segs[m as usize],
-                                        &f,
-                                        ibc,
-                                        geo::sub(vs, geo::interpolate(&f.shape, &vm)),
-                                    );
-                                    if f.dt_kin < step.map_or(f64::INFINITY, |b| b.0) {
-                                        step = Some((f.dt_kin, it.id));
-                                    }
-                                }
-                                (contribs, step, sums)
-                            })
-                            .collect()
-                    }
-                    Law::Type5 => {
-                        let walk_reach = it.max_gap + 2.0 * it.margin + p.max_diag;
-                        let removal = &run.removal;
-                        let seg_on =
-                            |m: u32| !removal.seg_off.get(m as usize).copied().unwrap_or(false);
-                        run.mine
-                            .par_iter()
-                            .zip(run.nodes.par_iter_mut())
-                            .zip(run.state5.par_iter_mut())
-                            .map(|((&k, ns), st5)| {
-                                let k = k as usize;
-                                let s = p.sec[k];
-                                let mut contribs = Vec::new();
-                                let mut sums = InterfaceSums::default();
-                                let node_off = removal.sec_off.get(k).copied().unwrap_or(false);
-                                if ns.off || node_off || ns.last_seg == NONE {
-                                    return (contribs, None, sums);
-                                }
-                                let xs = cx[s as usize];
-                                let Some(m) = type5_walk(
-                                    p,
-                                    ns.last_seg,
-                                    xs,
-                                    walk_reach,
-                                    &|c| {
-                                        if avail[c as usize] {
-                                            Some(cx[c as usize])
-                                        } else {
-                                            None
-                                        }
-                                    },
-                                    &seg_on,
-                                ) else {
-                                    return (contribs, None, sums);
-                                };
-                                ns.last_seg = m;
-                                if st5.0 != m {
-                                    *st5 = (m, PairState::default());
-                                }
-                                if ns.off_segs.binary_search(&m).is_ok() {
-                                    return (contribs, None, sums);
-                                }
-                                let Some((xm, vm)) = seg_xv(m) else {
-                                    return (contribs, None, sums);
-                                };
-                                let inp = type5::Pair {
-                                    xs,
-                                    vs: cv[s as usize],
-                                    xm: &xm,
-                                    vm: &vm,
-                                    tri: p.is_tri(m as usize),
-                                    k: pair_stiffness(it, p, k, m as usize),
-                                    gap: it.gap.gapmin,
-                                    friction: &it.friction,
-                                    area: p.seg_area[m as usize],
-                                    dt,
-                                };
-                                if let Some(f) = type5::pair(&inp, &mut st5.1) {
-                                    emit(
-                                        &mut contribs,
-                                        &mut sums,
-                                        ii,
-                                        pi,
-                                        nodes_g[s as usize],
-                                        s,
-                                        m,
-                                        &p.segs[m as usize],
-                                        &f,
-                                        ibc,
-                                        geo::sub(cv[s as usize], geo::interpolate(&f.shape, &vm)),
-                                    );
-                                }
-                                (contribs, None, sums)
-                            })
-                            .collect()
-                    }
-                };
-                for (c, st, su) in results {
-                    out.extend(c);
-                    if let Some(st) = st {
-                        if best.is_none_or(|b| st < b) {
-                            best = Some(st);
-                        }
-                    }
-                    let acc = &mut self.sums[ii];
-                    for k in 0..3 {
-                        acc.f_normal[k] += su.f_normal[k];
-                        acc.f_tangent[k] += su.f_tangent[k];
-                    }
-                    acc.pairs += su.pairs;
-                    acc.energy += su.energy * dt;
-                }
-            }
-        }
-        (out, best)
-    }
-}
-
-/// Contributions of one pair: +F on the secondary node, −N_i·F on the segment
-/// nodes (EQ. 8.6.6.4–6), and its tangent stiffness on each.
-#[allow(clippy::too_many_arguments)]
-fn emit(
-    out: &mut Vec<Contribution>,
-    sums: &mut InterfaceSums,
-    iface: usize,
-    pass: usize,
-    sec_global: u32,
-    s: u32,
-    m: u32,
-    seg: &[u32; 4],
-    f: &PairForce,
-    ibc: u8,
-    vrel: V3,
-) {
-    let (hi, lo) = Contribution::key(iface, pass, sec_global, m, 4);
-    out.push(Contribution {
-        c: s,
-        hi,
-        lo,
-        f: f.fs,
-        k: f.kt,
-        ibc: if f.f_n > 0.0 { ibc } else { 0 },
-    });
-    let n = if seg[3] == seg[2] { 3 } else { 4 };
-    for i in 0..n {
-        if f.shape[i] == 0.0 {
-            continue;
-        }
-        let (hi, lo) = Contribution::key(iface, pass, sec_global, m, i as u8);
-        out.push(Contribution {
-            c: seg[i],
-            hi,
-            lo,
-            f: geo::scale(f.fs, -f.shape[i]),
-            k: f.kt * f.shape[i],
-            ibc: 0,
-        });
-    }
-    for k in 0..3 {
-        sums.f_normal[k] += f.dir[k] * f.f_n;
-        sums.f_tangent[k] += f.f_t[k];
-    }
-    sums.pairs += 1;
-    sums.energy -= geo::dot(f.fs, vrel);
 }
 
 /// A segment's nodal values (positions or velocities), or `None` when one of
@@ -1040,81 +744,4 @@ fn seg_values(seg: &[u32; 4], avail: &[bool], a: &[V3]) -> Option<[V3; 4]> {
     } else {
         None
     }
-}
-
-/// The gap of pair (secondary k, segment m) (card eq. (8)–(10)).
-fn pair_gap(it: &setup::Interface, p: &setup::Pass, k: usize, m: usize) -> f64 {
-    it.gap
-        .pair_gap(p.sec_gap[k], p.seg_gap[m], p.sec_lmin[k], p.seg_lmin[m])
-}
-
-/// The stiffness of pair (secondary k, segment m): TYPE7 by Istf (card
-/// eq. (1)–(3)), TYPE5 s·Km (§8.6.3), TYPE3 s·K1·K2/(K1+K2) (EQ. 8.5.3.1).
-fn pair_stiffness(it: &setup::Interface, p: &setup::Pass, k: usize, m: usize) -> f64 {
-    match (it.law, it.type_number) {
-        (Law::Type7, _) => stiffness::type7_pair(
-            it.istf,
-            it.stfac,
-            it.stfac * p.seg_k[m],
-            p.sec_k[k],
-            it.stmin,
-            it.stmax,
-        ),
-        (Law::Type5, 3) => it.stfac * stiffness::series(p.sec_k[k], p.seg_k[m]),
-        (Law::Type5, _) => it.stfac * p.seg_k[m],
-    }
-}
-
-/// TYPE5's engine search (§8.6.6.1): from the previous closest segment S0,
-/// the node M1 of S0 closest to N; the segments around M1; the closest main
-/// node M2 among their nodes; the closest of the segments around M2. The walk
-/// is only taken while N is within `reach` of S0's nodes (farther nodes keep
-/// their segment), so it only ever reads nodes every rank can see.
-/// Segments removed by Idel (`seg_on` false) are never chosen, nor walked through.
-fn type5_walk(
-    p: &setup::Pass,
-    s0: u32,
-    xs: V3,
-    reach: f64,
-    x_of: &dyn Fn(u32) -> Option<V3>,
-    seg_on: &dyn Fn(u32) -> bool,
-) -> Option<u32> {
-    let seg0 = p.segs[s0 as usize];
-    let mut m1: Option<(f64, u32)> = None;
-    for &c in &seg0 {
-        let xc = x_of(c)?;
-        let d = geo::norm(geo::sub(xc, xs));
-        if d > reach {
-            return None;
-        }
-        if m1.is_none_or(|b| d < b.0 || (d == b.0 && c < b.1)) {
-            m1 = Some((d, c));
-        }
-    }
-    let (_, m1) = m1?;
-    let mut m2: Option<(f64, u32)> = None;
-    for &sg in p.segments_around(m1) {
-        if !seg_on(sg) {
-            continue;
-        }
-        for &c in &p.segs[sg as usize] {
-            let xc = x_of(c)?;
-            let d = geo::norm(geo::sub(xc, xs));
-            if m2.is_none_or(|b| d < b.0 || (d == b.0 && c < b.1)) {
-                m2 = Some((d, c));
-            }
-        }
-    }
-    let (_, m2) = m2?;
-    setup::closest_segment(p.segments_around(m2), xs, |sg| {
-        if !seg_on(sg) {
-            return None;
-        }
-        let seg = p.segs[sg as usize];
-        let mut x = [[0.0; 3]; 4];
-        for i in 0..4 {
-            x[i] = x_of(seg[i])?;
-        }
-        Some(x)
-    })
 }

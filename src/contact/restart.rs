@@ -11,10 +11,10 @@
 //!   totals, and the per-interface energy (summed over ranks);
 //! - one record per owned secondary node of each pass, keyed by
 //!   `interface << 40 | pass << 32 | global node`: its memory (`NodeState`:
-//!   Inacti off / deactivated segments / corrected gaps, TYPE5's last
+//!   Inacti off / deactivated segments / corrected gaps, the walk's last
 //!   segment), its candidate segments (global segment indices of the pass,
 //!   ascending) with their pair memory (friction, ITIED ties, side), and the
-//!   TYPE5 pair;
+//!   walk pair;
 //! - the positions at the last sort of every contact node (rows by contact
 //!   node index: the ascending global node list of the interfaces).
 //!
@@ -31,6 +31,7 @@
 
 use super::exchange::GhostPlan;
 use super::interfaces::PairState;
+use super::key::SumKey;
 use super::search::Candidates;
 use super::tied::TiedSystem;
 use super::{ContactSystem, NodeState, Removal, NONE};
@@ -70,7 +71,8 @@ struct SecRecord {
     node: NodeState,
     cand: Vec<u32>,
     state: Vec<PairState>,
-    state5: (u32, PairState),
+    /// Walk types: the node's current pair (segment, memory).
+    walk_pair: (u32, PairState),
 }
 
 /// This rank's share of the contact state.
@@ -84,8 +86,15 @@ pub struct ContactExport {
     pub x_sort: Vec<f64>,
 }
 
+/// A secondary node's record key: the first word of its pairs' sum key,
+/// `interface << 40 | pass << 32 | global node`.
 fn key(ii: usize, pi: usize, global: u32) -> u64 {
-    (ii as u64) << 40 | (pi as u64) << 32 | global as u64
+    SumKey::pair(ii, pi, global, 0).to_words()[0]
+}
+
+/// A tie's record key (restart file layout): `interface << 32 | global node`.
+fn tie_key(ii: usize, global: u32) -> u64 {
+    (ii as u64) << 32 | global as u64
 }
 
 impl ContactSystem {
@@ -163,7 +172,7 @@ impl ContactSystem {
                         node: run.nodes[j].clone(),
                         cand,
                         state,
-                        state5: run.state5[j],
+                        walk_pair: run.walk_pair[j],
                     };
                     let g = self.setup.nodes[p.sec[k as usize] as usize];
                     records.push((
@@ -256,7 +265,7 @@ impl ContactSystem {
                 };
                 let mut state = Vec::new();
                 let mut nodes = Vec::with_capacity(run.mine.len());
-                let mut state5 = Vec::with_capacity(run.mine.len());
+                let mut walk_pair = Vec::with_capacity(run.mine.len());
                 for &k in &run.mine {
                     let g = self.setup.nodes[p.sec[k as usize] as usize];
                     let id = self.node_ids[p.sec[k as usize] as usize];
@@ -276,7 +285,7 @@ impl ContactSystem {
                     if !rec.cand.iter().all(|&m| seg_ok(m))
                         || !(rec.state.is_empty() || rec.state.len() == rec.cand.len())
                         || !(rec.node.last_seg == NONE || seg_ok(rec.node.last_seg))
-                        || !(rec.state5.0 == NONE || seg_ok(rec.state5.0))
+                        || !(rec.walk_pair.0 == NONE || seg_ok(rec.walk_pair.0))
                         || !rec.node.off_segs.iter().all(|&m| seg_ok(m))
                         || !rec.node.gap0.iter().all(|e| seg_ok(e.0))
                     {
@@ -289,7 +298,7 @@ impl ContactSystem {
                     cand.ptr.push(cand.segs.len());
                     state.extend_from_slice(&rec.state);
                     nodes.push(rec.node);
-                    state5.push(rec.state5);
+                    walk_pair.push(rec.walk_pair);
                 }
                 if !state.is_empty() && state.len() != cand.segs.len() {
                     return Err(bad("pair memory and candidates differ in length"));
@@ -297,7 +306,7 @@ impl ContactSystem {
                 run.cand = cand;
                 run.state = state;
                 run.nodes = nodes;
-                run.state5 = state5;
+                run.walk_pair = walk_pair;
             }
         }
         if x_sort.len() != 3 * self.held.len() {
@@ -365,7 +374,7 @@ impl TiedSystem {
                 if self.local[tie.sec as usize] == NONE || !self.owned[tie.sec as usize] {
                     continue;
                 }
-                let k = (ii as u64) << 32 | self.setup.nodes[tie.sec as usize] as u64;
+                let k = tie_key(ii, self.setup.nodes[tie.sec as usize]);
                 let d = self.d[ii][j];
                 offsets.push((k, d.iter().flat_map(|c| c.to_le_bytes()).collect()));
             }
@@ -402,7 +411,7 @@ impl TiedSystem {
                     continue;
                 }
                 let g = self.setup.nodes[tie.sec as usize];
-                let k = (ii as u64) << 32 | g as u64;
+                let k = tie_key(ii, g);
                 let b = by_key
                     .get(&k)
                     .filter(|b| b.len() == 24)

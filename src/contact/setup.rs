@@ -6,200 +6,20 @@
 //! Contact nodes are numbered densely in global node order ("cnode"); every
 //! array below speaks in cnodes.
 
-use super::friction::FrictionLaw;
-use super::gap::{self, GapRule};
 use super::geometry::{self as geo, V3};
+use super::interfaces::{
+    CandidateSearch, CardCommon, InterfaceType, PassSides, SurfaceSizes, TypeOptions,
+};
 use super::stiffness;
 use crate::model::{geometry as mgeo, Model};
-use crate::model::{ElementKind, InterfaceKind, MaterialSpec as MaterialCard};
-use serde::{Deserialize, Serialize};
+use crate::model::{ElementKind, InterfaceKind, MaterialSpec};
 use std::collections::HashMap;
 
-pub const NONE: u32 = u32::MAX;
+pub use super::interfaces::layout::{
+    closest_segment, ContactSetup, IdelRule, Interface, Pass, NONE,
+};
 
-/// How a pass turns a measured gap into a force.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
-pub enum Law {
-    /// TYPE7: every secondary node against every main segment not connected
-    /// to it, both sides, edges and corners; non-linear reaction.
-    Type7,
-    /// TYPE5 (and each pass of TYPE3): closest main node / segment walk,
-    /// one-sided penetration by tetrahedron volume, linear spring.
-    Type5,
-}
-
-/// One pass: secondary nodes against main segments.
-#[derive(Clone, Debug, Serialize, Deserialize)]
-pub struct Pass {
-    /// Main segments as cnodes (a triangle repeats its third node).
-    pub segs: Vec<[u32; 4]>,
-    /// Main segment stiffness (scale factor included, see `Interface::istf`).
-    pub seg_k: Vec<f64>,
-    /// Main element gap g_m (half the shell thickness, 0 on solids).
-    pub seg_gap: Vec<f64>,
-    /// Smallest edge of each main segment (initial).
-    pub seg_lmin: Vec<f64>,
-    /// Contact pressure area of each main segment (initial).
-    pub seg_area: Vec<f64>,
-    /// The element under each main segment: (kind index, element index).
-    pub seg_elem: Vec<(u8, u32)>,
-    /// Secondary nodes (cnodes, ascending).
-    pub sec: Vec<u32>,
-    /// Secondary node stiffness Ks (card eq. (6)/(7)), TYPE3 own-surface stiffness.
-    pub sec_k: Vec<f64>,
-    /// Secondary gap g_s (half the largest connected shell thickness) and smallest connected edge.
-    pub sec_gap: Vec<f64>,
-    pub sec_lmin: Vec<f64>,
-    /// TYPE5: closest main segment found by the Starter's full search (NONE if none).
-    pub sec_start_seg: Vec<u32>,
-    /// Segments around each main node (CSR over cnodes of the segments): TYPE5 walk.
-    pub node_segs_ptr: Vec<u32>,
-    pub node_segs_key: Vec<u32>,
-    pub node_segs: Vec<u32>,
-    /// Largest segment diagonal (for the ghost boxes).
-    pub max_diag: f64,
-    /// Idel (empty when the interface does not delete): the elements
-    /// associated with each main segment, CSR over `segs` — every 4- or
-    /// 3-node shell whose nodes are the segment's and every solid that has
-    /// the segment as a face — as (kind index, element index).
-    pub seg_elems_ptr: Vec<u32>,
-    pub seg_elems: Vec<(u8, u32)>,
-    /// Idel = 1, 2 (empty otherwise): the elements attached to each secondary
-    /// node (every kind), CSR over `sec`; a node none of whose elements is
-    /// alive is "non-connected" and leaves the secondary side. A node with no
-    /// element at all is never removed (no deletion concerns it), and a node
-    /// on a spring stays connected while the spring lives (springs are never
-    /// deleted).
-    pub sec_elems_ptr: Vec<u32>,
-    pub sec_elems: Vec<(u8, u32)>,
-}
-
-impl Pass {
-    /// Segments around main cnode `c` (empty when `c` is on no segment).
-    pub fn segments_around(&self, c: u32) -> &[u32] {
-        match self.node_segs_key.binary_search(&c) {
-            Ok(i) => {
-                &self.node_segs[self.node_segs_ptr[i] as usize..self.node_segs_ptr[i + 1] as usize]
-            }
-            Err(_) => &[],
-        }
-    }
-    pub fn is_tri(&self, s: usize) -> bool {
-        self.segs[s][3] == self.segs[s][2]
-    }
-    /// Idel: the elements associated with main segment `s`.
-    pub fn elements_of_segment(&self, s: usize) -> &[(u8, u32)] {
-        csr(&self.seg_elems_ptr, &self.seg_elems, s)
-    }
-    /// Idel = 1, 2: the elements attached to secondary node `k` (index into `sec`).
-    pub fn elements_of_secondary(&self, k: usize) -> &[(u8, u32)] {
-        csr(&self.sec_elems_ptr, &self.sec_elems, k)
-    }
-}
-
-fn csr<'a, T>(ptr: &[u32], v: &'a [T], i: usize) -> &'a [T] {
-    if i + 1 >= ptr.len() {
-        return &[];
-    }
-    &v[ptr[i] as usize..ptr[i + 1] as usize]
-}
-
-/// What an interface's Idel asks for (card /INTER/TYPE7, Idel; TYPE3 and TYPE5
-/// read the same flag, with 0 meaning no deletion).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct IdelRule {
-    /// Idel = ±1: a main segment is removed when *all* its associated elements
-    /// are deleted; Idel = ±2: as soon as *one* of them is.
-    pub all: bool,
-    /// Idel = 1, 2: non-connected nodes also leave the secondary side (not with -1, -2).
-    pub nodes: bool,
-}
-
-impl IdelRule {
-    /// `None` for 0 and 1000 (no deletion).
-    pub fn of(idel: i64) -> Option<IdelRule> {
-        match idel {
-            1 => Some(IdelRule {
-                all: true,
-                nodes: true,
-            }),
-            2 => Some(IdelRule {
-                all: false,
-                nodes: true,
-            }),
-            -1 => Some(IdelRule {
-                all: true,
-                nodes: false,
-            }),
-            -2 => Some(IdelRule {
-                all: false,
-                nodes: false,
-            }),
-            _ => None,
-        }
-    }
-}
-
-/// One interface, resolved.
-#[derive(Clone, Debug, Serialize, Deserialize)]
-pub struct Interface {
-    pub id: u64,
-    pub type_number: u32,
-    pub title: String,
-    pub law: Law,
-    pub passes: Vec<Pass>,
-    pub gap: GapRule,
-    /// Largest gap of any pair (search reach without the margin).
-    pub max_gap: f64,
-    /// Sorting margin: candidates are kept while motion stays below it (Bumult).
-    pub margin: f64,
-    pub stfac: f64,
-    pub istf: i64,
-    pub stmin: f64,
-    pub stmax: f64,
-    pub friction: FrictionLaw,
-    pub viss: f64,
-    pub tstart: f64,
-    pub tstop: f64,
-    pub ibc: [bool; 3],
-    pub inacti: i64,
-    pub fpenmax: f64,
-    pub dtmin: f64,
-    pub itied: i64,
-    /// Idel: 0/1000 none; ±1 all elements of a segment deleted; ±2 any (see [`IdelRule`]).
-    pub idel: i64,
-    /// Irem_gap = 2: in self-contact, ignore main segments with a node closer
-    /// than 2·Gap to the secondary node in the initial configuration.
-    pub irem_gap: bool,
-}
-
-/// All interfaces plus the contact-node table.
-#[derive(Clone, Debug, Default, Serialize, Deserialize)]
-pub struct ContactSetup {
-    pub interfaces: Vec<Interface>,
-    /// Global node index of each cnode, ascending.
-    pub nodes: Vec<u32>,
-    /// Initial position of each cnode.
-    pub x0: Vec<V3>,
-    /// Ranks holding each cnode (CSR), ascending.
-    pub holders_ptr: Vec<u32>,
-    pub holders: Vec<u32>,
-}
-
-impl ContactSetup {
-    pub fn is_empty(&self) -> bool {
-        self.interfaces.is_empty()
-    }
-    pub fn holders_of(&self, c: u32) -> &[u32] {
-        &self.holders
-            [self.holders_ptr[c as usize] as usize..self.holders_ptr[c as usize + 1] as usize]
-    }
-    pub fn cnode_of(&self, global: u32) -> Option<u32> {
-        self.nodes.binary_search(&global).ok().map(|i| i as u32)
-    }
-}
-
-fn bulk(m: &MaterialCard) -> f64 {
+fn bulk(m: &MaterialSpec) -> f64 {
     m.e / (3.0 * (1.0 - 2.0 * m.nu))
 }
 
@@ -368,7 +188,12 @@ struct SegData {
     elem: (u8, u32),
 }
 
-fn segment_data(m: &Model, faces: &FaceIndex, seg: &[u32; 4], law: Law) -> Result<SegData, String> {
+fn segment_data(
+    m: &Model,
+    faces: &FaceIndex,
+    seg: &[u32; 4],
+    ty: &dyn InterfaceType,
+) -> Result<SegData, String> {
     let Some(&(ki, e)) = faces.map.get(&face_key(seg)) else {
         return Err(format!(
             "main segment {} {} {} {} is not the face of a shell or solid element: its stiffness is undefined (each main segment must lie on an element)",
@@ -394,10 +219,7 @@ fn segment_data(m: &Model, faces: &FaceIndex, seg: &[u32; 4], law: Law) -> Resul
     let xs = [x[0], x[1], x[2], x[3]];
     let area = geo::segment_area(&xs, seg[3] == seg[2]);
     let vol = element_volume(m, ki as usize, e as usize);
-    let k = match law {
-        Law::Type7 => stiffness::brick_type7(bulk(mat), area, vol),
-        Law::Type5 => stiffness::brick_type3(bulk(mat), area, vol),
-    };
+    let k = ty.solid_segment_stiffness(bulk(mat), area, vol);
     Ok(SegData {
         k,
         gap: 0.0,
@@ -406,17 +228,32 @@ fn segment_data(m: &Model, faces: &FaceIndex, seg: &[u32; 4], law: Law) -> Resul
     })
 }
 
-/// Options common to the interface kinds, from their cards.
-struct Common {
-    law: Law,
-    stfac: f64,
-    fric: FrictionLaw,
-    gap_card: f64,
-    tstart: f64,
-    tstop: f64,
-    ibc: [bool; 3],
-    inacti: i64,
-    idel: i64,
+/// What every interface's set-up reads: the faces' elements and the
+/// contact-node table.
+struct Surfaces<'a> {
+    faces: FaceIndex,
+    /// Idel: every element of each face (empty when no interface deletes).
+    face_elems: HashMap<[u32; 4], Vec<(u8, u32)>>,
+    /// Global node index of each cnode, ascending.
+    all: &'a [u32],
+}
+
+impl Surfaces<'_> {
+    fn cn(&self, g: u32) -> u32 {
+        self.all.binary_search(&g).expect("contact node") as u32
+    }
+}
+
+/// Sizes gathered over an interface's passes: main shells, edges and element gaps.
+struct Sizes {
+    thick_sum: f64,
+    thick_min: f64,
+    n_shell: usize,
+    l_min: f64,
+    l_sum: f64,
+    n_edges: usize,
+    gs_max: f64,
+    gm_max: f64,
 }
 
 /// Builds the contact set-up; `holders[g]` lists the ranks holding global node g.
@@ -430,11 +267,8 @@ pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<ContactSetup, String> {
         return Ok(ContactSetup::default());
     }
     let faces = FaceIndex::build(m);
-    let any_idel = m.interfaces.iter().any(|i| match &i.card.kind {
-        InterfaceKind::Type7(t) => IdelRule::of(t.idel).is_some(),
-        InterfaceKind::Type5(t) => IdelRule::of(t.idel).is_some(),
-        InterfaceKind::Type3(t) => IdelRule::of(t.idel).is_some(),
-        _ => false,
+    let any_idel = m.interfaces.iter().any(|i| {
+        TypeOptions::from_card(&i.card.kind).is_some_and(|(_, c)| IdelRule::of(c.idel).is_some())
     });
     let face_elems = if any_idel {
         face_elements(m)
@@ -450,324 +284,14 @@ pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<ContactSetup, String> {
     }
     all.sort_unstable();
     all.dedup();
-    let cn = |g: u32| all.binary_search(&g).expect("contact node") as u32;
+    let surfaces = Surfaces {
+        faces,
+        face_elems,
+        all: &all,
+    };
     let mut interfaces = Vec::new();
     for i in contact_ifaces {
-        let c = &i.card;
-        let kw = format!("{}: /INTER/TYPE{}/{}", c.loc, c.type_number(), c.id);
-        let (common, t7) = match &c.kind {
-            InterfaceKind::Type7(t) => (
-                Common {
-                    law: Law::Type7,
-                    stfac: t.stfac,
-                    fric: FrictionLaw {
-                        ifric: t.ifric,
-                        fric: t.fric,
-                        c: t.fric_coefs.unwrap_or([0.0; 6]),
-                        ifiltr: t.ifiltr,
-                        xfreq: t.xfreq,
-                        iform: if t.iform == 2 { 2 } else { 1 },
-                        visf: t.visf,
-                        ..FrictionLaw::none()
-                    },
-                    gap_card: t.gapmin,
-                    tstart: t.tstart,
-                    tstop: t.tstop,
-                    ibc: t.ibc,
-                    inacti: t.inacti,
-                    idel: t.idel,
-                },
-                Some(t),
-            ),
-            InterfaceKind::Type5(t) => (
-                Common {
-                    law: Law::Type5,
-                    stfac: t.stfac,
-                    fric: FrictionLaw {
-                        ifric: t.ifric,
-                        fric: t.fric,
-                        c: t.fric_coefs.unwrap_or([0.0; 6]),
-                        ifiltr: t.ifiltr,
-                        xfreq: t.xfreq,
-                        ..FrictionLaw::none()
-                    },
-                    gap_card: t.gap,
-                    tstart: t.tstart,
-                    tstop: t.tstop,
-                    ibc: t.ibc,
-                    inacti: t.inacti,
-                    idel: t.idel,
-                },
-                None,
-            ),
-            InterfaceKind::Type3(t) => (
-                Common {
-                    law: Law::Type5,
-                    stfac: t.stfac,
-                    fric: FrictionLaw {
-                        fric: t.fric,
-                        ..FrictionLaw::none()
-                    },
-                    gap_card: t.gap,
-                    tstart: t.tstart,
-                    tstop: t.tstop,
-                    ibc: t.ibc,
-                    inacti: 0,
-                    idel: t.idel,
-                },
-                None,
-            ),
-            _ => {
-                return Err(format!(
-                    "{kw}: this interface type is not computed by the engine yet"
-                ))
-            }
-        };
-        // Passes: (secondary nodes, own segments for TYPE3 node stiffness, main segments).
-        let mut pass_defs: Vec<(Vec<u32>, Option<&Vec<[u32; 4]>>, &Vec<[u32; 4]>)> = Vec::new();
-        match &c.kind {
-            InterfaceKind::Type3(_) => {
-                let mut n1: Vec<u32> = i.secondary_segments.iter().flatten().copied().collect();
-                n1.sort_unstable();
-                n1.dedup();
-                let mut n2: Vec<u32> = i.main_segments.iter().flatten().copied().collect();
-                n2.sort_unstable();
-                n2.dedup();
-                pass_defs.push((n1, Some(&i.secondary_segments), &i.main_segments));
-                pass_defs.push((n2, Some(&i.main_segments), &i.secondary_segments));
-            }
-            _ => pass_defs.push((i.secondary_nodes.clone(), None, &i.main_segments)),
-        }
-        let mut passes = Vec::new();
-        let mut thick_sum = 0.0;
-        let mut thick_min = f64::INFINITY;
-        let mut n_shell = 0usize;
-        let mut l_min = f64::INFINITY;
-        let mut l_sum = 0.0;
-        let mut n_edges = 0usize;
-        let mut gs_max = 0.0f64;
-        let mut gm_max = 0.0f64;
-        for (sec, own, main) in pass_defs {
-            let mut segs = Vec::new();
-            let mut seg_k = Vec::new();
-            let mut seg_gap = Vec::new();
-            let mut seg_lmin = Vec::new();
-            let mut seg_area = Vec::new();
-            let mut seg_elem = Vec::new();
-            let mut max_diag = 0.0f64;
-            for s in main.iter() {
-                let d = segment_data(m, &faces, s, common.law).map_err(|e| format!("{kw}: {e}"))?;
-                let x = s.map(|n| m.nodes.x[n as usize]);
-                let tri = s[3] == s[2];
-                let lm = geo::min_edge(&x, tri);
-                let nn = if tri { 3 } else { 4 };
-                for e in 0..nn {
-                    l_sum += geo::norm(geo::sub(x[(e + 1) % nn], x[e]));
-                    n_edges += 1;
-                }
-                l_min = l_min.min(lm);
-                if let Some(t) = d.thick {
-                    thick_sum += t;
-                    thick_min = thick_min.min(t);
-                    n_shell += 1;
-                }
-                gm_max = gm_max.max(d.gap);
-                max_diag = max_diag.max(super::search::Aabb::of_points(&x).diagonal());
-                segs.push(s.map(cn));
-                seg_k.push(d.k);
-                seg_gap.push(d.gap);
-                seg_lmin.push(lm);
-                seg_area.push(geo::segment_area(&x, tri));
-                seg_elem.push(d.elem);
-            }
-            let nd = node_data(m, &sec);
-            let own_k: HashMap<u32, f64> = match own {
-                Some(own) => {
-                    let mut h: HashMap<u32, f64> = HashMap::new();
-                    for s in own.iter() {
-                        let d = segment_data(m, &faces, s, common.law)
-                            .map_err(|e| format!("{kw}: {e}"))?;
-                        for &n in s {
-                            let e = h.entry(n).or_insert(0.0);
-                            *e = e.max(d.k);
-                        }
-                    }
-                    h
-                }
-                None => HashMap::new(),
-            };
-            let mut sec_k = Vec::new();
-            let mut sec_gap = Vec::new();
-            let mut sec_lmin = Vec::new();
-            for &n in &sec {
-                let (k, g, l) = nd[&n];
-                sec_k.push(own_k.get(&n).copied().unwrap_or(k));
-                sec_gap.push(g);
-                gs_max = gs_max.max(g);
-                sec_lmin.push(if l.is_finite() { l } else { 0.0 });
-            }
-            // Segments around each main node.
-            let mut pairs: Vec<(u32, u32)> = Vec::new();
-            for (si, s) in segs.iter().enumerate() {
-                let mut u = s.to_vec();
-                u.sort_unstable();
-                u.dedup();
-                for n in u {
-                    pairs.push((n, si as u32));
-                }
-            }
-            pairs.sort_unstable();
-            let mut node_segs_key = Vec::new();
-            let mut node_segs_ptr = vec![0u32];
-            let mut node_segs = Vec::new();
-            for (n, s) in pairs {
-                if node_segs_key.last() != Some(&n) {
-                    if !node_segs_key.is_empty() {
-                        node_segs_ptr.push(node_segs.len() as u32);
-                    }
-                    node_segs_key.push(n);
-                }
-                node_segs.push(s);
-            }
-            node_segs_ptr.push(node_segs.len() as u32);
-            let sec_c: Vec<u32> = sec.iter().map(|&n| cn(n)).collect();
-            let rule = IdelRule::of(common.idel);
-            let mut seg_elems_ptr = Vec::new();
-            let mut seg_elems = Vec::new();
-            let mut sec_elems_ptr = Vec::new();
-            let mut sec_elems = Vec::new();
-            if let Some(rule) = rule {
-                seg_elems_ptr.push(0);
-                for s in main.iter() {
-                    if let Some(v) = face_elems.get(&face_key(s)) {
-                        seg_elems.extend_from_slice(v);
-                    }
-                    seg_elems_ptr.push(seg_elems.len() as u32);
-                }
-                if rule.nodes {
-                    let ne = node_elements(m, &sec);
-                    sec_elems_ptr.push(0);
-                    for n in &sec {
-                        sec_elems.extend_from_slice(&ne[n]);
-                        sec_elems_ptr.push(sec_elems.len() as u32);
-                    }
-                }
-            }
-            let mut pass = Pass {
-                seg_elems_ptr,
-                seg_elems,
-                sec_elems_ptr,
-                sec_elems,
-                segs,
-                seg_k,
-                seg_gap,
-                seg_lmin,
-                seg_area,
-                seg_elem,
-                sec: sec_c,
-                sec_k,
-                sec_gap,
-                sec_lmin,
-                sec_start_seg: Vec::new(),
-                node_segs_ptr,
-                node_segs_key,
-                node_segs,
-                max_diag,
-            };
-            if common.law == Law::Type5 {
-                pass.sec_start_seg = starter_closest_segments(m, &all, &pass);
-            }
-            passes.push(pass);
-        }
-        let l_min = if l_min.is_finite() { l_min } else { 0.0 };
-        let l_mean = if n_edges > 0 {
-            l_sum / n_edges as f64
-        } else {
-            0.0
-        };
-        let (gap_rule, istf, stmin, stmax, viss, bumult, fpenmax, dtmin, itied, irem_gap) = match t7
-        {
-            Some(t) => {
-                let igap = t.igap;
-                let shell_t = if n_shell == 0 {
-                    None
-                } else if igap == 1000 || igap == 0 {
-                    Some(thick_sum / n_shell as f64)
-                } else {
-                    Some(thick_min)
-                };
-                let gapmin = if t.gapmin > 0.0 {
-                    t.gapmin
-                } else {
-                    gap::type7_default_gapmin(shell_t, l_min)
-                };
-                (
-                    GapRule {
-                        igap: if igap == 0 { 1000 } else { igap },
-                        gapmin,
-                        fscalegap: t.fscalegap,
-                        gapmax: t.gapmax,
-                        mesh_size_pct: t.mesh_size_pct,
-                    },
-                    t.istf,
-                    t.stmin,
-                    t.stmax,
-                    t.viss,
-                    t.bumult,
-                    t.fpenmax,
-                    t.dtmin,
-                    t.itied,
-                    t.irem_gap == 2,
-                )
-            }
-            None => (
-                GapRule {
-                    igap: 1000,
-                    gapmin: common.gap_card,
-                    fscalegap: 1.0,
-                    gapmax: 1e30,
-                    mesh_size_pct: 0.4,
-                },
-                1000,
-                0.0,
-                1e30,
-                0.0,
-                0.2,
-                0.0,
-                0.0,
-                0,
-                false,
-            ),
-        };
-        let max_gap = gap_rule.max_gap(gs_max, gm_max);
-        let margin = (bumult * l_mean)
-            .max(0.1 * max_gap)
-            .max(1e-12 * l_mean.max(1.0));
-        interfaces.push(Interface {
-            id: c.id,
-            type_number: c.type_number(),
-            title: c.title.clone(),
-            law: common.law,
-            passes,
-            gap: gap_rule,
-            max_gap,
-            margin,
-            stfac: common.stfac,
-            istf,
-            stmin,
-            stmax,
-            friction: common.fric,
-            viss,
-            tstart: common.tstart,
-            tstop: common.tstop,
-            ibc: common.ibc,
-            inacti: common.inacti,
-            fpenmax,
-            dtmin,
-            itied,
-            idel: common.idel,
-            irem_gap,
-        });
+        interfaces.push(build_interface(m, &surfaces, i)?);
     }
     let x0 = all.iter().map(|&g| m.nodes.x[g as usize]).collect();
     let mut holders_ptr = vec![0u32];
@@ -783,6 +307,245 @@ pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<ContactSetup, String> {
         holders_ptr,
         holders: hs,
     })
+}
+
+/// One interface: its type from the registry, its passes, gap rule and sorting margin.
+fn build_interface(
+    m: &Model,
+    surfaces: &Surfaces,
+    i: &crate::model::Interface,
+) -> Result<Interface, String> {
+    let c = &i.card;
+    let kw = format!("{}: /INTER/TYPE{}/{}", c.loc, c.type_number(), c.id);
+    let Some((options, common)) = TypeOptions::from_card(&c.kind) else {
+        return Err(format!(
+            "{kw}: this interface type is not computed by the engine yet"
+        ));
+    };
+    let ty = options.implementation();
+    let mut sizes = Sizes {
+        thick_sum: 0.0,
+        thick_min: f64::INFINITY,
+        n_shell: 0,
+        l_min: f64::INFINITY,
+        l_sum: 0.0,
+        n_edges: 0,
+        gs_max: 0.0,
+        gm_max: 0.0,
+    };
+    let mut passes = Vec::new();
+    for sides in ty.passes(i) {
+        passes.push(build_pass(
+            m, surfaces, ty, &common, &sides, &mut sizes, &kw,
+        )?);
+    }
+    let l_min = if sizes.l_min.is_finite() {
+        sizes.l_min
+    } else {
+        0.0
+    };
+    let l_mean = if sizes.n_edges > 0 {
+        sizes.l_sum / sizes.n_edges as f64
+    } else {
+        0.0
+    };
+    let gap_rule = ty.gap_rule(
+        &common,
+        &SurfaceSizes {
+            n_shell: sizes.n_shell,
+            thick_sum: sizes.thick_sum,
+            thick_min: sizes.thick_min,
+            l_min,
+        },
+    );
+    let max_gap = gap_rule.max_gap(sizes.gs_max, sizes.gm_max);
+    let margin = (ty.sorting_margin() * l_mean)
+        .max(0.1 * max_gap)
+        .max(1e-12 * l_mean.max(1.0));
+    Ok(Interface {
+        id: c.id,
+        type_number: c.type_number(),
+        title: c.title.clone(),
+        options,
+        passes,
+        gap: gap_rule,
+        max_gap,
+        margin,
+        stfac: common.stfac,
+        friction: common.friction,
+        tstart: common.tstart,
+        tstop: common.tstop,
+        ibc: common.ibc,
+        inacti: common.inacti,
+        idel: common.idel,
+    })
+}
+
+/// One pass: its main segments' data, its secondary nodes' data, the
+/// segments around each main node and the Idel tables.
+#[allow(clippy::too_many_arguments)]
+fn build_pass(
+    m: &Model,
+    surfaces: &Surfaces,
+    ty: &dyn InterfaceType,
+    common: &CardCommon,
+    sides: &PassSides,
+    sizes: &mut Sizes,
+    kw: &str,
+) -> Result<Pass, String> {
+    let main = sides.main;
+    let mut segs = Vec::new();
+    let mut seg_k = Vec::new();
+    let mut seg_gap = Vec::new();
+    let mut seg_lmin = Vec::new();
+    let mut seg_area = Vec::new();
+    let mut seg_elem = Vec::new();
+    let mut max_diag = 0.0f64;
+    for s in main.iter() {
+        let d = segment_data(m, &surfaces.faces, s, ty).map_err(|e| format!("{kw}: {e}"))?;
+        let x = s.map(|n| m.nodes.x[n as usize]);
+        let tri = s[3] == s[2];
+        let lm = geo::min_edge(&x, tri);
+        let nn = if tri { 3 } else { 4 };
+        for e in 0..nn {
+            sizes.l_sum += geo::norm(geo::sub(x[(e + 1) % nn], x[e]));
+            sizes.n_edges += 1;
+        }
+        sizes.l_min = sizes.l_min.min(lm);
+        if let Some(t) = d.thick {
+            sizes.thick_sum += t;
+            sizes.thick_min = sizes.thick_min.min(t);
+            sizes.n_shell += 1;
+        }
+        sizes.gm_max = sizes.gm_max.max(d.gap);
+        max_diag = max_diag.max(super::search::Aabb::of_points(&x).diagonal());
+        segs.push(s.map(|g| surfaces.cn(g)));
+        seg_k.push(d.k);
+        seg_gap.push(d.gap);
+        seg_lmin.push(lm);
+        seg_area.push(geo::segment_area(&x, tri));
+        seg_elem.push(d.elem);
+    }
+    let sec = &sides.sec;
+    let nd = node_data(m, sec);
+    let own_k: HashMap<u32, f64> = match sides.own {
+        Some(own) => {
+            let mut h: HashMap<u32, f64> = HashMap::new();
+            for s in own.iter() {
+                let d =
+                    segment_data(m, &surfaces.faces, s, ty).map_err(|e| format!("{kw}: {e}"))?;
+                for &n in s {
+                    let e = h.entry(n).or_insert(0.0);
+                    *e = e.max(d.k);
+                }
+            }
+            h
+        }
+        None => HashMap::new(),
+    };
+    let mut sec_k = Vec::new();
+    let mut sec_gap = Vec::new();
+    let mut sec_lmin = Vec::new();
+    for &n in sec {
+        let (k, g, l) = nd[&n];
+        sec_k.push(own_k.get(&n).copied().unwrap_or(k));
+        sec_gap.push(g);
+        sizes.gs_max = sizes.gs_max.max(g);
+        sec_lmin.push(if l.is_finite() { l } else { 0.0 });
+    }
+    let (node_segs_ptr, node_segs_key, node_segs) = segments_around_nodes(&segs);
+    let sec_c: Vec<u32> = sec.iter().map(|&n| surfaces.cn(n)).collect();
+    let idel = idel_tables(m, surfaces, common.idel, main, sec);
+    let mut pass = Pass {
+        seg_elems_ptr: idel.0,
+        seg_elems: idel.1,
+        sec_elems_ptr: idel.2,
+        sec_elems: idel.3,
+        segs,
+        seg_k,
+        seg_gap,
+        seg_lmin,
+        seg_area,
+        seg_elem,
+        sec: sec_c,
+        sec_k,
+        sec_gap,
+        sec_lmin,
+        sec_start_seg: Vec::new(),
+        node_segs_ptr,
+        node_segs_key,
+        node_segs,
+        max_diag,
+    };
+    if ty.search() == CandidateSearch::Walk {
+        pass.sec_start_seg = starter_closest_segments(m, surfaces.all, &pass);
+    }
+    Ok(pass)
+}
+
+/// The segments around each main node, CSR over the nodes of `segs`
+/// ascending: (ptr, node, segments).
+fn segments_around_nodes(segs: &[[u32; 4]]) -> (Vec<u32>, Vec<u32>, Vec<u32>) {
+    let mut pairs: Vec<(u32, u32)> = Vec::new();
+    for (si, s) in segs.iter().enumerate() {
+        let mut u = s.to_vec();
+        u.sort_unstable();
+        u.dedup();
+        for n in u {
+            pairs.push((n, si as u32));
+        }
+    }
+    pairs.sort_unstable();
+    let mut node_segs_key = Vec::new();
+    let mut node_segs_ptr = vec![0u32];
+    let mut node_segs = Vec::new();
+    for (n, s) in pairs {
+        if node_segs_key.last() != Some(&n) {
+            if !node_segs_key.is_empty() {
+                node_segs_ptr.push(node_segs.len() as u32);
+            }
+            node_segs_key.push(n);
+        }
+        node_segs.push(s);
+    }
+    node_segs_ptr.push(node_segs.len() as u32);
+    (node_segs_ptr, node_segs_key, node_segs)
+}
+
+/// Idel's tables of one pass (empty when the interface does not delete):
+/// the elements of each main segment, and with Idel = 1, 2 those of each
+/// secondary node, as (segment ptr, segment elements, node ptr, node elements).
+type IdelTables = (Vec<u32>, Vec<(u8, u32)>, Vec<u32>, Vec<(u8, u32)>);
+
+fn idel_tables(
+    m: &Model,
+    surfaces: &Surfaces,
+    idel: i64,
+    main: &[[u32; 4]],
+    sec: &[u32],
+) -> IdelTables {
+    let mut seg_elems_ptr = Vec::new();
+    let mut seg_elems = Vec::new();
+    let mut sec_elems_ptr = Vec::new();
+    let mut sec_elems = Vec::new();
+    if let Some(rule) = IdelRule::of(idel) {
+        seg_elems_ptr.push(0);
+        for s in main.iter() {
+            if let Some(v) = surfaces.face_elems.get(&face_key(s)) {
+                seg_elems.extend_from_slice(v);
+            }
+            seg_elems_ptr.push(seg_elems.len() as u32);
+        }
+        if rule.nodes {
+            let ne = node_elements(m, sec);
+            sec_elems_ptr.push(0);
+            for n in sec {
+                sec_elems.extend_from_slice(&ne[n]);
+                sec_elems_ptr.push(sec_elems.len() as u32);
+            }
+        }
+    }
+    (seg_elems_ptr, seg_elems, sec_elems_ptr, sec_elems)
 }
 
 /// The Starter's TYPE5 search (§8.6.6.1): for each secondary node the closest
@@ -811,19 +574,4 @@ fn starter_closest_segments(m: &Model, cnodes: &[u32], pass: &Pass) -> Vec<u32> 
             .unwrap_or(NONE)
         })
         .collect()
-}
-
-/// Among `segs`, the one whose closest point is nearest to p (ties: lowest index);
-/// `None` when the positions of none of them are known.
-pub fn closest_segment(segs: &[u32], p: V3, x_of: impl Fn(u32) -> Option<[V3; 4]>) -> Option<u32> {
-    let mut best: Option<(f64, u32)> = None;
-    for &s in segs {
-        let Some(x) = x_of(s) else { continue };
-        let tri = x[3] == x[2];
-        let pr = geo::project(p, &x, tri);
-        if best.is_none_or(|b| pr.dist < b.0 || (pr.dist == b.0 && s < b.1)) {
-            best = Some((pr.dist, s));
-        }
-    }
-    best.map(|b| b.1)
 }

@@ -6,7 +6,8 @@
 //! Parallel design (ARCHITECTURE "Contact across ranks", "Determinism"):
 //! - the owner of a secondary node spreads its force and moment over the main
 //!   nodes; each share goes to every rank holding that main node, keyed by
-//!   (interface, secondary node global id, corner), and each rank sums a main
+//!   (interface, secondary node global id, corner) (`key::SumKey`, pass and
+//!   main entity 0), and each rank sums a main
 //!   node's shares in key order, so the sum has the same bits on every rank
 //!   and for any number of ranks;
 //! - after the velocity update, the owners of main nodes send their velocities
@@ -21,6 +22,7 @@
 
 use super::geometry::{self as geo, V3};
 use super::interfaces::type2;
+use super::key::SumKey;
 use super::setup::NONE;
 use crate::domain::Subdomain;
 use crate::model::InterfaceKind;
@@ -107,24 +109,18 @@ impl TiedSetup {
     }
 }
 
-/// Builds the TYPE2 set-up on rank 0; `holders[g]` lists the ranks holding global node g.
-pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<TiedSetup, String> {
-    let mut raw: Vec<(
-        u64,
-        String,
-        Vec<(u32, [u32; 4], [f64; 4], V3, bool)>,
-        Vec<u64>,
-        bool,
-        f64,
-    )> = Vec::new();
-    // Every node constrained by some other condition, for the conflict checks:
-    // the first card that holds it, by kind.
-    type Holder = std::collections::HashMap<u32, String>;
-    fn mark<'a>(map: &mut Holder, nodes: impl IntoIterator<Item = &'a u32>, card: String) {
-        for &n in nodes {
-            map.entry(n).or_insert_with(|| card.clone());
-        }
+/// The first card that holds each node, by card name.
+type Holder = std::collections::HashMap<u32, String>;
+
+fn mark<'a>(map: &mut Holder, nodes: impl IntoIterator<Item = &'a u32>, card: String) {
+    for &n in nodes {
+        map.entry(n).or_insert_with(|| card.clone());
     }
+}
+
+/// Every node constrained by some other condition, for the conflict checks:
+/// (boundary conditions and imposed motions, rigid bodies and walls).
+fn constrained_nodes(m: &Model) -> (Holder, Holder) {
     let mut bc_of: Holder = Default::default();
     for c in &m.bcs {
         if c.card.fixed.iter().any(|&f| f) {
@@ -168,6 +164,54 @@ pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<TiedSetup, String> {
             format!("{}: /RWALL/{}", w.card.loc, w.card.id),
         );
     }
+    (bc_of, rb_of)
+}
+
+/// One TYPE2 interface before the tnode numbering: (id, title, ties as
+/// (secondary node, segment, shape, offset, rotations), untied node ids,
+/// untied nodes removed, dsearch).
+type RawTied = (
+    u64,
+    String,
+    Vec<(u32, [u32; 4], [f64; 4], V3, bool)>,
+    Vec<u64>,
+    bool,
+    f64,
+);
+
+/// Main nodes that are themselves tied (chains) or on a rigid body: refused.
+fn check_main_nodes(
+    raw: &[RawTied],
+    kws: &[String],
+    tied_by: &std::collections::HashMap<u32, u64>,
+    rb_of: &Holder,
+    nid: &dyn Fn(u32) -> u64,
+) -> Result<(), String> {
+    for ((_, _, ties, _, _, _), kw) in raw.iter().zip(kws) {
+        for (_, seg, _, _, _) in ties {
+            for &q in seg {
+                if let Some(other) = tied_by.get(&q) {
+                    return Err(format!(
+                        "{kw}, field surf_IDm: main node {} is itself a secondary node of /INTER/TYPE2/{other}: tied-interface hierarchies (Level) are not supported by the engine yet",
+                        nid(q)
+                    ));
+                }
+                if let Some(what) = rb_of.get(&q) {
+                    return Err(format!(
+                        "{kw}, field surf_IDm: main node {} is also constrained by {what}: a tie onto a rigid body or wall is not supported by the engine yet",
+                        nid(q)
+                    ));
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Builds the TYPE2 set-up on rank 0; `holders[g]` lists the ranks holding global node g.
+pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<TiedSetup, String> {
+    let mut raw: Vec<RawTied> = Vec::new();
+    let (bc_of, rb_of) = constrained_nodes(m);
     // Secondary nodes over all TYPE2 (tied twice) and main nodes (chains).
     let mut tied_by: std::collections::HashMap<u32, u64> = Default::default();
     let mut kws: Vec<String> = Vec::new();
@@ -252,25 +296,7 @@ pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<TiedSetup, String> {
         raw.push((c.id, c.title.clone(), ties, untied, removed, dsearch));
         kws.push(kw);
     }
-    // Chains and rigid-body main nodes.
-    for ((_, _, ties, _, _, _), kw) in raw.iter().zip(&kws) {
-        for (_, seg, _, _, _) in ties {
-            for &q in seg {
-                if let Some(other) = tied_by.get(&q) {
-                    return Err(format!(
-                        "{kw}, field surf_IDm: main node {} is itself a secondary node of /INTER/TYPE2/{other}: tied-interface hierarchies (Level) are not supported by the engine yet",
-                        nid(q)
-                    ));
-                }
-                if let Some(what) = rb_of.get(&q) {
-                    return Err(format!(
-                        "{kw}, field surf_IDm: main node {} is also constrained by {what}: a tie onto a rigid body or wall is not supported by the engine yet",
-                        nid(q)
-                    ));
-                }
-            }
-        }
-    }
+    check_main_nodes(&raw, &kws, &tied_by, &rb_of, &nid)?;
     let mut all: Vec<u32> = raw
         .iter()
         .flat_map(|r| r.2.iter().flat_map(|t| std::iter::once(t.0).chain(t.1)))
@@ -500,8 +526,8 @@ impl TiedSystem {
         for s in self.sums.iter_mut() {
             *s = TiedSums::default();
         }
-        // (tnode, key hi, key lo, share)
-        let mut out: Vec<(u32, u64, u64, [f64; 6])> = Vec::new();
+        // (tnode, key, share)
+        let mut out: Vec<(u32, SumKey, [f64; 6])> = Vec::new();
         for (ii, it) in self.setup.interfaces.iter().enumerate() {
             for (j, tie) in it.ties.iter().enumerate() {
                 let l = self.local[tie.sec as usize];
@@ -520,12 +546,12 @@ impl TiedSystem {
                     su.force[k] += force[k];
                     su.moment[k] += moment[k];
                 }
-                let hi = ((ii as u64) << 32) | self.setup.nodes[tie.sec as usize] as u64;
+                let key = SumKey::pair(ii, 0, self.setup.nodes[tie.sec as usize], 0);
                 for (i, &q) in tie.seg.iter().enumerate() {
                     if tie.shape[i] == 0.0 && sh[i] == [0.0; 6] {
                         continue;
                     }
-                    out.push((q, hi, i as u64, sh[i]));
+                    out.push((q, key.at(i as u8), sh[i]));
                 }
             }
         }
@@ -537,8 +563,9 @@ impl TiedSystem {
             for c in &out {
                 for &r in self.setup.holders_of(c.0) {
                     let b = &mut send[r as usize];
-                    b.extend_from_slice(&[c.0 as u64, c.1, c.2]);
-                    b.extend(c.3.iter().map(|x| x.to_bits()));
+                    b.push(c.0 as u64);
+                    b.extend_from_slice(&c.1.to_words());
+                    b.extend(c.2.iter().map(|x| x.to_bits()));
                 }
             }
             let recv = world.alltoallv_u64(&send);
@@ -549,13 +576,13 @@ impl TiedSystem {
                         for k in 0..6 {
                             s[k] = f64::from_bits(c[3 + k]);
                         }
-                        (c[0] as u32, c[1], c[2], s)
+                        (c[0] as u32, SumKey::from_words([c[1], c[2]]), s)
                     })
                 })
                 .collect()
         };
-        got.sort_unstable_by(|a, b| (a.0, a.1, a.2).cmp(&(b.0, b.1, b.2)));
-        for (q, _, _, s) in got {
+        got.sort_unstable_by_key(|a| (a.0, a.1));
+        for (q, _, s) in got {
             let l = self.local[q as usize];
             if l == NONE {
                 continue;

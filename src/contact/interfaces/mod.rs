@@ -1,20 +1,124 @@
-//! Interface types as compositions of geometry, stiffness, gap and friction:
-//! each file turns one measured node–segment pair into the force on the
-//! secondary node (the segment nodes take −N_i times it, EQ. 8.6.6.4–6).
+//! Interface types as compositions of geometry, stiffness, gap and friction,
+//! one file per type, behind one trait ([`InterfaceType`]) and one registry
+//! ([`TypeOptions`], the `registry!` table at the end of this file).
+//!
+//! A type says what its pairs are made of ([`CandidateKind`]), how their
+//! candidates are found ([`CandidateSearch`]: a box sort of the whole main
+//! side, or a walk from the last closest segment), what one pair's force is
+//! (its kernel: stiffness, gap, friction), what it adds to the time step, and
+//! how it treats a pair found penetrated at the first sort. `ContactSystem`
+//! (the runtime, `contact/mod.rs` and `contact/pairs.rs`) dispatches through
+//! the trait and never names a type.
+//!
+//! Adding a type (say TYPE11): one file here implementing [`InterfaceType`]
+//! on the type's own options struct, and one line in `registry!`
+//! (`11 => type11::Type11`). The runtime lays out node-to-segment pairs
+//! today (`contact::pairs`, `setup::Pass`); the first type of another
+//! [`CandidateKind`] also teaches it that kind's sides once.
+//!
+//! Restart: a type's pair memory lives in the records `contact::restart`
+//! writes for every type (`NodeState`, the candidates' `PairState`, the walk
+//! pair); none of today's types has state of its own beyond them.
+//!
+//! TYPE2 (`type2.rs`, run by `contact::tied`) is not in the registry: it is
+//! a kinematic condition, not a penalty force. It has no candidates and no
+//! search (each secondary node is tied once, at set-up, to one segment), and
+//! it acts in other phases of the cycle than the contact forces: it adds
+//! masses and inertias before the first cycle, moves the secondary nodes'
+//! forces and moments to the main nodes after all forces are known, and
+//! recovers the secondary nodes' velocities after the velocity update and
+//! their positions after the position update. Its table also tracks
+//! rotational degrees of freedom, which contact nodes do not have.
+//!
+//! Each kernel turns one measured pair into the force on the secondary side;
+//! the main side takes −N_i times it (EQ. 8.6.6.4–6).
 
+pub mod layout;
 pub mod type2;
-pub mod type5;
-pub mod type7;
 
+use super::friction::FrictionLaw;
+use super::gap::{GapRule, InitialPenetration};
 use super::geometry::V3;
+use crate::model;
+use crate::model::InterfaceKind;
+use layout::{Interface, Pass};
+use serde::{Deserialize, Serialize};
+
+/// What a pair is made of: the entity on each side.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CandidateKind {
+    /// A secondary node against a main segment (TYPE3, 5, 7).
+    NodeToSegment,
+    /// An edge against an edge (TYPE11, TYPE25 edges).
+    EdgeToEdge,
+    /// A segment against a segment (TYPE24, 25).
+    SegmentToSegment,
+    /// A node against an ellipsoid (TYPE14, 15).
+    NodeToEllipsoid,
+}
+
+/// How a type finds the candidates of its secondary nodes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CandidateSearch {
+    /// Every main segment within gap + sorting margin (box search), rebuilt
+    /// when the motion since the last sort passes half the margin.
+    Sort,
+    /// One segment per node, walked to from the last cycle's closest segment
+    /// ([`InterfaceType::walk`]).
+    Walk,
+}
+
+/// The most nodes on one side of a pair (a quadrilateral segment).
+pub const SIDE_NODES: usize = 4;
+
+/// The nodes (cnodes) of one side of a pair: a node (1), an edge (2), a
+/// triangle (3) or a quadrilateral (4).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Side {
+    pub nodes: [u32; SIDE_NODES],
+    pub count: u8,
+}
+
+impl Side {
+    pub fn node(c: u32) -> Side {
+        Side {
+            nodes: [c, c, c, c],
+            count: 1,
+        }
+    }
+    /// A main segment (a triangle repeats its third node: 3 nodes).
+    pub fn segment(seg: &[u32; 4]) -> Side {
+        Side {
+            nodes: *seg,
+            count: if seg[3] == seg[2] { 3 } else { 4 },
+        }
+    }
+    pub fn nodes(&self) -> &[u32] {
+        &self.nodes[..self.count as usize]
+    }
+}
+
+/// The two sides of one pair.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PairNodes {
+    pub sec: Side,
+    pub main: Side,
+}
+
+/// Weights of a lone secondary node (node-to-segment, node-to-ellipsoid).
+pub const NODE_SHAPE: [f64; SIDE_NODES] = [1.0, 0.0, 0.0, 0.0];
 
 /// What one pair gives.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct PairForce {
-    /// Force on the secondary node.
+    /// Force on the secondary side.
     pub fs: V3,
-    /// Shape functions of the contact point on the segment nodes.
-    pub shape: [f64; 4],
+    /// Weights of the secondary side's nodes: node j takes +w_j·fs
+    /// ([`NODE_SHAPE`] for a node).
+    pub sec_shape: [f64; SIDE_NODES],
+    /// Shape functions of the contact point on the main side's nodes: node i
+    /// takes −N_i·fs.
+    pub shape: [f64; SIDE_NODES],
     /// Tangent stiffness (for the nodal time step, EQ. 8.8.5.2).
     pub kt: f64,
     /// Kinematic time step 0.5·(Gap − p)/(dp/dt) (EQ. 8.8.5.1), ∞ if not closing.
@@ -40,4 +144,278 @@ pub struct PairState {
     pub tie: Option<([f64; 4], V3)>,
     /// Side of the segment (sign of the normal distance) at the last cycle in contact; 0 = none.
     pub side: i8,
+}
+
+/// Per secondary node memory (owned secondary nodes of a pass).
+#[derive(Clone, Debug, Default, serde::Serialize, serde::Deserialize)]
+pub struct NodeState {
+    /// Removed from the interface (Inacti = 1, Fpenmax, dtmin with ITIED = 0).
+    pub off: bool,
+    /// Walk types: the closest segment at the last cycle.
+    pub last_seg: u32,
+    /// Inacti = 2: segments deactivated for this node.
+    pub off_segs: Vec<u32>,
+    /// Inacti = 5, 6: (segment, corrected gap, clearance the node keeps below
+    /// it: 0 with Inacti = 5, 5% of the initial distance with 6).
+    pub gap0: Vec<(u32, f64, f64)>,
+}
+
+/// The options every type reads from its card, kept on `setup::Interface`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CardCommon {
+    pub stfac: f64,
+    pub friction: FrictionLaw,
+    /// The card's gap (Gapmin on TYPE7, Gap on TYPE3, 5).
+    pub gap_card: f64,
+    pub tstart: f64,
+    pub tstop: f64,
+    pub ibc: [bool; 3],
+    pub inacti: i64,
+    pub idel: i64,
+}
+
+/// Sizes of an interface's main segments (all passes), for the default gap.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SurfaceSizes {
+    /// Shell segments: their number, summed and smallest thickness.
+    pub n_shell: usize,
+    pub thick_sum: f64,
+    pub thick_min: f64,
+    /// Smallest edge (0 when there is none).
+    pub l_min: f64,
+}
+
+/// One pass's sides on the model: secondary nodes (global, ascending), the
+/// segments whose element stiffness the secondary nodes take (TYPE3's own
+/// surface; `None`: from the nodes' elements), and the main segments.
+pub struct PassSides<'a> {
+    pub sec: Vec<u32>,
+    pub own: Option<&'a [[u32; 4]]>,
+    pub main: &'a [[u32; 4]],
+}
+
+/// One measured node–segment pair, as the kernel sees it.
+pub struct PairContext<'a> {
+    pub it: &'a Interface,
+    pub p: &'a Pass,
+    /// Secondary node (index into `p.sec`) and main segment (index into `p.segs`).
+    pub k: usize,
+    pub m: u32,
+    pub xs: V3,
+    pub vs: V3,
+    /// Nodal mass of the secondary node.
+    pub ms: f64,
+    pub xm: &'a [V3; 4],
+    pub vm: &'a [V3; 4],
+    pub dt: f64,
+}
+
+/// What a kernel decides for one pair.
+pub enum PairOutcome {
+    /// No force (out of the gap, beyond the segment).
+    Free,
+    Force(PairForce),
+    /// The secondary node leaves the interface now (dtmin with ITIED = 0):
+    /// none of its pairs of this cycle counts.
+    NodeOff,
+}
+
+/// An interface type: its options are the struct that implements it.
+pub trait InterfaceType: Sync {
+    /// The /INTER/TYPEn number.
+    fn type_number(&self) -> u32;
+
+    /// What its pairs are made of.
+    fn candidate_kind(&self) -> CandidateKind;
+
+    /// How its candidates are found.
+    fn search(&self) -> CandidateSearch;
+
+    /// Its options and the common ones from the deck's card, `None` when the
+    /// card is of another type.
+    fn from_card(kind: &InterfaceKind) -> Option<(Self, CardCommon)>
+    where
+        Self: Sized;
+
+    /// Its passes: by default one, the secondary nodes against the main segments.
+    fn passes<'a>(&self, i: &'a model::Interface) -> Vec<PassSides<'a>> {
+        vec![PassSides {
+            sec: i.secondary_nodes.clone(),
+            own: None,
+            main: &i.main_segments,
+        }]
+    }
+
+    /// Its gap rule (constant, variable, default from the surface sizes).
+    fn gap_rule(&self, common: &CardCommon, sizes: &SurfaceSizes) -> GapRule;
+
+    /// Bumult: the sorting margin as a fraction of the mean segment edge.
+    fn sorting_margin(&self) -> f64;
+
+    /// Stiffness of a main segment on a solid of bulk modulus `bulk`, with
+    /// the segment's `area` and the element's `volume`.
+    fn solid_segment_stiffness(&self, bulk: f64, area: f64, volume: f64) -> f64;
+
+    /// The stiffness of pair (secondary k, segment m).
+    fn pair_stiffness(&self, it: &Interface, p: &Pass, k: usize, m: usize) -> f64;
+
+    /// Walk types: the node's segment this cycle from the last one `s0`
+    /// (`x_of`: a cnode's position, `None` when not on this rank; `seg_on`:
+    /// false for segments removed by Idel).
+    fn walk(
+        &self,
+        _it: &Interface,
+        _p: &Pass,
+        _s0: u32,
+        _xs: V3,
+        _x_of: &dyn Fn(u32) -> Option<V3>,
+        _seg_on: &dyn Fn(u32) -> bool,
+    ) -> Option<u32> {
+        None
+    }
+
+    /// How much farther than gap + 2·margin + segment size the ghost boxes
+    /// reach (a walk reads the segments around the nodes it passes).
+    fn walk_reach(&self, _max_diag: f64) -> f64 {
+        0.0
+    }
+
+    /// Irem_gap = 2: the sort leaves out main segments with a node closer
+    /// than 2·Gapmin to the secondary node in the initial configuration.
+    fn removes_initially_close(&self) -> bool {
+        false
+    }
+
+    /// The pair kernel: the force of one pair, and its memory.
+    fn pair(&self, c: &PairContext, ns: &mut NodeState, st: &mut PairState) -> PairOutcome;
+
+    /// Its time step contribution: the kinematic step of a pair (EQ.
+    /// 8.8.5.1), `None` when the type does not limit it. (Every pair limits
+    /// the nodal step through its tangent stiffness `PairForce::kt`.)
+    fn kinematic_step(&self, _f: &PairForce) -> Option<f64> {
+        None
+    }
+
+    /// Its initial-penetration rule: what happens to a pair of gap `g` found
+    /// penetrated at the first sort, and the penetration it measured.
+    fn initial_penetration(
+        &self,
+        it: &Interface,
+        xs: V3,
+        xm: &[V3; 4],
+        tri: bool,
+        g: f64,
+    ) -> (InitialPenetration, f64);
+}
+
+/// Work done on a type known at compile time ([`TypeOptions::visit`]).
+pub trait TypeVisitor {
+    type Out;
+    fn visit<T: InterfaceType>(self, t: &T) -> Self::Out;
+}
+
+/// The registry: one line per interface type, `number => file::Type`.
+/// It declares the type's file (module), and makes [`TypeOptions`] (a
+/// serialisable enum with one variant per type, holding the type's options),
+/// its dispatch to the type's [`InterfaceType`], the look-up by type number
+/// and the conversion from the deck's card.
+macro_rules! registry {
+    ($($number:literal => $file:ident :: $variant:ident),* $(,)?) => {
+        $(pub mod $file;)*
+
+        /// The options of one registered interface type.
+        #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+        pub enum TypeOptions {
+            $($variant($file::$variant)),*
+        }
+
+        impl TypeOptions {
+            /// The type's implementation.
+            pub fn implementation(&self) -> &dyn InterfaceType {
+                match self {
+                    $(TypeOptions::$variant(t) => t),*
+                }
+            }
+
+            /// `v.visit(t)` on the type `t`, statically dispatched (the
+            /// per-pair loops are compiled for each type, so its kernel
+            /// inlines).
+            pub fn visit<V: TypeVisitor>(&self, v: V) -> V::Out {
+                match self {
+                    $(TypeOptions::$variant(t) => v.visit(t)),*
+                }
+            }
+
+            /// The type of number `n` with its default options.
+            pub fn by_number(n: u32) -> Option<TypeOptions> {
+                match n {
+                    $($number => Some(TypeOptions::$variant(<$file::$variant>::default())),)*
+                    _ => None,
+                }
+            }
+
+            /// The type numbers the engine computes.
+            pub const NUMBERS: &'static [u32] = &[$($number),*];
+
+            /// The type of the deck's card, with the common options; `None`
+            /// for a card of a type the engine does not compute.
+            pub fn from_card(kind: &InterfaceKind) -> Option<(TypeOptions, CardCommon)> {
+                $(if let Some((t, c)) = <$file::$variant as InterfaceType>::from_card(kind) {
+                    return Some((TypeOptions::$variant(t), c));
+                })*
+                None
+            }
+        }
+    };
+}
+
+registry! {
+    3 => type3::Type3,
+    5 => type5::Type5,
+    7 => type7::Type7,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_registered_number_resolves_to_its_type_and_candidate_kind() {
+        assert_eq!(TypeOptions::NUMBERS, &[3, 5, 7]);
+        let expect = [
+            (3, CandidateKind::NodeToSegment, CandidateSearch::Walk),
+            (5, CandidateKind::NodeToSegment, CandidateSearch::Walk),
+            (7, CandidateKind::NodeToSegment, CandidateSearch::Sort),
+        ];
+        for (n, kind, search) in expect {
+            let t = TypeOptions::by_number(n).unwrap_or_else(|| panic!("TYPE{n} registered"));
+            let imp = t.implementation();
+            assert_eq!(imp.type_number(), n);
+            assert_eq!(imp.candidate_kind(), kind, "TYPE{n}");
+            assert_eq!(imp.search(), search, "TYPE{n}");
+        }
+        assert!(matches!(
+            TypeOptions::by_number(3),
+            Some(TypeOptions::Type3(_))
+        ));
+        assert!(matches!(
+            TypeOptions::by_number(5),
+            Some(TypeOptions::Type5(_))
+        ));
+        assert!(matches!(
+            TypeOptions::by_number(7),
+            Some(TypeOptions::Type7(_))
+        ));
+        // TYPE2 is the tied interface (contact::tied), not a registered type;
+        // TYPE11 is read from the deck but not computed yet.
+        assert!(TypeOptions::by_number(2).is_none());
+        assert!(TypeOptions::by_number(11).is_none());
+    }
+
+    #[test]
+    fn a_side_holds_its_nodes() {
+        assert_eq!(Side::node(9).nodes(), &[9]);
+        assert_eq!(Side::segment(&[1, 2, 3, 3]).nodes(), &[1, 2, 3]);
+        assert_eq!(Side::segment(&[1, 2, 3, 4]).nodes(), &[1, 2, 3, 4]);
+    }
 }

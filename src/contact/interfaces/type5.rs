@@ -6,9 +6,219 @@
 //! contact point (EQ. 8.6.6.6); friction is incremental Coulomb with
 //! Kt = K/10 (EQ. 8.5.4.1–4) and the Ifric laws and filter of §8.6.4.
 
-use super::{PairForce, PairState};
+use super::{
+    CandidateKind, CandidateSearch, CardCommon, InterfaceType, NodeState, PairContext, PairForce,
+    PairOutcome, PairState, SurfaceSizes, NODE_SHAPE,
+};
 use crate::contact::friction::{self, FrictionLaw};
+use crate::contact::gap::{self, GapRule, InitialPenetration};
 use crate::contact::geometry::{self as geo, V3};
+use super::layout::{self, Interface, Pass};
+use crate::contact::stiffness;
+use crate::model::InterfaceKind;
+use serde::{Deserialize, Serialize};
+
+/// TYPE5 has no options of its own beyond the common ones
+/// (`interfaces::CardCommon`: Stfac, Fric and its law, Gap, Tstart/Tstop,
+/// IBC, Inacti, Idel).
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct Type5 {}
+
+impl InterfaceType for Type5 {
+    fn type_number(&self) -> u32 {
+        5
+    }
+
+    fn candidate_kind(&self) -> CandidateKind {
+        CandidateKind::NodeToSegment
+    }
+
+    fn search(&self) -> CandidateSearch {
+        CandidateSearch::Walk
+    }
+
+    fn from_card(kind: &InterfaceKind) -> Option<(Self, CardCommon)> {
+        let InterfaceKind::Type5(t) = kind else {
+            return None;
+        };
+        let common = CardCommon {
+            stfac: t.stfac,
+            friction: FrictionLaw {
+                ifric: t.ifric,
+                fric: t.fric,
+                c: t.fric_coefs.unwrap_or([0.0; 6]),
+                ifiltr: t.ifiltr,
+                xfreq: t.xfreq,
+                ..FrictionLaw::none()
+            },
+            gap_card: t.gap,
+            tstart: t.tstart,
+            tstop: t.tstop,
+            ibc: t.ibc,
+            inacti: t.inacti,
+            idel: t.idel,
+        };
+        Some((Type5 {}, common))
+    }
+
+    fn gap_rule(&self, common: &CardCommon, _sizes: &SurfaceSizes) -> GapRule {
+        constant_gap(common.gap_card)
+    }
+
+    fn sorting_margin(&self) -> f64 {
+        DEFAULT_BUMULT
+    }
+
+    /// EQ. 8.5.3.3.
+    fn solid_segment_stiffness(&self, bulk: f64, area: f64, volume: f64) -> f64 {
+        stiffness::brick_type3(bulk, area, volume)
+    }
+
+    /// s·Km (§8.6.3).
+    fn pair_stiffness(&self, it: &Interface, p: &Pass, _k: usize, m: usize) -> f64 {
+        it.stfac * p.seg_k[m]
+    }
+
+    fn walk(
+        &self,
+        it: &Interface,
+        p: &Pass,
+        s0: u32,
+        xs: V3,
+        x_of: &dyn Fn(u32) -> Option<V3>,
+        seg_on: &dyn Fn(u32) -> bool,
+    ) -> Option<u32> {
+        walk(p, s0, xs, walk_reach(it, p), x_of, seg_on)
+    }
+
+    fn walk_reach(&self, max_diag: f64) -> f64 {
+        2.0 * max_diag
+    }
+
+    #[inline]
+    fn pair(&self, c: &PairContext, _ns: &mut NodeState, st: &mut PairState) -> PairOutcome {
+        let k = self.pair_stiffness(c.it, c.p, c.k, c.m as usize);
+        kernel(c, k, st)
+    }
+
+    fn initial_penetration(
+        &self,
+        it: &Interface,
+        xs: V3,
+        xm: &[V3; 4],
+        tri: bool,
+        g: f64,
+    ) -> (InitialPenetration, f64) {
+        initial_penetration(it, xs, xm, tri, g)
+    }
+}
+
+/// Bumult of the types whose card has none.
+pub const DEFAULT_BUMULT: f64 = 0.2;
+
+/// The constant gap of TYPE3 and TYPE5.
+pub fn constant_gap(gap: f64) -> GapRule {
+    GapRule {
+        igap: 1000,
+        gapmin: gap,
+        fscalegap: 1.0,
+        gapmax: 1e30,
+        mesh_size_pct: 0.4,
+    }
+}
+
+/// How far the walk may look: a node within gap + 2·margin + the largest
+/// segment of its last segment's nodes walks.
+pub fn walk_reach(it: &Interface, p: &Pass) -> f64 {
+    it.max_gap + 2.0 * it.margin + p.max_diag
+}
+
+/// The TYPE3/TYPE5 pair at spring stiffness `k` and the constant gap.
+pub fn kernel(c: &PairContext, k: f64, st: &mut PairState) -> PairOutcome {
+    let m = c.m as usize;
+    let inp = Pair {
+        xs: c.xs,
+        vs: c.vs,
+        xm: c.xm,
+        vm: c.vm,
+        tri: c.p.is_tri(m),
+        k,
+        gap: c.it.gap.gapmin,
+        friction: &c.it.friction,
+        area: c.p.seg_area[m],
+        dt: c.dt,
+    };
+    match pair(&inp, st) {
+        Some(f) => PairOutcome::Force(f),
+        None => PairOutcome::Free,
+    }
+}
+
+/// One-sided penetration (no Fpenmax on TYPE3, 5); Inacti decides.
+pub fn initial_penetration(
+    it: &Interface,
+    xs: V3,
+    xm: &[V3; 4],
+    tri: bool,
+    g: f64,
+) -> (InitialPenetration, f64) {
+    let p0 = penetration(xs, xm, tri, g).map(|r| r.0).unwrap_or(0.0);
+    (gap::initial_penetration(it.inacti, 0.0, p0, g), p0)
+}
+
+/// TYPE5's engine search (§8.6.6.1): from the previous closest segment S0,
+/// the node M1 of S0 closest to N; the segments around M1; the closest main
+/// node M2 among their nodes; the closest of the segments around M2. The walk
+/// is only taken while N is within `reach` of S0's nodes (farther nodes keep
+/// their segment), so it only ever reads nodes every rank can see.
+/// Segments removed by Idel (`seg_on` false) are never chosen, nor walked through.
+pub fn walk(
+    p: &Pass,
+    s0: u32,
+    xs: V3,
+    reach: f64,
+    x_of: &dyn Fn(u32) -> Option<V3>,
+    seg_on: &dyn Fn(u32) -> bool,
+) -> Option<u32> {
+    let seg0 = p.segs[s0 as usize];
+    let mut m1: Option<(f64, u32)> = None;
+    for &c in &seg0 {
+        let xc = x_of(c)?;
+        let d = geo::norm(geo::sub(xc, xs));
+        if d > reach {
+            return None;
+        }
+        if m1.is_none_or(|b| d < b.0 || (d == b.0 && c < b.1)) {
+            m1 = Some((d, c));
+        }
+    }
+    let (_, m1) = m1?;
+    let mut m2: Option<(f64, u32)> = None;
+    for &sg in p.segments_around(m1) {
+        if !seg_on(sg) {
+            continue;
+        }
+        for &c in &p.segs[sg as usize] {
+            let xc = x_of(c)?;
+            let d = geo::norm(geo::sub(xc, xs));
+            if m2.is_none_or(|b| d < b.0 || (d == b.0 && c < b.1)) {
+                m2 = Some((d, c));
+            }
+        }
+    }
+    let (_, m2) = m2?;
+    layout::closest_segment(p.segments_around(m2), xs, |sg| {
+        if !seg_on(sg) {
+            return None;
+        }
+        let seg = p.segs[sg as usize];
+        let mut x = [[0.0; 3]; 4];
+        for i in 0..4 {
+            x[i] = x_of(seg[i])?;
+        }
+        Some(x)
+    })
+}
 
 pub struct Pair<'a> {
     pub xs: V3,
@@ -75,6 +285,7 @@ pub fn pair(p: &Pair, st: &mut PairState) -> Option<PairForce> {
     let fs = geo::add(geo::scale(n, f_n), f_t);
     Some(PairForce {
         fs,
+        sec_shape: NODE_SHAPE,
         shape: pr.shape,
         kt: p.k,
         dt_kin: f64::INFINITY,

@@ -16,10 +16,224 @@
 //!   step sees as VISF·√(2·K·M)/Δt (with Δt the last step): a node sliding
 //!   under friction is integrated with a step at which that damper is stable.
 
-use super::{PairForce, PairState};
+use super::{
+    CandidateKind, CandidateSearch, CardCommon, InterfaceType, NodeState, PairContext, PairForce,
+    PairOutcome, PairState, SurfaceSizes, NODE_SHAPE,
+};
 use crate::contact::friction::{self, FrictionLaw};
+use crate::contact::gap::{self, GapRule, InitialPenetration};
 use crate::contact::geometry::{self as geo, V3};
+use super::layout::{Interface, Pass};
 use crate::contact::stiffness;
+use crate::model::InterfaceKind;
+use serde::{Deserialize, Serialize};
+
+/// TYPE7's own options (the /INTER/TYPE7 card's fields the engine reads
+/// beyond the common ones).
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct Type7 {
+    /// Istf, Stmin, Stmax: how the pair stiffness combines the sides' (card eq. (1)–(5)).
+    pub istf: i64,
+    pub stmin: f64,
+    pub stmax: f64,
+    /// VISs: critical damping factor of the normal damper.
+    pub viss: f64,
+    /// Bumult: sorting margin factor.
+    pub bumult: f64,
+    /// Fpenmax: initial penetration (fraction of the gap) beyond which the node is deactivated.
+    pub fpenmax: f64,
+    /// dtmin and ITIED: a pair whose time step falls below dtmin removes the
+    /// node (ITIED = 0) or ties it (1, 2).
+    pub dtmin: f64,
+    pub itied: i64,
+    /// Irem_gap = 2.
+    pub irem_gap: bool,
+    /// The gap card: Igap (0 read as 1000), Gapmin (0: the default), Fscale_gap, Gapmax, %mesh_size.
+    pub igap: i64,
+    pub gapmin: f64,
+    pub fscalegap: f64,
+    pub gapmax: f64,
+    pub mesh_size_pct: f64,
+}
+
+impl InterfaceType for Type7 {
+    fn type_number(&self) -> u32 {
+        7
+    }
+
+    fn candidate_kind(&self) -> CandidateKind {
+        CandidateKind::NodeToSegment
+    }
+
+    fn search(&self) -> CandidateSearch {
+        CandidateSearch::Sort
+    }
+
+    fn from_card(kind: &InterfaceKind) -> Option<(Self, CardCommon)> {
+        let InterfaceKind::Type7(t) = kind else {
+            return None;
+        };
+        let common = CardCommon {
+            stfac: t.stfac,
+            friction: FrictionLaw {
+                ifric: t.ifric,
+                fric: t.fric,
+                c: t.fric_coefs.unwrap_or([0.0; 6]),
+                ifiltr: t.ifiltr,
+                xfreq: t.xfreq,
+                iform: if t.iform == 2 { 2 } else { 1 },
+                visf: t.visf,
+                ..FrictionLaw::none()
+            },
+            gap_card: t.gapmin,
+            tstart: t.tstart,
+            tstop: t.tstop,
+            ibc: t.ibc,
+            inacti: t.inacti,
+            idel: t.idel,
+        };
+        let own = Type7 {
+            istf: t.istf,
+            stmin: t.stmin,
+            stmax: t.stmax,
+            viss: t.viss,
+            bumult: t.bumult,
+            fpenmax: t.fpenmax,
+            dtmin: t.dtmin,
+            itied: t.itied,
+            irem_gap: t.irem_gap == 2,
+            igap: t.igap,
+            gapmin: t.gapmin,
+            fscalegap: t.fscalegap,
+            gapmax: t.gapmax,
+            mesh_size_pct: t.mesh_size_pct,
+        };
+        Some((own, common))
+    }
+
+    /// Igap 1000 (or 0): constant Gapmin; 1, 2, 3: variable (card eq. (8)–(10)).
+    /// Gapmin 0: the default of card comment 10, from the mean main shell
+    /// thickness (Igap 0, 1000) or the smallest one.
+    fn gap_rule(&self, _common: &CardCommon, sizes: &SurfaceSizes) -> GapRule {
+        let igap = self.igap;
+        let shell_t = if sizes.n_shell == 0 {
+            None
+        } else if igap == 1000 || igap == 0 {
+            Some(sizes.thick_sum / sizes.n_shell as f64)
+        } else {
+            Some(sizes.thick_min)
+        };
+        let gapmin = if self.gapmin > 0.0 {
+            self.gapmin
+        } else {
+            gap::type7_default_gapmin(shell_t, sizes.l_min)
+        };
+        GapRule {
+            igap: if igap == 0 { 1000 } else { igap },
+            gapmin,
+            fscalegap: self.fscalegap,
+            gapmax: self.gapmax,
+            mesh_size_pct: self.mesh_size_pct,
+        }
+    }
+
+    fn sorting_margin(&self) -> f64 {
+        self.bumult
+    }
+
+    fn solid_segment_stiffness(&self, bulk: f64, area: f64, volume: f64) -> f64 {
+        stiffness::brick_type7(bulk, area, volume)
+    }
+
+    /// By Istf (card eq. (1)–(3)).
+    fn pair_stiffness(&self, it: &Interface, p: &Pass, k: usize, m: usize) -> f64 {
+        stiffness::type7_pair(
+            self.istf,
+            it.stfac,
+            it.stfac * p.seg_k[m],
+            p.sec_k[k],
+            self.stmin,
+            self.stmax,
+        )
+    }
+
+    fn removes_initially_close(&self) -> bool {
+        self.irem_gap
+    }
+
+    /// The pair's gap (Inacti 5, 6: the corrected one, which follows the node
+    /// back out), the penalty or tied force, and dtmin / ITIED.
+    #[inline]
+    fn pair(&self, c: &PairContext, ns: &mut NodeState, st: &mut PairState) -> PairOutcome {
+        let (it, p, k, m) = (c.it, c.p, c.k, c.m as usize);
+        let tri = p.is_tri(m);
+        let nominal = it.pair_gap(p, k, m);
+        let gi = ns.gap0.binary_search_by_key(&c.m, |e| e.0);
+        let g = match gi {
+            Ok(i) => ns.gap0[i].1,
+            Err(_) => nominal,
+        };
+        let k0 = self.pair_stiffness(it, p, k, m);
+        let inp = Pair {
+            xs: c.xs,
+            vs: c.vs,
+            ms: c.ms,
+            xm: c.xm,
+            vm: c.vm,
+            tri,
+            k0,
+            gap: g,
+            viss: self.viss,
+            friction: &it.friction,
+            area: p.seg_area[m],
+            dt: c.dt,
+        };
+        let f = if st.tie.is_some() {
+            tied(&inp, st, self.itied)
+        } else {
+            pair(&inp, st)
+        };
+        // Inacti 5/6: the corrected gap follows the node back out.
+        if let Ok(i) = gi {
+            let d = geo::project(c.xs, c.xm, tri).dist;
+            let (_, g0, clear) = ns.gap0[i];
+            ns.gap0[i].1 = gap::relax_gap(g0, nominal, d, clear);
+        }
+        let Some(f) = f else {
+            return PairOutcome::Free;
+        };
+        // dtmin / ITIED.
+        if self.dtmin > 0.0 && st.tie.is_none() {
+            let dtp = f.dt_kin.min((2.0 * c.ms / f.kt).sqrt());
+            if dtp < self.dtmin {
+                if self.itied == 0 {
+                    ns.off = true;
+                    return PairOutcome::NodeOff;
+                }
+                st.tie = Some((f.shape, geo::sub(c.xs, f.point)));
+            }
+        }
+        PairOutcome::Force(f)
+    }
+
+    /// EQ. 8.8.5.1: 0.5·(Gap − P)/(dP/dt).
+    fn kinematic_step(&self, f: &PairForce) -> Option<f64> {
+        Some(f.dt_kin)
+    }
+
+    /// Penetration g − d on both sides; Inacti and Fpenmax decide.
+    fn initial_penetration(
+        &self,
+        it: &Interface,
+        xs: V3,
+        xm: &[V3; 4],
+        tri: bool,
+        g: f64,
+    ) -> (InitialPenetration, f64) {
+        let p0 = g - geo::project(xs, xm, tri).dist;
+        (gap::initial_penetration(it.inacti, self.fpenmax, p0, g), p0)
+    }
+}
 
 /// A TYPE7 pair's inputs.
 pub struct Pair<'a> {
@@ -104,6 +318,7 @@ pub fn pair(p: &Pair, st: &mut PairState) -> Option<PairForce> {
     };
     Some(PairForce {
         fs,
+        sec_shape: NODE_SHAPE,
         shape: pr.shape,
         kt: k_step,
         dt_kin,
@@ -157,6 +372,7 @@ pub fn tied(p: &Pair, st: &mut PairState, itied: i64) -> Option<PairForce> {
     }
     Some(PairForce {
         fs,
+        sec_shape: NODE_SHAPE,
         shape,
         kt: p.k0,
         dt_kin: f64::INFINITY,
@@ -294,6 +510,97 @@ mod tests {
         let mut inp = input([0.5, 0.5, 0.05], [1.0, 0.0, 0.0], &xm, &vm, &none);
         inp.dt = 1e-4;
         assert!((pair(&inp, &mut st).unwrap().kt - 4000.0).abs() < 1e-9);
+    }
+
+    /// One secondary node over one flat main segment, through the registry
+    /// and the trait's kernel.
+    #[test]
+    fn the_registered_kernel_gives_the_penalty_force_over_a_flat_segment() {
+        use crate::contact::interfaces::TypeOptions;
+        let Some(TypeOptions::Type7(own)) = TypeOptions::by_number(7) else {
+            panic!("TYPE7 is registered");
+        };
+        // Istf = 1000: K0 = Stfac·Km (card eq. (1)); Km = 1000, Stfac = 1.
+        let own = Type7 {
+            istf: 1000,
+            stmax: 1e30,
+            ..own
+        };
+        let p = Pass {
+            segs: vec![[0, 1, 2, 3]],
+            seg_k: vec![1000.0],
+            seg_gap: vec![0.0],
+            seg_lmin: vec![1.0],
+            seg_area: vec![1.0],
+            sec: vec![4],
+            sec_k: vec![0.0],
+            sec_gap: vec![0.0],
+            sec_lmin: vec![0.0],
+            ..Pass::default()
+        };
+        // Constant gap 0.1 (Igap 1000).
+        let it = Interface {
+            id: 1,
+            type_number: 7,
+            title: String::new(),
+            options: TypeOptions::Type7(own),
+            passes: Vec::new(),
+            gap: GapRule {
+                igap: 1000,
+                gapmin: 0.1,
+                fscalegap: 1.0,
+                gapmax: 1e30,
+                mesh_size_pct: 0.4,
+            },
+            max_gap: 0.1,
+            margin: 0.01,
+            stfac: 1.0,
+            friction: FrictionLaw::none(),
+            tstart: 0.0,
+            tstop: 1e30,
+            ibc: [false; 3],
+            inacti: 0,
+            idel: 0,
+        };
+        let xm = plate();
+        let vm = [[0.0; 3]; 4];
+        let c = PairContext {
+            it: &it,
+            p: &p,
+            k: 0,
+            m: 0,
+            xs: [0.25, 0.5, 0.03],
+            vs: [0.0; 3],
+            ms: 1.0,
+            xm: &xm,
+            vm: &vm,
+            dt: 1e-3,
+        };
+        let mut ns = NodeState::default();
+        let mut st = PairState::default();
+        let PairOutcome::Force(f) = it.ty().pair(&c, &mut ns, &mut st) else {
+            panic!("the node is inside the gap");
+        };
+        // By hand: P = Gap − d = 0.1 − 0.03 = 0.07; Ks = K0·Gap/(Gap − P)
+        // (EQ. 8.8.9.1, 8.8.11.1); F = Ks·P along the normal +z; no damper
+        // (VISs = 0), no friction.
+        let (k0, gap, pen) = (1000.0, 0.1, 0.07);
+        let ks = k0 * gap / (gap - pen);
+        let expect = ks * pen;
+        assert!((f.pen - pen).abs() < 1e-15);
+        assert_eq!(f.dir, [0.0, 0.0, 1.0]);
+        assert!((f.fs[2] - expect).abs() < 1e-12 * expect, "{:?}", f.fs);
+        assert_eq!((f.fs[0], f.fs[1]), (0.0, 0.0));
+        assert!((f.f_n - expect).abs() < 1e-12 * expect);
+        // Kt = K0·Gap²/(Gap − P)² (EQ. 8.8.9.2).
+        let kt = k0 * (gap / (gap - pen)).powi(2);
+        assert!((f.kt - kt).abs() < 1e-12 * kt);
+        // The node takes all of F; the segment's shape functions sum to one.
+        assert_eq!(f.sec_shape, NODE_SHAPE);
+        assert!((f.shape.iter().sum::<f64>() - 1.0).abs() < 1e-15);
+        // Not closing: no kinematic limit (EQ. 8.8.5.1 needs dP/dt > 0).
+        assert_eq!(it.ty().kinematic_step(&f), Some(f64::INFINITY));
+        assert!(!ns.off);
     }
 
     #[test]

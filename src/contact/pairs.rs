@@ -1,0 +1,356 @@
+//! Every owned pair's force, for any interface type: per secondary node,
+//! the candidates its type's search gives (the sorted list, or the segment
+//! its walk reaches), the type's pair kernel on each, and each pair's
+//! contributions to its nodes, keyed for the fixed summation order
+//! (`key::SumKey`). Nodes are computed in parallel and gathered in order.
+//! The loops are compiled for each registered type
+//! (`interfaces::TypeOptions::visit`), so the type's kernel inlines.
+
+use super::exchange::Contribution;
+use super::geometry::{self as geo, V3};
+use super::interfaces::{
+    CandidateSearch, InterfaceType, NodeState, PairContext, PairForce, PairNodes, PairOutcome,
+    PairState, Side, TypeVisitor,
+};
+use super::key::{SumKey, SECONDARY_CORNER};
+use super::setup::{Interface, Pass, NONE};
+use super::{seg_values, ContactSystem, InterfaceSums, PassRun, Removal};
+use rayon::prelude::*;
+
+/// One node's pairs: their contributions, the smallest kinematic step (with
+/// the interface id), and their sums.
+#[derive(Default)]
+struct NodeOut {
+    contribs: Vec<Contribution>,
+    step: Option<(f64, u64)>,
+    sums: InterfaceSums,
+}
+
+/// What every node of one pass reads.
+struct PassView<'a> {
+    it: &'a Interface,
+    p: &'a Pass,
+    ii: usize,
+    pi: usize,
+    cx: &'a [V3],
+    cv: &'a [V3],
+    avail: &'a [bool],
+    local: &'a [u32],
+    mass: &'a [f64],
+    /// Global node index of each cnode.
+    nodes_g: &'a [u32],
+    /// IBC bits to release on an impacting secondary node.
+    ibc: u8,
+    dt: f64,
+}
+
+/// One owned secondary node's memory.
+struct NodeMemory<'a> {
+    ns: &'a mut NodeState,
+    /// Sorting types: the pair memory of its candidates.
+    pairs: &'a mut [PairState],
+    /// Walk types: its current pair.
+    walk_pair: &'a mut (u32, PairState),
+}
+
+impl ContactSystem {
+    /// Every owned pair's force, as contributions, and the smallest kinematic step.
+    pub(super) fn pairs(
+        &mut self,
+        mass: &[f64],
+        t: f64,
+        dt: f64,
+    ) -> (Vec<Contribution>, Option<(f64, u64)>) {
+        let mut out: Vec<Contribution> = Vec::new();
+        let mut best: Option<(f64, u64)> = None;
+        for s in self.sums.iter_mut() {
+            *s = InterfaceSums {
+                energy: s.energy,
+                ..Default::default()
+            };
+        }
+        for (ii, it) in self.setup.interfaces.iter().enumerate() {
+            if t < it.tstart || t > it.tstop {
+                continue;
+            }
+            let ibc = (it.ibc[0] as u8) | ((it.ibc[1] as u8) << 1) | ((it.ibc[2] as u8) << 2);
+            for (pi, p) in it.passes.iter().enumerate() {
+                let view = PassView {
+                    it,
+                    p,
+                    ii,
+                    pi,
+                    cx: &self.cx,
+                    cv: &self.cv,
+                    avail: &self.avail,
+                    local: &self.local,
+                    mass,
+                    nodes_g: &self.setup.nodes,
+                    ibc,
+                    dt,
+                };
+                let results = it.options.visit(PassPairs {
+                    v: &view,
+                    run: &mut self.runs[ii][pi],
+                });
+                let acc = &mut self.sums[ii];
+                for r in results {
+                    out.extend(r.contribs);
+                    if let Some(st) = r.step {
+                        if best.is_none_or(|b| st < b) {
+                            best = Some(st);
+                        }
+                    }
+                    for k in 0..3 {
+                        acc.f_normal[k] += r.sums.f_normal[k];
+                        acc.f_tangent[k] += r.sums.f_tangent[k];
+                    }
+                    acc.pairs += r.sums.pairs;
+                    acc.energy += r.sums.energy * dt;
+                }
+            }
+        }
+        (out, best)
+    }
+}
+
+/// One pass's pairs, for the pass's interface type.
+struct PassPairs<'a, 'b> {
+    v: &'b PassView<'a>,
+    run: &'b mut PassRun,
+}
+
+impl TypeVisitor for PassPairs<'_, '_> {
+    type Out = Vec<NodeOut>;
+    fn visit<T: InterfaceType>(self, ty: &T) -> Vec<NodeOut> {
+        pass_pairs(ty, self.v, self.run)
+    }
+}
+
+/// The pairs of every node this rank owns in one pass, in node order.
+fn pass_pairs<T: InterfaceType>(ty: &T, v: &PassView, run: &mut PassRun) -> Vec<NodeOut> {
+    let PassRun {
+        mine,
+        nodes,
+        cand,
+        state,
+        walk_pair,
+        removal,
+    } = run;
+    // Split the pair memory by node so each node owns its slice.
+    let mut slices: Vec<&mut [PairState]> = Vec::with_capacity(mine.len());
+    let mut rest: &mut [PairState] = state;
+    for j in 0..mine.len() {
+        let (a, b) = rest.split_at_mut(cand.ptr[j + 1] - cand.ptr[j]);
+        slices.push(a);
+        rest = b;
+    }
+    let cand = &*cand;
+    let removal = &*removal;
+    mine.par_iter()
+        .zip(nodes.par_iter_mut())
+        .zip(slices.into_par_iter())
+        .zip(walk_pair.par_iter_mut())
+        .enumerate()
+        .map(|(j, (((&k, ns), pairs), walk_pair))| {
+            let mem = NodeMemory {
+                ns,
+                pairs,
+                walk_pair,
+            };
+            let segs = &cand.segs[cand.ptr[j]..cand.ptr[j + 1]];
+            node_pairs(ty, v, removal, k as usize, segs, mem)
+        })
+        .collect()
+}
+
+/// The pairs of secondary node k (index into the pass's `sec`): its sorted
+/// candidates `segs`, or the segment its walk reaches.
+fn node_pairs<T: InterfaceType>(
+    ty: &T,
+    v: &PassView,
+    removal: &Removal,
+    k: usize,
+    segs: &[u32],
+    mem: NodeMemory,
+) -> NodeOut {
+    let mut out = NodeOut::default();
+    let ns = mem.ns;
+    if ns.off {
+        return out;
+    }
+    match ty.search() {
+        CandidateSearch::Sort => {
+            for (q, &m) in segs.iter().enumerate() {
+                if !one_pair(ty, v, k, m, ns, &mut mem.pairs[q], &mut out) {
+                    return NodeOut::default();
+                }
+            }
+        }
+        CandidateSearch::Walk => {
+            let node_off = removal.sec_off.get(k).copied().unwrap_or(false);
+            if node_off || ns.last_seg == NONE {
+                return out;
+            }
+            let xs = v.cx[v.p.sec[k] as usize];
+            let x_of = |c: u32| {
+                if v.avail[c as usize] {
+                    Some(v.cx[c as usize])
+                } else {
+                    None
+                }
+            };
+            let seg_on = |m: u32| !removal.seg_off.get(m as usize).copied().unwrap_or(false);
+            let Some(m) = ty.walk(v.it, v.p, ns.last_seg, xs, &x_of, &seg_on) else {
+                return out;
+            };
+            ns.last_seg = m;
+            let wp = mem.walk_pair;
+            if wp.0 != m {
+                *wp = (m, PairState::default());
+            }
+            if !one_pair(ty, v, k, m, ns, &mut wp.1, &mut out) {
+                return NodeOut::default();
+            }
+        }
+    }
+    out
+}
+
+/// Pair (secondary node k, segment m) through the type's kernel, its
+/// contributions added to `out`; false when the node leaves the interface.
+fn one_pair<T: InterfaceType>(
+    ty: &T,
+    v: &PassView,
+    k: usize,
+    m: u32,
+    ns: &mut NodeState,
+    st: &mut PairState,
+    out: &mut NodeOut,
+) -> bool {
+    if ns.off_segs.binary_search(&m).is_ok() {
+        return true;
+    }
+    let seg = &v.p.segs[m as usize];
+    let (Some(xm), Some(vm)) = (
+        seg_values(seg, v.avail, v.cx),
+        seg_values(seg, v.avail, v.cv),
+    ) else {
+        return true;
+    };
+    let s = v.p.sec[k];
+    let c = PairContext {
+        it: v.it,
+        p: v.p,
+        k,
+        m,
+        xs: v.cx[s as usize],
+        vs: v.cv[s as usize],
+        ms: v.mass[v.local[s as usize] as usize],
+        xm: &xm,
+        vm: &vm,
+        dt: v.dt,
+    };
+    let f = match ty.pair(&c, ns, st) {
+        PairOutcome::Free => return true,
+        PairOutcome::NodeOff => return false,
+        PairOutcome::Force(f) => f,
+    };
+    let nodes = PairNodes {
+        sec: Side::node(s),
+        main: Side::segment(seg),
+    };
+    let key = SumKey::pair(v.ii, v.pi, v.nodes_g[s as usize], m);
+    let vrel = geo::sub(c.vs, geo::interpolate(&f.shape, &vm));
+    emit(out, key, &nodes, &f, v.ibc, vrel);
+    if let Some(d) = ty.kinematic_step(&f) {
+        if d < out.step.map_or(f64::INFINITY, |b| b.0) {
+            out.step = Some((d, v.it.id));
+        }
+    }
+    true
+}
+
+/// Contributions of one pair: +w_j·F on the secondary side's nodes, −N_i·F
+/// on the main side's (EQ. 8.6.6.4–6), and its tangent stiffness on each
+/// in the same proportions; nodes of zero weight take nothing.
+fn emit(out: &mut NodeOut, key: SumKey, nodes: &PairNodes, f: &PairForce, ibc: u8, vrel: V3) {
+    for (j, &c) in nodes.sec.nodes().iter().enumerate() {
+        let w = f.sec_shape[j];
+        if w == 0.0 {
+            continue;
+        }
+        out.contribs.push(Contribution {
+            c,
+            key: key.at(SECONDARY_CORNER + j as u8),
+            f: geo::scale(f.fs, w),
+            k: f.kt * w,
+            ibc: if f.f_n > 0.0 { ibc } else { 0 },
+        });
+    }
+    for (i, &c) in nodes.main.nodes().iter().enumerate() {
+        if f.shape[i] == 0.0 {
+            continue;
+        }
+        out.contribs.push(Contribution {
+            c,
+            key: key.at(i as u8),
+            f: geo::scale(f.fs, -f.shape[i]),
+            k: f.kt * f.shape[i],
+            ibc: 0,
+        });
+    }
+    let sums = &mut out.sums;
+    for k in 0..3 {
+        sums.f_normal[k] += f.dir[k] * f.f_n;
+        sums.f_tangent[k] += f.f_t[k];
+    }
+    sums.pairs += 1;
+    sums.energy -= geo::dot(f.fs, vrel);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::contact::interfaces::NODE_SHAPE;
+
+    #[test]
+    fn a_node_to_segment_pair_gives_one_plus_four_keyed_contributions() {
+        let f = PairForce {
+            fs: [0.0, 0.0, 8.0],
+            sec_shape: NODE_SHAPE,
+            shape: [0.5, 0.25, 0.25, 0.0],
+            kt: 100.0,
+            f_n: 8.0,
+            dir: [0.0, 0.0, 1.0],
+            ..Default::default()
+        };
+        let nodes = PairNodes {
+            sec: Side::node(9),
+            main: Side::segment(&[1, 2, 3, 4]),
+        };
+        let key = SumKey::pair(2, 1, 900, 17);
+        let mut out = NodeOut::default();
+        emit(&mut out, key, &nodes, &f, 5, [0.0, 0.0, -1.0]);
+        let got: Vec<(u32, u8, f64, f64, u8)> = out
+            .contribs
+            .iter()
+            .map(|c| (c.c, c.key.corner, c.f[2], c.k, c.ibc))
+            .collect();
+        // The secondary node at corner 4 (+F), the segment's nodes of
+        // non-zero shape at corners 0..2 (−N_i·F); node 4 has N = 0.
+        assert_eq!(
+            got,
+            vec![
+                (9, 4, 8.0, 100.0, 5),
+                (1, 0, -4.0, 50.0, 0),
+                (2, 1, -2.0, 25.0, 0),
+                (3, 2, -2.0, 25.0, 0),
+            ]
+        );
+        assert!(out.contribs.iter().all(|c| c.key == key.at(c.key.corner)));
+        assert_eq!(out.sums.pairs, 1);
+        assert_eq!(out.sums.f_normal, [0.0, 0.0, 8.0]);
+        assert_eq!(out.sums.energy, 8.0);
+    }
+}
