@@ -193,3 +193,150 @@ pub fn route(world: &World, setup: &ContactSetup, out: Vec<Contribution>) -> Vec
     got.sort_unstable_by_key(|a| (a.c, a.key));
     got
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::parallel::{run_ranks, Serial};
+
+    /// Six contact nodes; with two ranks, 0–2 on rank 0 and 2–5 on rank 1 (node 2 shared).
+    fn setup(nranks: usize) -> ContactSetup {
+        let holders: Vec<Vec<u32>> = (0..6)
+            .map(|c| match (nranks, c) {
+                (1, _) => vec![0],
+                (_, 0 | 1) => vec![0],
+                (_, 2) => vec![0, 1],
+                _ => vec![1],
+            })
+            .collect();
+        let mut ptr = vec![0u32];
+        for h in &holders {
+            ptr.push(ptr.last().unwrap() + h.len() as u32);
+        }
+        ContactSetup {
+            nodes: (0..6).collect(),
+            x0: vec![[0.0; 3]; 6],
+            holders_ptr: ptr,
+            holders: holders.concat(),
+            ..Default::default()
+        }
+    }
+
+    /// Pair contributions as the pairs of several ranks would give them (made-up values).
+    fn contributions() -> Vec<Contribution> {
+        (0..40u32)
+            .map(|i| Contribution {
+                c: (i * 7) % 6,
+                key: SumKey::pair(0, (i % 2) as usize, 100 + (i * 13) % 17, i).at((i % 5) as u8),
+                f: [
+                    0.1 * i as f64 + 1e-9,
+                    -1.0 / (1.0 + i as f64),
+                    3.3e3 * (i % 3) as f64,
+                ],
+                k: i as f64,
+                ibc: 0,
+            })
+            .collect()
+    }
+
+    /// Each node's force summed in the order `route` returns.
+    fn sums(got: &[Contribution]) -> Vec<(u32, [u64; 3])> {
+        let mut out: Vec<(u32, V3)> = Vec::new();
+        for c in got {
+            match out.last_mut() {
+                Some((n, f)) if *n == c.c => (0..3).for_each(|k| f[k] += c.f[k]),
+                _ => out.push((c.c, c.f)),
+            }
+        }
+        out.into_iter()
+            .map(|(n, f)| (n, f.map(f64::to_bits)))
+            .collect()
+    }
+
+    #[test]
+    fn routed_contact_forces_sum_to_the_same_bits_on_one_and_two_ranks() {
+        let one = sums(&route(&Serial, &setup(1), contributions()));
+        assert_eq!(one.len(), 6);
+        let two = run_ranks(2, |w| {
+            // Each rank computed every other pair, in reverse order.
+            let mine: Vec<Contribution> = contributions()
+                .into_iter()
+                .enumerate()
+                .filter(|(i, _)| i % 2 == w.rank() as usize)
+                .map(|(_, c)| c)
+                .rev()
+                .collect();
+            sums(&route(w, &setup(2), mine))
+        });
+        let held = |r: u32| -> Vec<(u32, [u64; 3])> {
+            let s = setup(2);
+            one.iter()
+                .filter(|(n, _)| s.holders_of(*n).contains(&r))
+                .copied()
+                .collect()
+        };
+        assert_eq!(two[0], held(0));
+        assert_eq!(two[1], held(1));
+    }
+
+    #[test]
+    fn ghosts_are_the_owned_main_nodes_in_another_ranks_box() {
+        // Main nodes on a line x = 0, 1, 2, 3: rank 0 owns 0 and 1, rank 1 owns 2 and 3.
+        let plans = run_ranks(2, |w| {
+            let mut cx: Vec<V3> = (0..4).map(|i| [i as f64, 0.0, 0.0]).collect();
+            let mut cv = vec![[0.0; 3]; 4];
+            let me = w.rank();
+            let owned: Vec<u32> = if me == 0 { vec![0, 1] } else { vec![2, 3] };
+            // Rank 0's secondary nodes reach to x = 2.5; rank 1's stay beyond x = 2.5.
+            let b = if me == 0 {
+                Aabb {
+                    min: [-0.5, -1.0, -1.0],
+                    max: [2.5, 1.0, 1.0],
+                }
+            } else {
+                Aabb {
+                    min: [2.5, -1.0, -1.0],
+                    max: [3.5, 1.0, 1.0],
+                }
+            };
+            let plan = GhostPlan::build(w, &[b], &[owned], &cx);
+            // The owner moves its node; the ghost follows at the exchange.
+            if me == 1 {
+                cx[2] = [2.25, 0.5, 0.0];
+                cv[2] = [1.0, 2.0, 3.0];
+            }
+            plan.exchange(w, &mut cx, &mut cv);
+            (
+                plan.ranks.clone(),
+                plan.send.clone(),
+                plan.recv.clone(),
+                cx[2],
+                cv[2],
+            )
+        });
+        assert_eq!(
+            plans[0],
+            (
+                vec![1],
+                vec![vec![]],
+                vec![vec![2]],
+                [2.25, 0.5, 0.0],
+                [1.0, 2.0, 3.0]
+            )
+        );
+        assert_eq!(
+            plans[1],
+            (
+                vec![0],
+                vec![vec![2]],
+                vec![vec![]],
+                [2.25, 0.5, 0.0],
+                [1.0, 2.0, 3.0]
+            )
+        );
+        assert_eq!(
+            GhostPlan::build(&Serial, &[Aabb::EMPTY], &[vec![0]], &[[0.0; 3]]).ghost_count(),
+            0
+        );
+    }
+}

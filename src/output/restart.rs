@@ -454,12 +454,11 @@ pub fn save(
     w.dense_f64("nodes.fint", n, 6, &rows, &pack(&local, s.fint))?;
     w.dense_f64("nodes.fext", n, 6, &rows, &pack(&local, s.fext))?;
     for kr in super::runfile::kind_rows(ctx, s.blocks) {
-        let recs: Vec<Vec<u8>> = match kr.block {
-            Some(b) => (0..s.blocks[b].local().global.len())
-                .map(|e| s.blocks[b].export_state(e))
-                .collect(),
-            None => Vec::new(),
-        };
+        let recs: Vec<Vec<u8>> = kr
+            .members
+            .iter()
+            .map(|&(b, e)| s.blocks[b].export_state(e))
+            .collect();
         w.dense_bytes(
             &format!("elements.{}", kind_name(kr.kind)),
             kr.total,
@@ -703,12 +702,10 @@ pub fn restore(ctx: &Context, path: &Path, s: &mut LoopState) -> Result<OutputCo
                 kr.total
             )));
         }
-        if let Some(b) = kr.block {
-            for (e, rec) in recs.iter().enumerate() {
-                s.blocks[b]
-                    .import_state(e, rec)
-                    .map_err(|m| r.err(format!("section '{name}': {m}")))?;
-            }
+        for (&(b, e), rec) in kr.members.iter().zip(&recs) {
+            s.blocks[b]
+                .import_state(e, rec)
+                .map_err(|m| r.err(format!("section '{name}': {m}")))?;
         }
     }
     let mut tied: Vec<u64> = r.keyed("walls.tied")?.into_iter().map(|(k, _)| k).collect();

@@ -82,12 +82,32 @@ pub fn kind_name(k: ElementKind) -> &'static str {
 }
 
 /// One element kind present in the model: its global count, the rows this
-/// rank writes (its elements' global indices) and the local block holding them.
+/// rank writes (its elements' global indices) and where each row's element
+/// lives: (block, element in the block), in row order. A kind may be held by
+/// several blocks (one per formulation); every one of them is read.
 pub struct KindRows {
     pub kind: ElementKind,
     pub total: usize,
     pub rows: Rows,
-    pub block: Option<usize>,
+    pub members: Vec<(usize, usize)>,
+}
+
+/// The elements of one kind over every block holding it, in ascending global
+/// order: (global indices, (block, element in the block)).
+pub fn kind_members(
+    kind: ElementKind,
+    blocks: &[(ElementKind, &[u32])],
+) -> (Vec<u64>, Vec<(usize, usize)>) {
+    let mut all: Vec<(u32, usize, usize)> = blocks
+        .iter()
+        .enumerate()
+        .filter(|(_, (k, _))| *k == kind)
+        .flat_map(|(b, (_, global))| global.iter().enumerate().map(move |(e, &ge)| (ge, b, e)))
+        .collect();
+    all.sort_unstable();
+    all.into_iter()
+        .map(|(ge, b, e)| (ge as u64, (b, e)))
+        .unzip()
 }
 
 /// Element kinds present in the model (replicated), with this rank's rows.
@@ -100,15 +120,16 @@ pub fn kind_rows(
         .enumerate()
         .filter(|(ki, _)| !ctx.g.element_ids[*ki].is_empty())
         .map(|(ki, &kind)| {
-            let block = blocks.iter().position(|b| b.kind() == kind);
-            let rows = block
-                .map(|b| Rows::from_sorted(blocks[b].local().global.iter().map(|&e| e as u64)))
-                .unwrap_or_default();
+            let held: Vec<(ElementKind, &[u32])> = blocks
+                .iter()
+                .map(|b| (b.kind(), &b.local().global[..]))
+                .collect();
+            let (global, members) = kind_members(kind, &held);
             KindRows {
                 kind,
                 total: ctx.g.element_ids[ki].len(),
-                rows,
-                block,
+                rows: Rows::from_sorted(global.into_iter()),
+                members,
             }
         })
         .collect()
@@ -392,19 +413,17 @@ impl RunFile {
                 .create_group(kind_name(kr.kind))
                 .map_err(|e| e.to_string())?;
             let (mut conn, mut eids, mut pids) = (Vec::new(), Vec::new(), Vec::new());
-            if let Some(b) = kr.block {
+            for &(b, e) in &kr.members {
                 let le = blocks[b].local();
-                for (e, &ge) in le.global.iter().enumerate() {
-                    for &l in &le.nodes[nn * e..nn * (e + 1)] {
-                        conn.push(if l == NO_NODE {
-                            -1i64
-                        } else {
-                            sd.node_global[l as usize] as i64
-                        });
-                    }
-                    eids.push(g.element_ids[ki][ge as usize]);
-                    pids.push(g.parts[le.part[e] as usize].id);
+                for &l in &le.nodes[nn * e..nn * (e + 1)] {
+                    conn.push(if l == NO_NODE {
+                        -1i64
+                    } else {
+                        sd.node_global[l as usize] as i64
+                    });
                 }
+                eids.push(g.element_ids[ki][le.global[e] as usize]);
+                pids.push(g.parts[le.part[e] as usize].id);
             }
             let ds = self
                 .dcpl
@@ -507,7 +526,12 @@ impl RunFile {
             let sub = grp
                 .create_group(kind_name(kr.kind))
                 .map_err(|e| e.to_string())?;
-            let outs: Vec<ElemOut> = kr.block.map(|b| s.blocks[b].outputs()).unwrap_or_default();
+            let mut per_block: Vec<Option<Vec<ElemOut>>> = vec![None; s.blocks.len()];
+            let outs: Vec<ElemOut> = kr
+                .members
+                .iter()
+                .map(|&(b, e)| per_block[b].get_or_insert_with(|| s.blocks[b].outputs())[e])
+                .collect();
             let col = |f: fn(&ElemOut) -> f64| -> Vec<f64> { outs.iter().map(f).collect() };
             let write = |name: &str, vals: Vec<f64>| -> Result<(), String> {
                 let ds = self.dcpl.create::<f64>(&sub, name, &[kr.total])?;
@@ -604,5 +628,32 @@ impl InterfaceInfo {
             type_number,
             title: title.to_string(),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_block_of_a_kind_is_read_in_global_order() {
+        // Two shell blocks (two formulations) interleaved in global order, a brick block between.
+        let a: Vec<u32> = vec![0, 3, 4];
+        let b: Vec<u32> = vec![7];
+        let c: Vec<u32> = vec![1, 2, 6];
+        let blocks = [
+            (ElementKind::Shell4, &a[..]),
+            (ElementKind::Brick8, &b[..]),
+            (ElementKind::Shell4, &c[..]),
+        ];
+        let (global, members) = kind_members(ElementKind::Shell4, &blocks);
+        assert_eq!(global, vec![0, 1, 2, 3, 4, 6]);
+        assert_eq!(
+            members,
+            vec![(0, 0), (2, 0), (2, 1), (0, 1), (0, 2), (2, 2)]
+        );
+        let (global, members) = kind_members(ElementKind::Brick8, &blocks);
+        assert_eq!((global, members), (vec![7], vec![(1, 0)]));
+        assert_eq!(kind_members(ElementKind::Tetra4, &blocks), (vec![], vec![]));
     }
 }

@@ -1,7 +1,8 @@
 //! Communication between ranks, behind one trait: [`Comm`] has the MPI
 //! implementation ([`MpiWorld`], the only code that calls MPI) and a serial
-//! one ([`Serial`], one rank, no MPI at all) with which contact, the
-//! exchanges and the solver phases are unit-tested in-process.
+//! one ([`Serial`], one rank, no MPI at all), and in-process ranks on
+//! threads ([`run_ranks`]), with which contact, the exchanges between ranks
+//! and the solver phases are unit-tested without mpirun.
 //!
 //! The rest of the crate takes a `&World` (= `&dyn Comm`). Typed messages
 //! (`broadcast`, `allgather`, `scatter`) are bincode-encoded on top of the
@@ -9,9 +10,11 @@
 
 mod mpi_world;
 mod serial;
+mod threads;
 
 pub use mpi_world::MpiWorld;
 pub use serial::Serial;
+pub use threads::{run_ranks, ThreadRank};
 
 use crate::domain::Subdomain;
 use serde::{de::DeserializeOwned, Serialize};

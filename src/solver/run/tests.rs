@@ -6,7 +6,7 @@ use super::setup::{self, Ctx, State};
 use super::{cycle, cycle_zero, prepare, report::Report, RunOptions};
 use crate::contact::tied::TiedSystem;
 use crate::global::GlobalData;
-use crate::parallel::{Serial, World};
+use crate::parallel::{run_ranks, Serial, World};
 use std::path::PathBuf;
 
 fn options(deck: &str) -> RunOptions {
@@ -42,13 +42,24 @@ fn prepared(
 /// Runs `f` on the context and the state after cycle 0 (no listing).
 fn after_cycle_zero(deck: &str, f: impl FnOnce(&Ctx, &mut State, &mut Report)) {
     let (opts, g, sd, bodies) = prepared(deck);
-    let world: &World = &Serial;
+    on_rank(&Serial, &opts, &g, sd, bodies, f);
+}
+
+/// One rank's set-up and cycle 0 on `world`, then `f`.
+fn on_rank<T>(
+    world: &World,
+    opts: &RunOptions,
+    g: &GlobalData,
+    sd: crate::domain::Subdomain,
+    bodies: Vec<crate::kinematics::rigid_body::RigidBodyState>,
+    f: impl FnOnce(&Ctx, &mut State, &mut Report) -> T,
+) -> T {
     let mut ties = TiedSystem::new(g.tied.clone(), &sd);
-    let mut cx = setup::context(world, &opts, &g, &sd, &mut ties);
+    let mut cx = setup::context(world, opts, g, &sd, &mut ties);
     let mut s = setup::initial_state(&mut cx, ties, bodies).unwrap();
     let mut report = Report { listing: None };
     cycle_zero(&cx, &mut s, &mut report).unwrap();
-    f(&cx, &mut s, &mut report);
+    f(&cx, &mut s, &mut report)
 }
 
 /// Σ m·v over the nodes (translational momentum).
@@ -143,4 +154,42 @@ fn contact_forces_on_the_serial_communicator_balance() {
         assert!(pressed > 100, "contact acted on {pressed} cycles only");
         assert!(!s.contact.is_empty());
     });
+}
+
+/// (global node, position, velocity bits) of the owned nodes after `cycles`
+/// cycles on `n` in-process ranks, and the contact ghosts the ranks held.
+fn final_nodes(deck: &str, n: usize, cycles: u64) -> (Vec<(u32, [u64; 6])>, usize) {
+    let opts = options(deck);
+    let (g, sds, bodies, _) = prepare::prepare(&opts, n).unwrap();
+    let per_rank = run_ranks(n, |w| {
+        let sd = sds[w.rank() as usize].clone();
+        on_rank(w, &opts, &g, sd, bodies.clone(), |cx, s, report| {
+            while s.cycle < cycles {
+                cycle(cx, s, report).unwrap();
+            }
+            let nodes = (0..cx.n)
+                .filter(|&l| cx.owned[l])
+                .map(|l| {
+                    let (x, v) = (s.x[l], s.v[l]);
+                    let bits = [x[0], x[1], x[2], v[0], v[1], v[2]].map(f64::to_bits);
+                    (cx.sd.node_global[l], bits)
+                })
+                .collect::<Vec<_>>();
+            (nodes, s.contact.ghost_count())
+        })
+    });
+    let ghosts = per_rank.iter().map(|r| r.1).sum();
+    let mut all: Vec<(u32, [u64; 6])> = per_rank.into_iter().flat_map(|r| r.0).collect();
+    all.sort_unstable();
+    (all, ghosts)
+}
+
+#[test]
+fn contact_cycles_on_two_in_process_ranks_match_one_rank_bit_for_bit() {
+    // Elements, assembly, contact ghosts and force routing across a partition boundary.
+    let (one, _) = final_nodes("contact_patch", 1, 150);
+    let (two, ghosts) = final_nodes("contact_patch", 2, 150);
+    assert!(ghosts > 0, "no contact node crossed the partition boundary");
+    assert_eq!(one.len(), two.len());
+    assert!(one == two, "the final states differ between 1 and 2 ranks");
 }
