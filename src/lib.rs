@@ -1,10 +1,11 @@
 //! crashsim: a distributed explicit crash solver for Radioss block-format decks.
 //!
-//! Data flow (see ARCHITECTURE.md): `input` (picks the reader: `deck` for
-//! Radioss, text → cards → model) → `model` (validated, resolved, masses; the
-//! only thing later stages read) → `partition` (METIS) → `domain` (one rank's share) →
-//! `solver` (explicit cycle over `element`, `material`, `kinematics`).
-//! MPI lives only in `parallel`.
+//! Data flow (see docs/ARCHITECTURE.md): `input` (picks the reader: `deck`
+//! for Radioss, text → cards → model) → `model` (validated, resolved, masses;
+//! the only thing later stages read) → `partition` (METIS) → `domain` (one
+//! rank's share) and `global` (what every rank gets) → `solver` (state plus
+//! phases over `element`, `material`, `kinematics`, `contact`) → `output`.
+//! Ranks talk only through `parallel::Comm` (MPI in `parallel::MpiWorld`).
 
 pub mod contact;
 pub mod deck;
