@@ -18,9 +18,38 @@ use rayon::prelude::*;
 
 pub use crate::element::SLOT;
 
-/// Global sort key of a contribution.
-pub fn key(kind: usize, global_elem: u32, corner: usize) -> u64 {
-    ((kind as u64) << 56) | ((global_elem as u64) << 4) | corner as u64
+/// Which element corner a contribution comes from: the one key of the
+/// assembly's fixed summation order (derived order: kind, element, corner).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct SlotKey {
+    /// Index of the element kind in `ElementKind::ALL`.
+    pub kind: u8,
+    /// Global element index within its kind.
+    pub element: u32,
+    /// Corner of the element (below 16).
+    pub corner: u8,
+}
+
+impl SlotKey {
+    pub fn new(kind: usize, element: u32, corner: usize) -> SlotKey {
+        debug_assert!(kind < 256 && corner < 16);
+        SlotKey {
+            kind: kind as u8,
+            element,
+            corner: corner as u8,
+        }
+    }
+    /// The word the key travels as between ranks; words order as keys do.
+    pub fn to_word(self) -> u64 {
+        ((self.kind as u64) << 56) | ((self.element as u64) << 4) | self.corner as u64
+    }
+    pub fn from_word(w: u64) -> SlotKey {
+        SlotKey {
+            kind: (w >> 56) as u8,
+            element: ((w >> 4) & 0xffff_ffff) as u32,
+            corner: (w & 0xf) as u8,
+        }
+    }
 }
 
 #[derive(Clone, Copy, Debug)]
@@ -46,10 +75,10 @@ pub struct AssemblyPlan {
 
 impl AssemblyPlan {
     /// `slots`: for every local contribution slot, (local node, key).
-    pub fn build(world: &World, sd: &Subdomain, slots: &[(u32, u64)]) -> AssemblyPlan {
+    pub fn build(world: &World, sd: &Subdomain, slots: &[(u32, SlotKey)]) -> AssemblyPlan {
         let n = sd.node_global.len();
         // Local sources per node.
-        let mut per_node: Vec<Vec<(u64, Source)>> = vec![Vec::new(); n];
+        let mut per_node: Vec<Vec<(SlotKey, Source)>> = vec![Vec::new(); n];
         for (s, &(node, k)) in slots.iter().enumerate() {
             per_node[node as usize].push((k, Source::Local(s as u32)));
         }
@@ -66,13 +95,13 @@ impl AssemblyPlan {
             // Layout: per shared node, a count, then the keys.
             let mut keys_out = Vec::new();
             for &l in &sh.nodes {
-                let list: Vec<&(u64, Source)> = per_node[l as usize]
+                let list: Vec<&(SlotKey, Source)> = per_node[l as usize]
                     .iter()
                     .filter(|(_, s)| matches!(s, Source::Local(_)))
                     .collect();
                 keys_out.push(list.len() as u64);
                 for (k, s) in list {
-                    keys_out.push(*k);
+                    keys_out.push(k.to_word());
                     if let Source::Local(i) = s {
                         slots_out.push(*i);
                     }
@@ -94,7 +123,8 @@ impl AssemblyPlan {
                 let c = keys[pos] as usize;
                 pos += 1;
                 for _ in 0..c {
-                    per_node[l as usize].push((keys[pos], Source::Remote((total + count) as u32)));
+                    let k = SlotKey::from_word(keys[pos]);
+                    per_node[l as usize].push((k, Source::Remote((total + count) as u32)));
                     pos += 1;
                     count += 1;
                 }
@@ -163,5 +193,27 @@ impl AssemblyPlan {
             }
             *o = acc;
         });
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn slot_keys_order_as_their_words_and_round_trip() {
+        let keys = [
+            SlotKey::new(0, 7, 3),
+            SlotKey::new(0, 8, 0),
+            SlotKey::new(1, 0, 0),
+            SlotKey::new(0, 7, 2),
+            SlotKey::new(4, u32::MAX, 15),
+        ];
+        for a in keys {
+            assert_eq!(SlotKey::from_word(a.to_word()), a);
+            for b in keys {
+                assert_eq!(a.cmp(&b), a.to_word().cmp(&b.to_word()));
+            }
+        }
     }
 }

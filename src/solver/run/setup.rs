@@ -3,7 +3,7 @@
 //! the loop's mutable [`State`] at t = 0 (nodal arrays, element blocks,
 //! assembly plan, contact and tied interfaces, walls, energies).
 
-use super::super::assembly::{key, AssemblyPlan, SLOT};
+use super::super::assembly::{AssemblyPlan, SlotKey, SLOT};
 use super::RunOptions;
 use crate::contact::tied::TiedSystem;
 use crate::contact::ContactSystem;
@@ -414,8 +414,8 @@ fn element_blocks(cx: &Ctx, x: &[[f64; 3]]) -> Result<Vec<Box<dyn Block>>, RunEr
 
 /// Each element corner owns a slot keyed by (kind, global element, corner);
 /// sets the blocks' first slots (`offsets`) and returns (local node, key) per slot.
-fn slots(cx: &mut Ctx, blocks: &[Box<dyn Block>]) -> Vec<(u32, u64)> {
-    let mut slot_meta: Vec<(u32, u64)> = Vec::new();
+fn slots(cx: &mut Ctx, blocks: &[Box<dyn Block>]) -> Vec<(u32, SlotKey)> {
+    let mut slot_meta: Vec<(u32, SlotKey)> = Vec::new();
     for b in blocks {
         cx.offsets.push(slot_meta.len());
         let le = b.local();
@@ -424,7 +424,7 @@ fn slots(cx: &mut Ctx, blocks: &[Box<dyn Block>]) -> Vec<(u32, u64)> {
         let stride = b.kind().nodes();
         for e in 0..le.global.len() {
             for c in 0..nc {
-                slot_meta.push((le.nodes[stride * e + c], key(ki, le.global[e], c)));
+                slot_meta.push((le.nodes[stride * e + c], SlotKey::new(ki, le.global[e], c)));
             }
         }
     }
