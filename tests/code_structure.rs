@@ -13,6 +13,7 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
 const MAX_FN_LINES: usize = 200;
+const MAX_CLOSURE_PARAMS: usize = 4;
 
 fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {
     let mut entries: Vec<PathBuf> = std::fs::read_dir(dir)
@@ -29,14 +30,16 @@ fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {
     }
 }
 
-/// The source with comments, string and char literals blanked (newlines kept).
+/// The source with comments blanked and string and char literals filled
+/// with `x` (newlines kept).
 fn code_only(src: &str) -> String {
     let c: Vec<char> = src.chars().collect();
     let mut out = String::with_capacity(src.len());
     let mut i = 0;
     let keep_newlines = |s: &[char], out: &mut String| {
+        let fill = if s[0] == '/' { ' ' } else { 'x' };
         for &ch in s {
-            out.push(if ch == '\n' { '\n' } else { ' ' });
+            out.push(if ch == '\n' { '\n' } else { fill });
         }
     };
     while i < c.len() {
@@ -201,6 +204,81 @@ fn every_function_in_src_is_under_200_lines() {
         long.is_empty(),
         "functions of {MAX_FN_LINES} lines or more:\n{}",
         long.join("\n")
+    );
+}
+
+/// (line, parameter count) of every closure: a `|…|` parameter list opened
+/// after `=`, `(`, `,` or `move`.
+fn closures(code: &str) -> Vec<(usize, usize)> {
+    let c: Vec<char> = code.chars().collect();
+    let mut out = Vec::new();
+    let mut after = 0;
+    for i in 0..c.len() {
+        if i < after || c[i] != '|' || c.get(i + 1) == Some(&'|') || (i > 0 && c[i - 1] == '|') {
+            continue;
+        }
+        let before: String = c[..i]
+            .iter()
+            .rev()
+            .skip_while(|ch| ch.is_whitespace())
+            .take(4)
+            .collect();
+        let opens = matches!(before.chars().next(), Some('=' | '(' | ','))
+            && !before.starts_with("=>")
+            && !before.starts_with("==")
+            || before.starts_with("evom");
+        if !opens {
+            continue;
+        }
+        let (mut depth, mut commas, mut j, mut any) = (0i32, 0usize, i + 1, false);
+        while j < c.len() && !(c[j] == '|' && depth == 0) {
+            match c[j] {
+                '(' | '[' | '<' => depth += 1,
+                ')' | ']' | '>' => depth -= 1,
+                ',' if depth == 0 => commas += 1,
+                ch if !ch.is_whitespace() => any = true,
+                _ => {}
+            }
+            j += 1;
+        }
+        after = j + 1;
+        let trailing = c[i + 1..j].iter().rev().find(|ch| !ch.is_whitespace()) == Some(&',');
+        let n = if any {
+            commas + 1 - trailing as usize
+        } else {
+            0
+        };
+        out.push((
+            code[..].chars().take(i).filter(|&ch| ch == '\n').count() + 1,
+            n,
+        ));
+    }
+    out
+}
+
+#[test]
+fn no_closure_takes_more_than_four_parameters() {
+    let mut files = Vec::new();
+    rust_files(&src_root(), &mut files);
+    let mut wide = Vec::new();
+    let mut count = 0;
+    for f in &files {
+        let code = code_only(&std::fs::read_to_string(f).unwrap());
+        for (line, n) in closures(&code) {
+            count += 1;
+            if n > MAX_CLOSURE_PARAMS {
+                wide.push(format!(
+                    "{}:{line}: a closure of {n} parameters",
+                    f.display()
+                ));
+            }
+        }
+    }
+    assert!(count > 100, "the scanner found only {count} closures");
+    assert!(
+        wide.is_empty(),
+        "closures over {MAX_CLOSURE_PARAMS} parameters:\n{}",
+        wide.join("\n")
     );
 }
 
@@ -389,6 +467,8 @@ fn the_scanner_reads_functions_and_paths() {
     );
     let f = functions(&code);
     assert_eq!(f, vec![("a".into(), 1, 4), ("b".into(), 5, 1)]);
+    let cl = closures("let f = |a: u8, b: (u8, u8)| a;\nx.map(move |q| q || r);\nmatch v { A | B => 0 }\ng(|a, b, c, d, e,| 0);");
+    assert_eq!(cl, vec![(1, 2), (2, 1), (4, 5)]);
     let mut paths = Vec::new();
     expand("", "crate::{model::{Model,build},deck}", &mut paths);
     assert_eq!(

@@ -40,41 +40,39 @@ pub(super) fn parse_begin(block: &Block, deck: &mut Deck) -> InputResult<()> {
 fn read_units(c: &Card, default: Option<&Units>) -> InputResult<Units> {
     let si = Units::default();
     let d = default.unwrap_or(&si);
-    let field = |col: usize,
-                 name: &str,
-                 base: &str,
-                 dname: &str,
-                 dfac: f64|
-     -> InputResult<(String, f64)> {
-        let t = c.text(col, 20);
-        if t.is_empty() {
-            return Ok((dname.to_string(), dfac));
-        }
-        if let Ok(v) = super::fields::parse_real(t) {
-            if v > 0.0 {
-                return Ok((t.to_string(), v));
+    // The field at `col`, its name, its SI base unit and its blank default (name, factor).
+    let field =
+        |col: usize, name: &str, base: &str, blank: (&str, f64)| -> InputResult<(String, f64)> {
+            let (dname, dfac) = blank;
+            let t = c.text(col, 20);
+            if t.is_empty() {
+                return Ok((dname.to_string(), dfac));
             }
-            return Err(c.err(name, format!("{v}: a unit factor must be > 0")));
-        }
-        unit_factor(t, base)
-            .map(|f| (t.to_string(), f))
-            .ok_or_else(|| {
-                c.err(
-                    name,
-                    format!(
-                        "'{t}': expected a unit like {} or a positive factor",
-                        match base {
-                            "g" => "kg, g, Mg, mg",
-                            "m" => "m, mm, cm, km",
-                            _ => "s, ms, mus",
-                        }
-                    ),
-                )
-            })
-    };
-    let (mass, mass_si) = field(1, "mass unit", "g", &d.mass, d.mass_si)?;
-    let (length, length_si) = field(21, "length unit", "m", &d.length, d.length_si)?;
-    let (time, time_si) = field(41, "time unit", "s", &d.time, d.time_si)?;
+            if let Ok(v) = super::fields::parse_real(t) {
+                if v > 0.0 {
+                    return Ok((t.to_string(), v));
+                }
+                return Err(c.err(name, format!("{v}: a unit factor must be > 0")));
+            }
+            unit_factor(t, base)
+                .map(|f| (t.to_string(), f))
+                .ok_or_else(|| {
+                    c.err(
+                        name,
+                        format!(
+                            "'{t}': expected a unit like {} or a positive factor",
+                            match base {
+                                "g" => "kg, g, Mg, mg",
+                                "m" => "m, mm, cm, km",
+                                _ => "s, ms, mus",
+                            }
+                        ),
+                    )
+                })
+        };
+    let (mass, mass_si) = field(1, "mass unit", "g", (&d.mass, d.mass_si))?;
+    let (length, length_si) = field(21, "length unit", "m", (&d.length, d.length_si))?;
+    let (time, time_si) = field(41, "time unit", "s", (&d.time, d.time_si))?;
     Ok(Units {
         mass,
         length,
