@@ -237,6 +237,15 @@ pub trait InterfaceType: Sync {
     where
         Self: Sized;
 
+    /// The first option of the deck's card (of this type) that the engine
+    /// does not compute, named for the refusal; `None` when it computes them all.
+    fn unsupported(_kind: &InterfaceKind) -> Option<&'static str>
+    where
+        Self: Sized,
+    {
+        None
+    }
+
     /// Its passes: by default one, the secondary nodes against the main segments.
     fn passes<'a>(&self, i: &'a model::Interface) -> Vec<PassSides<'a>> {
         vec![PassSides {
@@ -357,6 +366,19 @@ macro_rules! registry {
             /// The type numbers the engine computes.
             pub const NUMBERS: &'static [u32] = &[$($number),*];
 
+            /// Whether the engine computes the deck's card: `Err(None)` for a
+            /// type it does not register, `Err(Some(option))` for an option of
+            /// a registered type it does not compute.
+            pub fn check_card(kind: &InterfaceKind) -> Result<(), Option<&'static str>> {
+                $(if <$file::$variant as InterfaceType>::from_card(kind).is_some() {
+                    return match <$file::$variant as InterfaceType>::unsupported(kind) {
+                        None => Ok(()),
+                        Some(what) => Err(Some(what)),
+                    };
+                })*
+                Err(None)
+            }
+
             /// The type of the deck's card, with the common options; `None`
             /// for a card of a type the engine does not compute.
             pub fn from_card(kind: &InterfaceKind) -> Option<(TypeOptions, CardCommon)> {
@@ -378,6 +400,41 @@ registry! {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The interface cards of a project deck, read through the format-neutral entry.
+    fn cards(deck: &str) -> Vec<InterfaceKind> {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join(format!("decks/{deck}/{deck}_0000.rad"));
+        let m = crate::input::load(&path, &Default::default()).unwrap();
+        m.interfaces.into_iter().map(|i| i.card.kind).collect()
+    }
+
+    #[test]
+    fn each_registered_type_refuses_the_options_it_does_not_compute_by_name() {
+        let mut t7 = cards("contact_patch").remove(0);
+        assert_eq!(TypeOptions::check_card(&t7), Ok(()));
+        let InterfaceKind::Type7(t) = &mut t7 else {
+            panic!("contact_patch has a TYPE7 first")
+        };
+        t.ithe = 1;
+        assert_eq!(
+            TypeOptions::check_card(&t7),
+            Err(Some("heat transfer (Ithe = 1)"))
+        );
+        let mut t5 = cards("idel_gap_t5").remove(0);
+        assert_eq!(TypeOptions::check_card(&t5), Ok(()));
+        let InterfaceKind::Type5(t) = &mut t5 else {
+            panic!("idel_gap_t5 has a TYPE5 first")
+        };
+        t.ptlim = 1.0;
+        assert_eq!(
+            TypeOptions::check_card(&t5),
+            Err(Some("a tangential pressure limit (Ptlim)"))
+        );
+        // TYPE2 is a kinematic condition (contact::tied), not a registered contact type.
+        let t2 = cards("tied_bend").remove(0);
+        assert_eq!(TypeOptions::check_card(&t2), Err(None));
+    }
 
     #[test]
     fn every_registered_number_resolves_to_its_type_and_candidate_kind() {

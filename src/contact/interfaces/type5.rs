@@ -29,6 +29,21 @@ impl InterfaceType for Type5 {
         5
     }
 
+    fn unsupported(kind: &InterfaceKind) -> Option<&'static str> {
+        let InterfaceKind::Type5(t) = kind else {
+            return None;
+        };
+        if t.sens_id != 0 {
+            Some("an activation sensor (sens_ID)")
+        } else if t.inacti != 0 {
+            Some("Inacti (moving nodes out of initial penetrations)")
+        } else if t.ptlim < 1e29 {
+            Some("a tangential pressure limit (Ptlim)")
+        } else {
+            None
+        }
+    }
+
     fn candidate_kind(&self) -> CandidateKind {
         CandidateKind::NodeToSegment
     }

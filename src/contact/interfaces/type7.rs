@@ -61,6 +61,26 @@ impl InterfaceType for Type7 {
         7
     }
 
+    fn unsupported(kind: &InterfaceKind) -> Option<&'static str> {
+        let InterfaceKind::Type7(t) = kind else {
+            return None;
+        };
+        let refused = [
+            (t.sens_id != 0, "an activation sensor (sens_ID)"),
+            (t.ithe != 0, "heat transfer (Ithe = 1)"),
+            (t.icurv != 0, "a curved gap envelope (Icurv)"),
+            (t.iadm != 0, "adaptive meshing (Iadm)"),
+            (t.ists != 0, "surface-to-surface contact (Ists)"),
+            (
+                t.fct_idf != 0 || t.fric_id != 0,
+                "friction from a function or /FRICTION (fct_IDF, fric_ID)",
+            ),
+            (t.ibag == 1, "airbag vent closure (Ibag = 1)"),
+            (t.ifric == 4, "Ifric = 4 (exponential decay law)"),
+        ];
+        refused.into_iter().find(|r| r.0).map(|r| r.1)
+    }
+
     fn candidate_kind(&self) -> CandidateKind {
         CandidateKind::NodeToSegment
     }

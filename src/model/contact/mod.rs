@@ -79,6 +79,17 @@ impl InterfaceSpec {
         }
     }
 
+    /// What the type does, in a few words (for messages).
+    pub fn description(&self) -> &'static str {
+        match self.kind {
+            InterfaceKind::Type2(_) => "tied",
+            InterfaceKind::Type3(_) => "segment to segment, node-to-segment in both directions",
+            InterfaceKind::Type5(_) => "node to segment",
+            InterfaceKind::Type7(_) => "general node to segment",
+            InterfaceKind::Type11(_) => "edge to edge",
+        }
+    }
+
     /// What the secondary (slave) side references.
     pub fn secondary_side(&self) -> Side {
         match &self.kind {

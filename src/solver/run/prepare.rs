@@ -299,47 +299,13 @@ fn check_interface(c: &model::InterfaceSpec) -> Result<(), String> {
             }
             Ok(())
         }
-        K::Type11(_) => no("TYPE11 (edge to edge)"),
-        K::Type3(_) => Ok(()),
-        K::Type5(t) => {
-            if t.sens_id != 0 {
-                return no("an activation sensor (sens_ID)");
-            }
-            if t.inacti != 0 {
-                return no("Inacti (moving nodes out of initial penetrations)");
-            }
-            if t.ptlim < 1e29 {
-                return no("a tangential pressure limit (Ptlim)");
-            }
-            Ok(())
-        }
-        K::Type7(t) => {
-            if t.sens_id != 0 {
-                return no("an activation sensor (sens_ID)");
-            }
-            if t.ithe != 0 {
-                return no("heat transfer (Ithe = 1)");
-            }
-            if t.icurv != 0 {
-                return no("a curved gap envelope (Icurv)");
-            }
-            if t.iadm != 0 {
-                return no("adaptive meshing (Iadm)");
-            }
-            if t.ists != 0 {
-                return no("surface-to-surface contact (Ists)");
-            }
-            if t.fct_idf != 0 || t.fric_id != 0 {
-                return no("friction from a function or /FRICTION (fct_IDF, fric_ID)");
-            }
-            if t.ibag == 1 {
-                return no("airbag vent closure (Ibag = 1)");
-            }
-            if t.ifric == 4 {
-                return no("Ifric = 4 (exponential decay law)");
-            }
-            Ok(())
-        }
+        // The registered types say which of their options they refuse
+        // (contact::interfaces); a type not registered is refused whole.
+        _ => match crate::contact::interfaces::TypeOptions::check_card(&c.kind) {
+            Ok(()) => Ok(()),
+            Err(Some(what)) => no(what),
+            Err(None) => no(&format!("TYPE{} ({})", c.type_number(), c.description())),
+        },
     }
 }
 
