@@ -575,13 +575,13 @@ pub(crate) mod tests {
 
     pub(crate) fn mat() -> Material {
         let (e, nu) = (210.0, 0.3);
-        Material::Elastic {
+        Material::Elastic(crate::material::Law1(crate::material::ElasticConstants {
             rho: 7.8e-6,
             rho_ref: 7.8e-6,
             e,
             nu,
             g: e / (2.0 * (1.0 + nu)),
-        }
+        }))
     }
 
     pub(crate) fn resolved(isolid: i64, qa: f64, qb: f64, h: f64) -> ResolvedSolid {

@@ -368,13 +368,13 @@ mod tests {
 
     fn mat() -> Material {
         let (e, nu) = (210.0, 0.3);
-        Material::Elastic {
+        Material::Elastic(crate::material::Law1(crate::material::ElasticConstants {
             rho: 7.8e-6,
             rho_ref: 7.8e-6,
             e,
             nu,
             g: e / (2.0 * (1.0 + nu)),
-        }
+        }))
     }
 
     fn resolved(n: i64, ish3n: i64) -> ResolvedShell {

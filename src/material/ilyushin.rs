@@ -67,8 +67,8 @@
 //! gives Δε^p_zz = −¼Δε̄_p [2(n_xx + n_yy) + sgn(Q_tm)(m_xx + m_yy)/√3] at the
 //! returned state (−½Δε̄_p for a uniaxial membrane, as the layered update).
 
-use super::johnson_cook::scalar_return;
-use super::law::{PlaneStressResult, PointLaw};
+use super::point::{PlaneStressResult, PointLaw};
+use super::return_map::scalar_return;
 
 const INV_SQRT3: f64 = 0.577_350_269_189_625_8; // 1/√3
 
@@ -127,7 +127,7 @@ impl PointLaw {
             d_ezz: ezz_el / (1.0 - nu),
             ..Default::default()
         };
-        let Some(flow) = self.flow else {
+        let Some(flow) = self.hardening else {
             return elastic;
         };
         let seq = ilyushin_equivalent(s_m, s_b);

@@ -1,10 +1,26 @@
-//! Constitutive laws: LAW1 (elastic) and LAW2 (Johnson-Cook), with the
-//! plane-stress update used by shells, the global (resultant, Ilyushin)
-//! update of shell sections computed with N = 0, and the 3-D update used by solids.
+//! Constitutive laws behind one trait ([`Law`]), one file per law, and the
+//! registry ([`Material`], `registry.rs`) the element kernels call: LAW1
+//! (elastic, `law1.rs`) and LAW2 (Johnson-Cook, `law2.rs`, its flow stress in
+//! `johnson_cook.rs`). A plastic law supplies its flow-stress curve as a
+//! [`Hardening`]; [`PointLaw`] updates the integration points with the
+//! return maps of `return_map.rs` (plane stress for shells, 3-D for solids)
+//! or, for shell sections computed with N = 0, the global (resultant,
+//! Ilyushin) update of `ilyushin.rs`.
 
+mod hardening;
 mod ilyushin;
 mod johnson_cook;
 mod law;
+mod law1;
+mod law2;
+mod point;
+mod registry;
+mod return_map;
 
+pub use hardening::Hardening;
 pub use ilyushin::ilyushin_equivalent;
-pub use law::*;
+pub use law::{ElasticConstants, Law};
+pub use law1::Law1;
+pub use law2::Law2;
+pub use point::{PlaneStressResult, PointLaw};
+pub use registry::{law_name, Material, LAWS};
