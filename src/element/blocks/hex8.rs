@@ -19,7 +19,7 @@ solid_block!(
     Hex8State,
     hex8::hex8_init,
     hex8::hex8_step,
-    false
+    SolidSection::new
 );
 
 /// The registry's builder for this formulation.

@@ -6,11 +6,16 @@
 
 use crate::domain::LocalElements;
 use crate::element::hex8::SolidSection;
-use crate::element::shell3;
 use crate::element::shell4::ShellSection;
 use crate::material::Material;
 use crate::model::{MaterialSpec, Part, Property, ResolvedShell, ResolvedSolid};
 use std::collections::HashMap;
+
+/// A formulation's shell section from its property and material
+/// (`ShellSection::new` for the quad, `shell3::shell3_section` for the triangle).
+pub(super) type ShellSectionFn = fn(&ResolvedShell, &Material) -> Result<ShellSection, String>;
+/// A formulation's solid section (`SolidSection::new`, `SolidSection::for_tetra`).
+pub(super) type SolidSectionFn = fn(&ResolvedSolid, &Material) -> Result<SolidSection, String>;
 
 pub(super) const SHELL_WITHOUT_MATERIAL: &str = "shell part without material";
 pub(super) const SOLID_WITHOUT_MATERIAL: &str = "solid part without material";
@@ -73,42 +78,36 @@ pub(super) fn part_material<'a>(
     Ok(&mats[part.mat.ok_or(missing)? as usize])
 }
 
-/// Shell sections per part (built once per part used).
+/// Shell sections per part (built once per part used) by the formulation's
+/// section constructor.
 pub(super) fn shell_sections(
     le: &LocalElements,
     parts: &[Part],
     props: &[Property],
     mats: &[MaterialSpec],
-    tri: bool,
+    new_section: ShellSectionFn,
 ) -> Result<(Vec<ShellSection>, Vec<u16>), String> {
     per_part(le, |p| {
         let part = &parts[p as usize];
         let prop = shell_property(part, props)?;
         let mat = Material::from_card(part_material(part, mats, SHELL_WITHOUT_MATERIAL)?);
-        if tri {
-            shell3::shell3_section(prop, &mat)
-        } else {
-            ShellSection::new(prop, &mat)
-        }
+        new_section(prop, &mat)
     })
 }
 
-/// Solid sections per part (built once per part used).
+/// Solid sections per part (built once per part used) by the formulation's
+/// section constructor.
 pub(super) fn solid_sections(
     le: &LocalElements,
     parts: &[Part],
     props: &[Property],
     mats: &[MaterialSpec],
-    tetra: bool,
+    new_section: SolidSectionFn,
 ) -> Result<(Vec<SolidSection>, Vec<u16>), String> {
     per_part(le, |p| {
         let part = &parts[p as usize];
         let prop = solid_property(part, props)?;
         let mat = Material::from_card(part_material(part, mats, SOLID_WITHOUT_MATERIAL)?);
-        if tetra {
-            SolidSection::for_tetra(prop, &mat)
-        } else {
-            SolidSection::new(prop, &mat)
-        }
+        new_section(prop, &mat)
     })
 }

@@ -18,7 +18,7 @@ shell_block!(
     Shell3State,
     shell3::shell3_init,
     shell3::shell3_step,
-    true
+    shell3::shell3_section
 );
 
 /// The registry's builder for this formulation.

@@ -19,7 +19,7 @@ shell_block!(
     Shell4State,
     shell4::shell4_init,
     shell4::shell4_step,
-    false
+    ShellSection::new
 );
 
 /// The registry's builder for this formulation.

@@ -3,7 +3,7 @@
 /// 4-node and 3-node shells share this shape: a section per part, `nip`
 /// integration points per element (stress and plastic strain), rotations.
 macro_rules! shell_block {
-    ($name:ident, $kind:expr, $nn:literal, $state:ty, $init:path, $step:path, $tri:expr) => {
+    ($name:ident, $kind:expr, $nn:literal, $state:ty, $init:path, $step:path, $section:path) => {
         pub struct $name {
             le: LocalElements,
             sections: Vec<ShellSection>,
@@ -24,7 +24,7 @@ macro_rules! shell_block {
                 props: &[Property],
                 mats: &[crate::model::MaterialSpec],
             ) -> Result<Self, String> {
-                let (sections, section) = shell_sections(&le, parts, props, mats, $tri)?;
+                let (sections, section) = shell_sections(&le, parts, props, mats, $section)?;
                 let n = le.global.len();
                 let nip = sections.iter().map(|s| s.n_ip).max().unwrap_or(1).max(1);
                 let state = (0..n)

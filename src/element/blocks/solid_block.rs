@@ -2,7 +2,7 @@
 
 /// 8-node bricks and 4-node tetrahedra share this shape: one state per element, no rotations.
 macro_rules! solid_block {
-    ($name:ident, $kind:expr, $nn:literal, $state:ty, $init:path, $step:path, $tetra:expr) => {
+    ($name:ident, $kind:expr, $nn:literal, $state:ty, $init:path, $step:path, $section:path) => {
         pub struct $name {
             le: LocalElements,
             sections: Vec<SolidSection>,
@@ -20,7 +20,7 @@ macro_rules! solid_block {
                 props: &[Property],
                 mats: &[crate::model::MaterialSpec],
             ) -> Result<Self, String> {
-                let (sections, section) = solid_sections(&le, parts, props, mats, $tetra)?;
+                let (sections, section) = solid_sections(&le, parts, props, mats, $section)?;
                 let n = le.global.len();
                 let state = (0..n)
                     .map(|e| $init(&sections[section[e] as usize], &gather::<$nn>(&le, e, x)))

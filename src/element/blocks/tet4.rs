@@ -19,7 +19,7 @@ solid_block!(
     Tet4State,
     tet4::tet4_init,
     tet4::tet4_step,
-    true
+    SolidSection::for_tetra
 );
 
 /// The registry's builder for this formulation.
