@@ -390,24 +390,24 @@ pub(super) fn initial_state(
     })
 }
 
-/// Element blocks, one per kind present on this rank.
+/// Element blocks: per kind present on this rank, one per formulation its
+/// parts ask for (`element::blocks::registry`).
 fn element_blocks(cx: &Ctx, x: &[[f64; 3]]) -> Result<Vec<Box<dyn Block>>, RunError> {
     let (g, sd) = (cx.g, cx.sd);
     let mut blocks: Vec<Box<dyn Block>> = Vec::new();
     for le in &sd.elements {
-        if let Some(b) = make_block(
-            le,
-            x,
-            &sd.mass,
-            &g.parts,
-            &g.properties,
-            &g.materials,
-            &g.functions,
-        )
-        .map_err(RunError::Input)?
-        {
-            blocks.push(b);
-        }
+        blocks.extend(
+            make_block(
+                le,
+                x,
+                &sd.mass,
+                &g.parts,
+                &g.properties,
+                &g.materials,
+                &g.functions,
+            )
+            .map_err(RunError::Input)?,
+        );
     }
     Ok(blocks)
 }

@@ -1,0 +1,90 @@
+//! What every block shares: gathering an element's nodal values, marking
+//! failed elements deleted, decoding restart records, von Mises stresses and
+//! the hourglass energy kept by an element state.
+
+use super::ElemStep;
+use crate::domain::LocalElements;
+use crate::element::hex8::Hex8State;
+use crate::element::shell3::Shell3State;
+use crate::element::shell4::Shell4State;
+use crate::element::tet4::Tet4State;
+
+/// Von Mises stress of a shell point [σxx σyy σxy σyz σzx] (σzz = 0).
+pub(super) fn von_mises_shell(s: &[f64; 5]) -> f64 {
+    (s[0] * s[0] + s[1] * s[1] - s[0] * s[1] + 3.0 * (s[2] * s[2] + s[3] * s[3] + s[4] * s[4]))
+        .max(0.0)
+        .sqrt()
+}
+
+/// Von Mises stress of a 3-D tensor [σxx σyy σzz σxy σyz σzx].
+pub(super) fn von_mises_3d(s: &[f64; 6]) -> f64 {
+    let d = (s[0] - s[1]).powi(2) + (s[1] - s[2]).powi(2) + (s[2] - s[0]).powi(2);
+    (0.5 * d + 3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]))
+        .max(0.0)
+        .sqrt()
+}
+
+/// Decodes one element's restart record, naming what did not fit.
+pub(super) fn decode_state<T: serde::de::DeserializeOwned>(
+    bytes: &[u8],
+    what: &str,
+) -> Result<T, String> {
+    bincode::deserialize(bytes).map_err(|e| format!("{what} element state does not decode: {e}"))
+}
+
+pub(super) fn gather<const N: usize>(
+    le: &LocalElements,
+    e: usize,
+    a: &[[f64; 3]],
+) -> [[f64; 3]; N] {
+    std::array::from_fn(|k| a[le.nodes[N * e + k] as usize])
+}
+
+pub(super) fn settle_common(
+    alive: &mut [bool],
+    steps: &[ElemStep],
+    le: &LocalElements,
+    what: &'static str,
+) -> Option<(u32, &'static str)> {
+    let mut problem = None;
+    for e in 0..alive.len() {
+        if !alive[e] {
+            continue;
+        }
+        if steps[e].bad && problem.is_none() {
+            problem = Some((le.global[e], what));
+        }
+        if steps[e].failed {
+            alive[e] = false;
+        }
+    }
+    problem
+}
+
+/// Hourglass energy kept by an element state (0 for elements without hourglass modes).
+pub(super) trait HourglassEnergy {
+    fn hourglass_energy(&self) -> f64;
+}
+impl HourglassEnergy for Shell4State {
+    fn hourglass_energy(&self) -> f64 {
+        self.ehg
+    }
+}
+impl HourglassEnergy for Shell3State {
+    fn hourglass_energy(&self) -> f64 {
+        0.0
+    }
+}
+impl HourglassEnergy for Hex8State {
+    fn hourglass_energy(&self) -> f64 {
+        self.ehg
+    }
+}
+impl HourglassEnergy for Tet4State {
+    fn hourglass_energy(&self) -> f64 {
+        0.0
+    }
+}
+pub(super) fn hourglass_of<S: HourglassEnergy>(s: &S) -> f64 {
+    s.hourglass_energy()
+}

@@ -1,0 +1,34 @@
+//! 8-node bricks with one integration point and viscous hourglass (Radioss
+//! Isolid = 1, 2; kernel in `crate::element::hex8`).
+
+use super::common::{decode_state, gather, hourglass_of, settle_common, von_mises_3d};
+use super::sections::solid_sections;
+use super::solid_block::solid_block;
+use super::{Block, BlockInput, ElemOut, ElemRow, ElemStep};
+use crate::domain::LocalElements;
+use crate::element::hex8::SolidSection;
+use crate::element::hex8::{self, Hex8State};
+use crate::element::SLOT;
+use crate::model::{ElementKind, Part, Property};
+use rayon::prelude::*;
+
+solid_block!(
+    Hex8Block,
+    ElementKind::Brick8,
+    8,
+    Hex8State,
+    hex8::hex8_init,
+    hex8::hex8_step,
+    SolidSection::new
+);
+
+/// The registry's builder for this formulation.
+pub(super) fn build(input: BlockInput) -> Result<Box<dyn Block>, String> {
+    Ok(Box::new(Hex8Block::new(
+        input.le,
+        input.x,
+        input.parts,
+        input.props,
+        input.mats,
+    )?))
+}

@@ -1,0 +1,113 @@
+//! Section builders: one section per part used by a block's elements (built
+//! once per part, in the order the parts first appear), and the section index
+//! of every element. The property and material look-ups, with the refusals
+//! they make, are shared with the registry, which reads the formulation
+//! number from the same property.
+
+use crate::domain::LocalElements;
+use crate::element::hex8::SolidSection;
+use crate::element::shell4::ShellSection;
+use crate::material::Material;
+use crate::model::{MaterialSpec, Part, Property, ResolvedShell, ResolvedSolid};
+use std::collections::HashMap;
+
+/// A formulation's shell section from its property and material
+/// (`ShellSection::new` for the quad, `shell3::shell3_section` for the triangle).
+pub(super) type ShellSectionFn = fn(&ResolvedShell, &Material) -> Result<ShellSection, String>;
+/// A formulation's solid section (`SolidSection::new`, `SolidSection::for_tetra`).
+pub(super) type SolidSectionFn = fn(&ResolvedSolid, &Material) -> Result<SolidSection, String>;
+
+pub(super) const SHELL_WITHOUT_MATERIAL: &str = "shell part without material";
+pub(super) const SOLID_WITHOUT_MATERIAL: &str = "solid part without material";
+
+/// The sections of `le`'s parts, built by `build` once per part in the order
+/// the parts first appear, and each element's section index.
+fn per_part<S>(
+    le: &LocalElements,
+    mut build: impl FnMut(u32) -> Result<S, String>,
+) -> Result<(Vec<S>, Vec<u16>), String> {
+    let mut sections = Vec::new();
+    let mut of_part: HashMap<u32, u16> = HashMap::new();
+    let mut section = Vec::with_capacity(le.part.len());
+    for &p in &le.part {
+        let s = match of_part.get(&p) {
+            Some(&s) => s,
+            None => {
+                sections.push(build(p)?);
+                of_part.insert(p, (sections.len() - 1) as u16);
+                (sections.len() - 1) as u16
+            }
+        };
+        section.push(s);
+    }
+    Ok((sections, section))
+}
+
+/// The resolved /PROP/SHELL of a shell part.
+pub(super) fn shell_property<'a>(
+    part: &Part,
+    props: &'a [Property],
+) -> Result<&'a ResolvedShell, String> {
+    Ok(
+        props[part.prop.ok_or("shell part without property")? as usize]
+            .shell
+            .as_ref()
+            .ok_or("shell part without a shell property")?,
+    )
+}
+
+/// The resolved /PROP/SOLID of a solid part.
+pub(super) fn solid_property<'a>(
+    part: &Part,
+    props: &'a [Property],
+) -> Result<&'a ResolvedSolid, String> {
+    Ok(
+        props[part.prop.ok_or("solid part without property")? as usize]
+            .solid
+            .as_ref()
+            .ok_or("solid part without a solid property")?,
+    )
+}
+
+/// The material card of a part; `missing` is the refusal when it has none.
+pub(super) fn part_material<'a>(
+    part: &Part,
+    mats: &'a [MaterialSpec],
+    missing: &'static str,
+) -> Result<&'a MaterialSpec, String> {
+    Ok(&mats[part.mat.ok_or(missing)? as usize])
+}
+
+/// Shell sections per part (built once per part used) by the formulation's
+/// section constructor.
+pub(super) fn shell_sections(
+    le: &LocalElements,
+    parts: &[Part],
+    props: &[Property],
+    mats: &[MaterialSpec],
+    new_section: ShellSectionFn,
+) -> Result<(Vec<ShellSection>, Vec<u16>), String> {
+    per_part(le, |p| {
+        let part = &parts[p as usize];
+        let prop = shell_property(part, props)?;
+        let mat = Material::from_card(part_material(part, mats, SHELL_WITHOUT_MATERIAL)?);
+        new_section(prop, &mat)
+    })
+}
+
+/// Solid sections per part (built once per part used) by the formulation's
+/// section constructor.
+pub(super) fn solid_sections(
+    le: &LocalElements,
+    parts: &[Part],
+    props: &[Property],
+    mats: &[MaterialSpec],
+    new_section: SolidSectionFn,
+) -> Result<(Vec<SolidSection>, Vec<u16>), String> {
+    per_part(le, |p| {
+        let part = &parts[p as usize];
+        let prop = solid_property(part, props)?;
+        let mat = Material::from_card(part_material(part, mats, SOLID_WITHOUT_MATERIAL)?);
+        new_section(prop, &mat)
+    })
+}

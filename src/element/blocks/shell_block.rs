@@ -1,0 +1,213 @@
+//! The shape 4-node and 3-node shell blocks share (`shell_block!`).
+
+/// 4-node and 3-node shells share this shape: a section per part, `nip`
+/// integration points per element (stress and plastic strain), rotations.
+macro_rules! shell_block {
+    ($name:ident, $kind:expr, $nn:literal, $state:ty, $init:path, $step:path, $section:path) => {
+        pub struct $name {
+            le: LocalElements,
+            sections: Vec<ShellSection>,
+            section: Vec<u16>,
+            state: Vec<$state>,
+            sig: Vec<[f64; 5]>,
+            eps_p: Vec<f64>,
+            nip: usize,
+            alive: Vec<bool>,
+            steps: Vec<ElemStep>,
+        }
+
+        impl $name {
+            pub fn new(
+                le: LocalElements,
+                x: &[[f64; 3]],
+                parts: &[Part],
+                props: &[Property],
+                mats: &[crate::model::MaterialSpec],
+            ) -> Result<Self, String> {
+                let (sections, section) = shell_sections(&le, parts, props, mats, $section)?;
+                let n = le.global.len();
+                let nip = sections.iter().map(|s| s.n_ip).max().unwrap_or(1).max(1);
+                let state = (0..n)
+                    .map(|e| {
+                        $init(
+                            &sections[section[e] as usize],
+                            &gather::<$nn>(&le, e, x),
+                            le.thick[e],
+                        )
+                    })
+                    .collect();
+                Ok($name {
+                    le,
+                    sections,
+                    section,
+                    state,
+                    sig: vec![[0.0; 5]; n * nip],
+                    eps_p: vec![0.0; n * nip],
+                    nip,
+                    alive: vec![true; n],
+                    steps: vec![ElemStep::default(); n],
+                })
+            }
+        }
+
+        impl Block for $name {
+            fn kind(&self) -> ElementKind {
+                $kind
+            }
+            fn local(&self) -> &LocalElements {
+                &self.le
+            }
+            fn corners(&self) -> usize {
+                $nn
+            }
+            fn compute(
+                &mut self,
+                x: &[[f64; 3]],
+                v: &[[f64; 3]],
+                vr: &[[f64; 3]],
+                dt: f64,
+                contrib: &mut [[f64; SLOT]],
+            ) {
+                let (le, sections, section, nip) =
+                    (&self.le, &self.sections, &self.section, self.nip);
+                contrib
+                    .par_chunks_mut($nn)
+                    .zip(self.state.par_iter_mut())
+                    .zip(self.sig.par_chunks_mut(nip))
+                    .zip(self.eps_p.par_chunks_mut(nip))
+                    .zip(self.steps.par_iter_mut())
+                    .zip(self.alive.par_iter())
+                    .enumerate()
+                    .for_each(|(e, (((((c, st), sig), eps), out), alive))| {
+                        if !*alive {
+                            c.iter_mut().for_each(|s| *s = [0.0; SLOT]);
+                            *out = ElemStep {
+                                dt: f64::INFINITY,
+                                ..Default::default()
+                            };
+                            return;
+                        }
+                        let sec = &sections[section[e] as usize];
+                        let n = sec.n_ip.max(1);
+                        let o = $step(
+                            sec,
+                            &gather::<$nn>(le, e, x),
+                            &gather::<$nn>(le, e, v),
+                            &gather::<$nn>(le, e, vr),
+                            dt,
+                            st,
+                            &mut sig[..n],
+                            &mut eps[..n],
+                        );
+                        for k in 0..$nn {
+                            c[k] = [
+                                o.f[k][0], o.f[k][1], o.f[k][2], o.m[k][0], o.m[k][1], o.m[k][2],
+                            ];
+                        }
+                        *out = ElemStep {
+                            dt: o.dt,
+                            failed: o.failed,
+                            bad: o.bad_area,
+                        };
+                    });
+            }
+            fn steps(&self) -> &[ElemStep] {
+                &self.steps
+            }
+            fn settle(&mut self) -> Option<(u32, &'static str)> {
+                settle_common(
+                    &mut self.alive,
+                    &self.steps,
+                    &self.le,
+                    "has a zero or negative area (inverted element)",
+                )
+            }
+            fn alive(&self, e: usize) -> bool {
+                self.alive[e]
+            }
+            fn energy(&self) -> f64 {
+                self.state.iter().map(|s| s.eint + hourglass_of(s)).sum()
+            }
+            fn energy_parts(&self) -> (f64, f64) {
+                (
+                    self.state.iter().map(hourglass_of).sum(),
+                    self.state.iter().map(|s| s.eplas).sum(),
+                )
+            }
+            fn rows(&self) -> Vec<ElemRow> {
+                (0..self.le.global.len())
+                    .map(|e| {
+                        let n = self.sections[self.section[e] as usize].n_ip.max(1);
+                        let sig = &self.sig[e * self.nip..e * self.nip + n];
+                        let mean = |k: usize| sig.iter().map(|s| s[k]).sum::<f64>() / n as f64;
+                        let epsp = self.eps_p[e * self.nip..e * self.nip + n]
+                            .iter()
+                            .fold(0.0f64, |a, &b| a.max(b));
+                        let st = &self.state[e];
+                        (
+                            self.le.global[e],
+                            [
+                                mean(0),
+                                mean(1),
+                                mean(2),
+                                epsp,
+                                st.thick,
+                                st.eint + hourglass_of(st),
+                                if self.alive[e] { 0.0 } else { 1.0 },
+                            ],
+                        )
+                    })
+                    .collect()
+            }
+            fn outputs(&self) -> Vec<ElemOut> {
+                (0..self.le.global.len())
+                    .map(|e| {
+                        let n = self.sections[self.section[e] as usize].n_ip.max(1);
+                        let pts = e * self.nip..e * self.nip + n;
+                        let st = &self.state[e];
+                        ElemOut {
+                            von_mises: self.sig[pts.clone()]
+                                .iter()
+                                .map(von_mises_shell)
+                                .fold(0.0, f64::max),
+                            eps_p: self.eps_p[pts].iter().fold(0.0f64, |a, &b| a.max(b)),
+                            thick: st.thick,
+                            eint: st.eint + hourglass_of(st),
+                            ehg: hourglass_of(st),
+                            deleted: !self.alive[e],
+                        }
+                    })
+                    .collect()
+            }
+            fn export_state(&self, e: usize) -> Vec<u8> {
+                let n = self.sections[self.section[e] as usize].n_ip.max(1);
+                let pts = e * self.nip..e * self.nip + n;
+                bincode::serialize(&(
+                    &self.state[e],
+                    &self.sig[pts.clone()],
+                    &self.eps_p[pts],
+                    self.alive[e],
+                ))
+                .expect("element state serializes")
+            }
+            fn import_state(&mut self, e: usize, bytes: &[u8]) -> Result<(), String> {
+                let (st, sig, eps, alive): ($state, Vec<[f64; 5]>, Vec<f64>, bool) =
+                    decode_state(bytes, "shell")?;
+                let n = self.sections[self.section[e] as usize].n_ip.max(1);
+                if sig.len() != n || eps.len() != n {
+                    return Err(format!(
+                        "shell element state has {} integration points, the section has {n}",
+                        sig.len()
+                    ));
+                }
+                self.state[e] = st;
+                self.sig[e * self.nip..e * self.nip + n].copy_from_slice(&sig);
+                self.eps_p[e * self.nip..e * self.nip + n].copy_from_slice(&eps);
+                self.alive[e] = alive;
+                Ok(())
+            }
+        }
+    };
+}
+
+pub(super) use shell_block;
