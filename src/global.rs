@@ -34,6 +34,8 @@ pub struct GlobalData {
     pub added_mass: f64,
     /// Global indices of the /TH/NODE nodes, in the order the deck lists them.
     pub th_nodes: Vec<u32>,
+    /// Keywords the run skips (`--skip-unsupported`), as "file:line: /KEYWORD".
+    pub skipped_keywords: Vec<String>,
     /// Contact interfaces, resolved (empty without /INTER).
     pub contact: crate::contact::setup::ContactSetup,
     /// Tied interfaces (/INTER/TYPE2), resolved.
@@ -64,6 +66,7 @@ impl GlobalData {
             total_mass: m.mass.total,
             added_mass: m.mass.added_total,
             th_nodes: Vec::new(),
+            skipped_keywords: Vec::new(),
             contact: Default::default(),
             tied: Default::default(),
         }

@@ -86,6 +86,9 @@ enum Command {
         /// Write no HDF5/XDMF run file (to measure what output costs)
         #[arg(long, hide = true)]
         no_run_file: bool,
+        /// Run although the deck has keywords the engine does not compute; the listing and the run file name them
+        #[arg(long)]
+        skip_unsupported: bool,
     },
     /// Print what a run file DIR/NAME.h5 (or a restart file) holds
     Info {
@@ -250,6 +253,7 @@ fn main() -> ExitCode {
             quiet,
             stop_after_cycle,
             no_run_file,
+            skip_unsupported,
         } => {
             let Some(world) = MpiWorld::init() else {
                 return input_error("MPI could not be initialised");
@@ -266,6 +270,7 @@ fn main() -> ExitCode {
                 history,
                 energies,
                 strict: deck.strict,
+                skip_unsupported,
                 output: crashsim::output::OutputOptions {
                     restart,
                     quiet,

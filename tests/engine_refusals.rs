@@ -60,3 +60,86 @@ fn contact_options_the_engine_does_not_compute_are_refused_at_the_interface() {
         ],
     );
 }
+
+/// free_plate with a starter keyword and an engine keyword the engine does
+/// not compute, and one the keyword policy lets through (/MEMORY).
+fn free_plate_with_unsupported(tag: &str) -> std::path::PathBuf {
+    let src = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("decks/free_plate");
+    let dir = std::env::temp_dir().join(format!("crashsim-policy-{tag}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let starter = std::fs::read_to_string(src.join("free_plate_0000.rad")).unwrap();
+    let (head, tail) = starter.split_once("/END").unwrap();
+    let extra = "/MEMORY\n   1000000\n/TRANSFORM/TRA/1\nmove the plate\n         0       0.0       0.0      10.0\n";
+    std::fs::write(
+        dir.join("free_plate_0000.rad"),
+        format!("{head}{extra}/END{tail}"),
+    )
+    .unwrap();
+    let engine = std::fs::read_to_string(src.join("free_plate_0001.rad")).unwrap();
+    std::fs::write(
+        dir.join("free_plate_0001.rad"),
+        format!("{engine}/DTIX\n1e-5\n"),
+    )
+    .unwrap();
+    dir.join("free_plate_0000.rad")
+}
+
+#[test]
+fn a_keyword_the_engine_does_not_compute_stops_the_run_naming_every_one() {
+    let deck = free_plate_with_unsupported("refused");
+    let head = std::fs::read_to_string(&deck).unwrap();
+    let line = 1 + head
+        .lines()
+        .position(|l| l.starts_with("/TRANSFORM"))
+        .unwrap();
+    run_refused(
+        &deck,
+        &[
+            &format!("free_plate_0000.rad:{line}: /TRANSFORM/TRA/1"),
+            "free_plate_0001.rad:6: /DTIX",
+            "2 keyword(s)",
+            "--skip-unsupported",
+        ],
+    );
+    // `check` lists them as warnings, and the safe one as skipped.
+    let out = crashsim(&["check", deck.to_str().unwrap()]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(0), "{text}");
+    assert!(
+        text.contains("/TRANSFORM/TRA/1: keyword not supported"),
+        "{text}"
+    );
+    assert!(text.contains("/MEMORY: keyword skipped"), "{text}");
+}
+
+#[test]
+fn skip_unsupported_runs_and_says_what_it_skipped() {
+    let deck = free_plate_with_unsupported("skipped");
+    let dir = deck.with_file_name("out");
+    let out = crashsim(&[
+        "run",
+        deck.to_str().unwrap(),
+        "--out",
+        dir.to_str().unwrap(),
+        "--quiet",
+        "--skip-unsupported",
+    ]);
+    ok(&out, "run --skip-unsupported");
+    let listing = std::fs::read_to_string(dir.join("free_plate.out")).unwrap();
+    for k in ["/TRANSFORM/TRA/1", "free_plate_0001.rad:6: /DTIX"] {
+        let note = listing
+            .lines()
+            .find(|l| l.contains("skipped (--skip-unsupported)") && l.contains(k));
+        assert!(note.is_some(), "the listing does not name {k}:\n{listing}");
+    }
+    assert!(
+        !listing.contains("/MEMORY"),
+        "a safe keyword is not a skipped one"
+    );
+    let info = crashsim(&["info", dir.join("free_plate.h5").to_str().unwrap()]);
+    let info = String::from_utf8_lossy(&info.stdout);
+    assert!(
+        info.contains("skipped (--skip-unsupported)") && info.contains("/DTIX"),
+        "{info}"
+    );
+}

@@ -16,6 +16,7 @@ mod controls;
 mod engine;
 mod id_index;
 mod interfaces;
+pub mod keyword_policy;
 mod materials;
 mod mesh;
 mod parts;
@@ -75,6 +76,8 @@ pub struct Deck {
     pub animations: Vec<AnimationSpec>,
     pub engine: Option<Engine>,
     pub warnings: Vec<Warning>,
+    /// Keywords no parser reads and the policy does not let through (`run` stops on them).
+    pub unsupported: Vec<Warning>,
 }
 
 /// Reading options.
@@ -133,7 +136,12 @@ pub fn read_deck(starter: &Path, engine: EngineFile, opts: ReadOptions) -> Input
         EngineFile::Auto => engine_beside(starter).filter(|p| p.is_file()),
     };
     if let Some(p) = engine_path {
-        deck.engine = Some(read_engine(&p, &mut deck.warnings, opts)?);
+        deck.engine = Some(read_engine(
+            &p,
+            &mut deck.warnings,
+            &mut deck.unsupported,
+            opts,
+        )?);
     }
     Ok(deck)
 }
@@ -160,13 +168,14 @@ pub fn engine_beside(starter: &Path) -> Option<PathBuf> {
 pub fn read_engine(
     path: &Path,
     warnings: &mut Vec<Warning>,
+    unsupported: &mut Vec<Warning>,
     opts: ReadOptions,
 ) -> InputResult<Engine> {
     let src = source::read(path)?;
     let mut eng = Engine::default();
     for block in &src.blocks {
         if !engine::parse_engine_block(block, &mut eng)? {
-            unknown_keyword(block, warnings, opts, "engine")?;
+            unknown_keyword(block, warnings, unsupported, opts, "engine")?;
         }
     }
     Ok(eng)
@@ -175,14 +184,11 @@ pub fn read_engine(
 fn unknown_keyword(
     block: &Block,
     warnings: &mut Vec<Warning>,
+    unsupported: &mut Vec<Warning>,
     opts: ReadOptions,
     file_kind: &str,
 ) -> InputResult<()> {
-    let msg = format!(
-        "keyword not supported in the {file_kind} file; its {} line(s) are skipped",
-        block.lines.len()
-    );
-    if opts.strict {
+    if opts.strict && keyword_policy::safe_to_skip(block).is_none() {
         return Err(InputError::new(
             block.loc.clone(),
             &block.header,
@@ -190,11 +196,7 @@ fn unknown_keyword(
             format!("keyword not supported in the {file_kind} file (--strict)"),
         ));
     }
-    warnings.push(Warning {
-        loc: block.loc.clone(),
-        keyword: block.header.clone(),
-        message: msg,
-    });
+    keyword_policy::not_read(block, file_kind, warnings, unsupported);
     Ok(())
 }
 
@@ -230,7 +232,13 @@ fn parse_starter_block(block: &Block, deck: &mut Deck, opts: ReadOptions) -> Inp
         _ => false,
     };
     if !handled {
-        unknown_keyword(block, &mut deck.warnings, opts, "starter")?;
+        unknown_keyword(
+            block,
+            &mut deck.warnings,
+            &mut deck.unsupported,
+            opts,
+            "starter",
+        )?;
     }
     Ok(())
 }

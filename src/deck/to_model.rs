@@ -93,6 +93,7 @@ pub fn build_model(deck: &Deck) -> Result<Model, InputError> {
         mass: MassSummary::default(),
         engine: deck.engine.clone(),
         warnings: Vec::new(),
+        unsupported: deck.unsupported.clone(),
     };
     let mut masses = Vec::new();
     for (set, locs) in model.elements.iter().zip(&element_locs) {

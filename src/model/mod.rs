@@ -229,6 +229,9 @@ pub struct Model {
     pub mass: MassSummary,
     pub engine: Option<Engine>,
     pub warnings: Vec<Warning>,
+    /// Keywords of the input that nothing computes (the keyword policy):
+    /// `run` refuses the input while there are any, unless told to skip them.
+    pub unsupported: Vec<Warning>,
 }
 
 impl Model {

@@ -96,6 +96,10 @@ pub fn report(path: &Path) -> Result<String, String> {
         attr(&f, "units_time"),
     );
     let _ = writeln!(s, "units:  mass {um}, length {ul}, time {ut}");
+    let skipped = attr(&f, "skipped_keywords");
+    for k in skipped.lines() {
+        let _ = writeln!(s, "skipped (--skip-unsupported): {k}");
+    }
     let mut kinds = Vec::new();
     if let Ok(mesh) = f.group("mesh") {
         let mut names = mesh.member_names().unwrap_or_default();

@@ -393,6 +393,9 @@ impl RunFile {
         attr_str(root, "units_length", &g.units.length)?;
         attr_str(root, "units_time", &g.units.time)?;
         attr_str(root, "crashsim_version", env!("CARGO_PKG_VERSION"))?;
+        if !g.skipped_keywords.is_empty() {
+            attr_str(root, "skipped_keywords", &g.skipped_keywords.join("\n"))?;
+        }
         attr_num(root, "ranks", ctx.world.size())?;
         let mesh = self.f().create_group("mesh").map_err(|e| e.to_string())?;
         let sd = ctx.sd;

@@ -43,6 +43,9 @@ pub struct RunOptions {
     /// Energies at every cycle (CSV; costs reductions every cycle).
     pub energies: Option<PathBuf>,
     pub strict: bool,
+    /// Run although the input has keywords the engine does not compute
+    /// (the listing and the run file say which were skipped).
+    pub skip_unsupported: bool,
     /// HDF5 run file, restart, progress (src/output).
     pub output: crate::output::OutputOptions,
 }

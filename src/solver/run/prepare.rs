@@ -36,6 +36,7 @@ pub(super) fn prepare(opts: &RunOptions, nranks: usize) -> Result<Prepared, Stri
             "{starter}: the engine file has no /RUN card: expected /RUN/NAME/1 and its end time"
         ));
     }
+    let skipped = unsupported_keywords(&m, opts)?;
     check_supported(&m)?;
     // /INTER/TYPE7 Inacti = 3: a starter step — the penetrated secondary nodes
     // get new coordinates, and the model is built again from them so that
@@ -52,6 +53,7 @@ pub(super) fn prepare(opts: &RunOptions, nranks: usize) -> Result<Prepared, Stri
     let sds = domain::split(&m, &p.part, nranks);
     let rbs = initial_rigid_bodies(&m);
     let mut g = GlobalData::from_model(&m, eng);
+    g.skipped_keywords = skipped;
     // Contact: which ranks hold each node, then the interfaces' static data.
     let mut holders: Vec<Vec<u32>> = vec![Vec::new(); m.nodes.ids.len()];
     for sd in &sds {
@@ -73,7 +75,11 @@ pub(super) fn prepare(opts: &RunOptions, nranks: usize) -> Result<Prepared, Stri
         }
     }
     // Where the engine computes a card's option another way, the listing says so.
-    let mut notes = Vec::new();
+    let mut notes: Vec<String> = g
+        .skipped_keywords
+        .iter()
+        .map(|k| format!("skipped (--skip-unsupported): {k}"))
+        .collect();
     for r in &inacti3 {
         if let Some(i) = m
             .interfaces
@@ -109,6 +115,26 @@ pub(super) fn prepare(opts: &RunOptions, nranks: usize) -> Result<Prepared, Stri
         }
     }
     Ok((g, sds, rbs, notes))
+}
+
+/// The keyword policy (deck::keyword_policy): keywords nothing computes stop
+/// the run before any cycle, every one named with its file:line; with
+/// `--skip-unsupported` they are skipped and returned, for the listing and the run file.
+fn unsupported_keywords(m: &Model, opts: &RunOptions) -> Result<Vec<String>, String> {
+    let named: Vec<String> = m
+        .unsupported
+        .iter()
+        .map(|w| format!("{}: {}", w.loc, w.keyword))
+        .collect();
+    if named.is_empty() || opts.skip_unsupported {
+        return Ok(named);
+    }
+    Err(format!(
+        "{}: {} keyword(s) of this input are not computed by the engine, so it does not run (`run --skip-unsupported` runs without them and says so in the listing):\n  {}",
+        opts.deck.display(),
+        named.len(),
+        named.join("\n  ")
+    ))
 }
 
 /// The engine refuses what it does not compute yet, by name — never a silent substitute.

@@ -20,6 +20,7 @@ fn options(deck: &str) -> RunOptions {
         history: None,
         energies: None,
         strict: false,
+        skip_unsupported: false,
         output: Default::default(),
     }
 }
