@@ -171,3 +171,75 @@ fn imposed_displacement_is_followed_exactly() {
         }
     }
 }
+
+/// decks/free_plate made one rigid body (/RBODY on all its nodes, main node
+/// 1000 at the centre, MASS 0.5) with a constant /CLOAD of 2 along x on the
+/// main node only: the load acts on the body, as in Radioss, so every node
+/// moves at v = F t / m (m: the plate, its nodes and the card's mass).
+#[test]
+fn a_load_on_a_rigid_bodys_main_node_accelerates_the_body() {
+    let src = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("decks/free_plate");
+    let dir = tmp("rbody-cload");
+    let starter = std::fs::read_to_string(src.join("free_plate_0000.rad")).unwrap();
+    let head = &starter[..starter.find("/INIVEL/TRA/1").unwrap()];
+    let cards = [
+        "/NODE",
+        "      1000                  40                  30                   0",
+        "/GRNOD/PART/7",
+        "all plate nodes",
+        "         1",
+        "/RBODY/1",
+        "plate as one rigid body",
+        "      1000         0         0         0                 0.5         7         0         0         0",
+        "                   0                   0                   0",
+        "                   0                   0                   0",
+        "/FUNCT/3",
+        "constant",
+        "                   0                   1",
+        "                  10                   1",
+        "/GRNOD/NODE/8",
+        "the main node",
+        "      1000",
+        "/CLOAD/9",
+        "pull along x",
+        "         3         X         0         0         8                             1                   2",
+        "/END",
+    ];
+    let deck = dir.join("rbody_cload_0000.rad");
+    std::fs::write(&deck, format!("{head}{}\n", cards.join("\n"))).unwrap();
+    std::fs::copy(
+        src.join("free_plate_0001.rad"),
+        dir.join("rbody_cload_0001.rad"),
+    )
+    .unwrap();
+    let m = common::crashsim_json(&["check", deck.to_str().unwrap(), "--json"])["total_mass"]
+        .as_f64()
+        .unwrap();
+    assert!((m - (0.03768 + 0.5)).abs() < 1e-12, "total mass {m}");
+    let fs = dir.join("final.csv");
+    let out = common::crashsim(&[
+        "run",
+        deck.to_str().unwrap(),
+        "--out",
+        dir.to_str().unwrap(),
+        "--quiet",
+        "--final-state",
+        fs.to_str().unwrap(),
+    ]);
+    common::ok(&out, "run");
+    // Velocities live at the half step: the last one is v(t_end - dt/2), dt ~ 1.7e-3 ms.
+    let expected = 2.0 / m * 0.5;
+    for line in std::fs::read_to_string(&fs).unwrap().lines().skip(1) {
+        let c: Vec<f64> = line.split(',').map(|s| s.parse().unwrap()).collect();
+        assert!(
+            (c[4] - expected).abs() < 5e-3 * expected,
+            "node {}: vx {} against F t / m = {expected}",
+            c[0],
+            c[4]
+        );
+        assert!(
+            c[5].abs() < 1e-12 * expected && c[6].abs() < 1e-12 * expected,
+            "{line}"
+        );
+    }
+}

@@ -79,13 +79,17 @@ fn accelerate(cx: &Ctx, s: &mut State, dt_v: f64) {
     }
 }
 
-/// This rank's owned member loads of each rigid body, in member order.
+/// This rank's owned loads of each rigid body: its members', then its main
+/// node's (a load on the main node acts on the body, as in Radioss; the main
+/// node sits at the centre, so its force adds no moment).
 fn rigid_body_loads(cx: &Ctx, s: &State) -> Vec<Vec<NodeLoad>> {
     cx.local_bodies
         .iter()
         .map(|lb| {
+            let main = lb.main_local.map(|l| (l, cx.sd.node_global[l as usize]));
             lb.members
                 .iter()
+                .chain(main.iter())
                 .filter(|(l, _)| cx.owned[*l as usize])
                 .map(|&(l, gl)| {
                     let l = l as usize;

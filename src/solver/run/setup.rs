@@ -20,7 +20,7 @@ use std::collections::HashMap;
 
 /// One rank's rigid body membership.
 pub(super) struct LocalBody {
-    /// (local node, global node) of the members this rank holds (main node included).
+    /// (local node, global node) of the secondary nodes this rank holds (the main node is `main_local`).
     pub members: Vec<(u32, u32)>,
     pub main_local: Option<u32>,
     /// Card MASS + main node's own mass: what the main node carries.
