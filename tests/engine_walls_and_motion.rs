@@ -52,6 +52,32 @@ fn free_moving_wall_conserves_momentum() {
     }
     let p = p_bar + 0.01 * v_wall;
     assert!((p - 0.05).abs() < 1e-12, "total momentum {p} vs 0.05");
+    // The listing counts the free wall as Radioss does: its 0.01 kg in TOTAL
+    // MASS (bar: 7.85e-6 x 10 x 10 x 100 = 0.0785) and its ½ m v² in K-ENERGY T.
+    let listing = std::fs::read_to_string(dir.join("brick_bar_wall.out")).unwrap();
+    let rows: Vec<Vec<&str>> = listing
+        .lines()
+        .map(|l| l.split_whitespace().collect::<Vec<_>>())
+        .filter(|t| t.len() == 13 && t[0].parse::<u64>().is_ok() && t[5].ends_with('%'))
+        .collect();
+    let num = |t: &str| t.parse::<f64>().unwrap();
+    assert_eq!(rows[0][0], "0");
+    assert!(
+        (num(rows[0][7]) - 0.125).abs() < 1e-4,
+        "K-ENERGY T at t = 0: {}",
+        rows[0][7]
+    );
+    assert!(
+        (num(rows[0][11]) - 0.0885).abs() < 1e-4,
+        "TOTAL MASS: {}",
+        rows[0][11]
+    );
+    let last = rows.last().unwrap();
+    let err = num(last[5].trim_end_matches('%'));
+    assert!(
+        err.abs() < 5.0,
+        "ERROR {err}% at the end: the wall's energy is in the balance"
+    );
     assert!(
         v_wall < 5.0 && v_wall > 0.0,
         "the wall slowed down (v = {v_wall})"

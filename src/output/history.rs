@@ -312,7 +312,7 @@ impl History {
             }
         }
         ctx.world.sum_f64(&mut buf);
-        let (ke, ker) = (s.kinetic)(s.v, s.vr, s.bodies);
+        let (ke, ker) = (s.kinetic)(s.v, s.vr, s.bodies, s.wall_v);
         // The listing's internal energy leaves the hourglass energy out (its
         // own column), as the Radioss listing and time histories do; the
         // balance counts both.

@@ -81,8 +81,9 @@ pub struct Context<'a> {
 }
 
 /// Kinetic energies (translational, rotational) the listing's way, from
-/// the velocities and rigid bodies (collective).
-pub type KineticFn<'a> = dyn Fn(&[[f64; 3]], &[[f64; 3]], &[RigidBodyState]) -> (f64, f64) + 'a;
+/// the velocities, rigid bodies and rigid-wall velocities (collective).
+pub type KineticFn<'a> =
+    dyn Fn(&[[f64; 3]], &[[f64; 3]], &[RigidBodyState], &[[f64; 3]]) -> (f64, f64) + 'a;
 
 /// The explicit loop's state, by reference: what the restart file saves and
 /// restores, and what states and histories are made of. Node arrays are

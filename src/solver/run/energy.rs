@@ -5,12 +5,14 @@ use crate::kinematics::rigid_body::RigidBodyState;
 
 /// Translational and rotational kinetic energy (owned nodes, rigid-body
 /// main masses once; rigid-body main nodes and tied secondary nodes skip
-/// the translational energy).
+/// the translational energy), with the free moving rigid walls' own kinetic
+/// energy in the translational one, as the Radioss listing counts it.
 pub(super) fn kinetic(
     cx: &Ctx,
     v: &[[f64; 3]],
     vr: &[[f64; 3]],
     bodies: &[RigidBodyState],
+    wall_v: &[[f64; 3]],
 ) -> (f64, f64) {
     let (mass, inertia, owned, skip) = (&cx.mass, &cx.inertia_ke, &cx.owned, &cx.ke_skip);
     let mut e = [0.0f64; 2];
@@ -28,6 +30,13 @@ pub(super) fn kinetic(
         if lb.main_local.is_some() {
             let vb = bodies[b].v;
             e[0] += 0.5 * lb.main_mass * (vb[0] * vb[0] + vb[1] * vb[1] + vb[2] * vb[2]);
+        }
+    }
+    if cx.world.rank() == 0 {
+        // The walls' state is replicated: counted once, on rank 0.
+        for &(w, m) in &cx.free_walls {
+            let u = wall_v[w];
+            e[0] += 0.5 * m * (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
         }
     }
     cx.world.sum_f64(&mut e);
@@ -55,7 +64,7 @@ pub(super) fn global(cx: &Ctx, s: &State) -> Energies {
         s.e_contact,
     ];
     cx.world.sum_f64(&mut e);
-    let (kinetic, rotational) = kinetic(cx, &s.v, &s.vr, &s.bodies);
+    let (kinetic, rotational) = kinetic(cx, &s.v, &s.vr, &s.bodies, &s.walls.v);
     Energies {
         internal: e[0],
         hourglass: e[1],
@@ -81,6 +90,6 @@ pub(super) fn final_breakdown(cx: &Ctx, s: &State) -> [f64; 8] {
     e[4] = s.wall_work;
     e[5] = s.e_contact;
     cx.world.sum_f64(&mut e);
-    let (ke, ker) = kinetic(cx, &s.v, &s.vr, &s.bodies);
+    let (ke, ker) = kinetic(cx, &s.v, &s.vr, &s.bodies, &s.walls.v);
     [e[0], e[1], e[2], ke, ker, e[3], e[4], e[5]]
 }

@@ -104,8 +104,9 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
         opts: &opts.output,
         interfaces: &interfaces,
     };
-    let ke_of =
-        |v: &[[f64; 3]], vr: &[[f64; 3]], b: &[RigidBodyState]| energy::kinetic(&cx, v, vr, b);
+    let ke_of = |v: &[[f64; 3]], vr: &[[f64; 3]], b: &[RigidBodyState], w: &[[f64; 3]]| {
+        energy::kinetic(&cx, v, vr, b, w)
+    };
     let mut out = output::Output::start(&octx, &mut loop_state(&mut s, &ke_of))?;
     if let Some(p) = &opts.output.restart {
         // The interfaces' Idel state came with the restart file: the
@@ -164,7 +165,7 @@ fn cycle_zero(cx: &Ctx, s: &mut State, report: &mut Report) -> Result<(), RunErr
     let found = forces::all_forces(cx, s, 0.0);
     s.step = time_step::global_step(cx, s, found)?;
     s.dt = s.step.dt;
-    let (ke0, ker0) = energy::kinetic(cx, &s.v, &s.vr, &s.bodies);
+    let (ke0, ker0) = energy::kinetic(cx, &s.v, &s.vr, &s.bodies, &s.walls.v);
     s.e0 = ke0 + ker0;
     if cx.opts.output.restart.is_none() {
         let e = energy::Energies {

@@ -100,7 +100,7 @@ impl Report {
             ker: e.rotational,
             ext_work: w,
             mas_err: 0.0,
-            total_mass: cx.g.total_mass,
+            total_mass: cx.g.total_mass + cx.free_walls.iter().map(|w| w.1).sum::<f64>(),
             mass_added: 0.0,
         }));
     }

@@ -58,6 +58,10 @@ pub(super) struct Ctx<'a> {
     pub walls: OnLocal<'a, model::RigidWall>,
     /// Every translational /IMPVEL on a moving wall's node drives that direction.
     pub wall_driver: Vec<Vec<&'a model::ImposedMotion>>,
+    /// Free moving walls (a node, a mass, no driver): (wall, mass). The
+    /// listing counts their mass in TOTAL MASS and their kinetic energy in
+    /// K-ENERGY T, as Radioss does.
+    pub free_walls: Vec<(usize, f64)>,
     pub impdisp: OnLocal<'a, model::ImposedMotion>,
     pub impvel: OnLocal<'a, model::ImposedMotion>,
     pub cloads: OnLocal<'a, model::ConcentratedLoad>,
@@ -202,6 +206,7 @@ pub(super) fn context<'a>(
         local_bodies: Vec::new(),
         walls: Vec::new(),
         wall_driver: Vec::new(),
+        free_walls: Vec::new(),
         impdisp: Vec::new(),
         impvel: Vec::new(),
         cloads: Vec::new(),
@@ -290,6 +295,13 @@ fn on_local_cards<'a>(cx: &mut Ctx<'a>) {
                 .collect(),
             None => Vec::new(),
         })
+        .collect();
+    cx.free_walls = g
+        .rigid_walls
+        .iter()
+        .enumerate()
+        .filter(|(w, r)| r.node.is_some() && r.card.mass > 0.0 && cx.wall_driver[*w].is_empty())
+        .map(|(w, r)| (w, r.card.mass))
         .collect();
     cx.impdisp = g
         .imposed_displacements
