@@ -387,17 +387,68 @@ fn section(block: &Block, deck: &mut Deck) -> InputResult<bool> {
 }
 
 /// The Trarot field: six 0/1 codes in columns 4-6 (translations) and 8-10
-/// (rotations) of the first field, e.g. `   111 111`. Written without the
-/// blank (`111111`) is accepted too.
+/// (rotations) of the first field, e.g. `   111 111`. Six codes written
+/// anywhere in the field (`111111`) are accepted too; fewer are read by column.
 fn read_trarot(c: &Card) -> InputResult<[bool; 6]> {
-    let raw = super::fields::Card::text(c, 1, 10);
+    let raw = c.raw(1, 10);
+    let shown = raw.trim();
     let digits: String = raw.chars().filter(|ch| !ch.is_whitespace()).collect();
-    if digits.len() != 6 || !digits.chars().all(|ch| ch == '0' || ch == '1') {
-        return Err(c.err("Trarot", format!("'{raw}': expected six 0/1 codes like '111 111' (translations X Y Z, rotations X Y Z)")));
+    if !digits.chars().all(|ch| ch == '0' || ch == '1') || digits.is_empty() {
+        return Err(c.err("Trarot", format!("'{shown}': expected six 0/1 codes like '111 111' (translations X Y Z, rotations X Y Z)")));
     }
     let mut out = [false; 6];
-    for (i, ch) in digits.chars().enumerate() {
-        out[i] = ch == '1';
+    if digits.len() == 6 {
+        for (i, ch) in digits.chars().enumerate() {
+            out[i] = ch == '1';
+        }
+        return Ok(out);
+    }
+    // Fewer codes: read by position as the reference guide lays the field
+    // out (/BCS, "Trarot input format"): columns 4-6 TX TY TZ, 8-10 ωX ωY ωZ,
+    // a blank column reading 0 (e.g. '     1' fixes TZ only).
+    let col = |k: usize| raw.as_bytes().get(k - 1).copied().unwrap_or(b' ');
+    for (i, k) in [4, 5, 6, 8, 9, 10].into_iter().enumerate() {
+        out[i] = col(k) == b'1';
+    }
+    let placed: usize = [4, 5, 6, 8, 9, 10]
+        .iter()
+        .filter(|&&k| col(k) != b' ')
+        .count();
+    if placed != digits.len() {
+        return Err(c.err("Trarot", format!("'{shown}': a code outside columns 4-6 (translations X Y Z) and 8-10 (rotations X Y Z)")));
     }
     Ok(out)
+}
+
+#[cfg(test)]
+mod trarot_tests {
+    use super::*;
+    use crate::deck::source::Line;
+    use crate::model::Loc;
+
+    fn trarot(text: &str) -> InputResult<[bool; 6]> {
+        let line = Line {
+            text: text.to_string(),
+            loc: Loc::default(),
+        };
+        read_trarot(&Card {
+            line: &line,
+            kw: "/BCS/1",
+        })
+    }
+
+    #[test]
+    fn trarot_is_read_as_the_reference_guide_lays_it_out() {
+        let (t, f) = (true, false);
+        assert_eq!(trarot("   111 111").unwrap(), [t, t, t, t, t, t]);
+        assert_eq!(trarot("   101 000").unwrap(), [t, f, t, f, f, f]);
+        assert_eq!(trarot("111111").unwrap(), [t, t, t, t, t, t]);
+        // Fewer codes by column: column 6 is TZ, column 10 ωZ (OpenRadioss QA LOI44 writes '     1').
+        assert_eq!(trarot("     1             0").unwrap(), [f, f, t, f, f, f]);
+        assert_eq!(trarot("         1").unwrap(), [f, f, f, f, f, t]);
+        assert_eq!(trarot("   11").unwrap(), [t, t, f, f, f, f]);
+        assert!(trarot(" 1").is_err(), "column 2 holds no code");
+        assert!(trarot("   121 000").is_err());
+        assert!(trarot("").is_err());
+    }
 }

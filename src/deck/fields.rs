@@ -112,6 +112,11 @@ impl<'a> Card<'a> {
         field_slice(&self.line.text, col, width).trim()
     }
 
+    /// The field as written, blanks kept (for fields read by column, like Trarot).
+    pub fn raw(&self, col: usize, width: usize) -> &'a str {
+        field_slice(&self.line.text, col, width)
+    }
+
     /// Integer field; `None` when blank.
     pub fn int_opt(&self, col: usize, width: usize, name: &str) -> InputResult<Option<i64>> {
         let t = self.text(col, width);
