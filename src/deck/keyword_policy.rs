@@ -32,11 +32,6 @@ pub fn safe_to_skip(block: &Block) -> Option<&'static str> {
         .map(|(_, why)| *why)
 }
 
-/// The names of the keywords the policy lets through unread (for the README and `check`).
-pub fn safe_keywords() -> impl Iterator<Item = &'static str> {
-    SAFE_TO_SKIP.iter().map(|(k, _)| *k)
-}
-
 /// A keyword that no parser reads: a warning when it is safe to skip; when
 /// it is unsupported, a warning and an entry in `unsupported` (what `run` stops on).
 pub fn not_read(

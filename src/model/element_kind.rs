@@ -42,6 +42,30 @@ impl ElementKind {
         }
     }
 
+    /// The kind's place in [`ElementKind::ALL`].
+    pub fn index(self) -> usize {
+        self as usize
+    }
+
+    /// The name the engine listing gives the kind (ELEMENT column, messages):
+    /// the keyword without its slash (`SHELL`, `SH3N`, `BRICK`, ...).
+    pub fn listing_name(self) -> &'static str {
+        &self.keyword()[1..]
+    }
+
+    /// The name of the kind's group in the HDF5 run and restart files.
+    pub fn file_name(self) -> &'static str {
+        match self {
+            ElementKind::Shell4 => "shell4",
+            ElementKind::Shell3 => "shell3",
+            ElementKind::Brick8 => "brick8",
+            ElementKind::Tetra4 => "tetra4",
+            ElementKind::Spring => "spring",
+            ElementKind::Truss => "truss",
+            ElementKind::Beam => "beam",
+        }
+    }
+
     /// Number of nodes that define the element (beams: 2 + orientation node).
     pub fn nodes(self) -> usize {
         match self {
@@ -50,5 +74,20 @@ impl ElementKind {
             ElementKind::Brick8 => 8,
             ElementKind::Spring | ElementKind::Truss => 2,
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_kind_knows_its_place_and_its_names() {
+        for (i, k) in ElementKind::ALL.into_iter().enumerate() {
+            assert_eq!(k.index(), i);
+            assert_eq!(format!("/{}", k.listing_name()), k.keyword());
+        }
+        assert_eq!(ElementKind::Shell3.listing_name(), "SH3N");
+        assert_eq!(ElementKind::Brick8.file_name(), "brick8");
     }
 }

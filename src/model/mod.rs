@@ -236,7 +236,7 @@ pub struct Model {
 
 impl Model {
     pub fn elements_of(&self, kind: ElementKind) -> &ElementSet {
-        &self.elements[ElementKind::ALL.iter().position(|k| *k == kind).unwrap()]
+        &self.elements[kind.index()]
     }
     pub fn n_elements(&self) -> usize {
         self.elements.iter().map(|s| s.len()).sum()

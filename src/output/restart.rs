@@ -37,7 +37,6 @@
 //! a run killed while writing keeps the previous restart file.
 
 use super::h5::{self, Rows, Xfer};
-use super::runfile::kind_name;
 use super::{Context, LoopState};
 use crate::kinematics::rigid_body::RigidBodyState;
 use crate::parallel::World;
@@ -460,7 +459,7 @@ pub fn save(
             .map(|&(b, e)| s.blocks[b].export_state(e))
             .collect();
         w.dense_bytes(
-            &format!("elements.{}", kind_name(kr.kind)),
+            &format!("elements.{}", kr.kind.file_name()),
             kr.total,
             &kr.rows,
             &recs,
@@ -694,7 +693,7 @@ pub fn restore(ctx: &Context, path: &Path, s: &mut LoopState) -> Result<OutputCo
     unpack(&r, "nodes.fint", &all, n, s.fint)?;
     unpack(&r, "nodes.fext", &all, n, s.fext)?;
     for kr in super::runfile::kind_rows(ctx, s.blocks) {
-        let name = format!("elements.{}", kind_name(kr.kind));
+        let name = format!("elements.{}", kr.kind.file_name());
         let (total, recs) = r.dense_bytes(&name, &kr.rows)?;
         if total != kr.total {
             return Err(r.err(format!(

@@ -68,19 +68,6 @@ pub fn read_th(f: &File, name: &str) -> Result<(Vec<usize>, Vec<f64>), String> {
     })
 }
 
-/// The name of an element kind's group.
-pub fn kind_name(k: ElementKind) -> &'static str {
-    match k {
-        ElementKind::Shell4 => "shell4",
-        ElementKind::Shell3 => "shell3",
-        ElementKind::Brick8 => "brick8",
-        ElementKind::Tetra4 => "tetra4",
-        ElementKind::Spring => "spring",
-        ElementKind::Truss => "truss",
-        ElementKind::Beam => "beam",
-    }
-}
-
 /// One element kind present in the model: its global count, the rows this
 /// rank writes (its elements' global indices) and where each row's element
 /// lives: (block, element in the block), in row order. A kind may be held by
@@ -410,10 +397,10 @@ impl RunFile {
         h5::write_rows(&ds, &self.node_rows, &ids, &self.xfer)?;
         self.write_node_array(&mesh, "coordinates", |l| sd.x[l])?;
         for kr in &self.kinds {
-            let ki = ElementKind::ALL.iter().position(|&k| k == kr.kind).unwrap();
+            let ki = kr.kind.index();
             let nn = kr.kind.nodes();
             let grp = mesh
-                .create_group(kind_name(kr.kind))
+                .create_group(kr.kind.file_name())
                 .map_err(|e| e.to_string())?;
             let (mut conn, mut eids, mut pids) = (Vec::new(), Vec::new(), Vec::new());
             for &(b, e) in &kr.members {
@@ -527,7 +514,7 @@ impl RunFile {
         self.write_node_array(&grp, "contact_force", |l| contact_force[l])?;
         for kr in &self.kinds {
             let sub = grp
-                .create_group(kind_name(kr.kind))
+                .create_group(kr.kind.file_name())
                 .map_err(|e| e.to_string())?;
             let mut per_block: Vec<Option<Vec<ElemOut>>> = vec![None; s.blocks.len()];
             let outs: Vec<ElemOut> = kr

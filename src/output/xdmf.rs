@@ -104,7 +104,7 @@ fn grid(m: &XdmfModel, idx: usize, time: f64) -> String {
             ind.push_str("  ");
         }
         for &(kind, ne) in &m.kinds {
-            let kn = super::runfile::kind_name(kind);
+            let kn = kind.file_name();
             let (topo, nn) = topology(kind);
             let name = if spatial {
                 kn.to_string()

@@ -1,8 +1,7 @@
 //! The run's CSV files (rank 0 writes; every rank takes part in the
 //! gathers): `--final-state`, `--final-elements`, `--energies`, `--history`.
 
-use super::setup::{kind_index, Ctx, State};
-use super::time_step::kind_name;
+use super::setup::{Ctx, State};
 use crate::error::RunError;
 use std::path::Path;
 
@@ -73,7 +72,7 @@ fn final_elements(cx: &Ctx, s: &State, path: &Path) -> Result<(), RunError> {
         .blocks
         .iter()
         .flat_map(|b| {
-            let ki = kind_index(b.kind());
+            let ki = b.kind().index();
             b.rows().into_iter().map(move |(ge, v)| (ki, ge, v))
         })
         .collect();
@@ -87,7 +86,7 @@ fn final_elements(cx: &Ctx, s: &State, path: &Path) -> Result<(), RunError> {
     for (ki, ge, v) in rows {
         out.push_str(&format!(
             "{},{}",
-            kind_name(crate::model::ElementKind::ALL[ki]),
+            crate::model::ElementKind::ALL[ki].listing_name(),
             cx.g.element_ids[ki][ge as usize]
         ));
         for val in &v[..6] {

@@ -3,12 +3,11 @@
 //! the interfaces learn of).
 
 use super::super::assembly::SLOT;
-use super::setup::{kind_index, Ctx, OnLocal, State};
+use super::setup::{Ctx, State};
 use super::time_step::Found;
 use crate::contact::{ContactStep, ContactSystem};
 use crate::element::blocks::Block;
 use crate::kinematics::function;
-use crate::model;
 use crate::model::{Dof, ElementKind};
 use std::collections::HashMap;
 
@@ -60,18 +59,13 @@ fn external_forces(cx: &Ctx, t: f64, fext: &mut [[f64; SLOT]]) {
     for f in fext.iter_mut() {
         *f = [0.0; SLOT];
     }
-    concentrated_loads(cx, &cx.cloads, t, fext);
-    gravity(cx, &cx.gravity, &cx.sd.mass, t, fext);
+    concentrated_loads(cx, t, fext);
+    gravity(cx, t, fext);
 }
 
-fn concentrated_loads(
-    cx: &Ctx,
-    cloads: &OnLocal<model::ConcentratedLoad>,
-    t: f64,
-    fext: &mut [[f64; SLOT]],
-) {
+fn concentrated_loads(cx: &Ctx, t: f64, fext: &mut [[f64; SLOT]]) {
     let fct: &HashMap<u64, usize> = &cx.fct_index;
-    for (nodes, c) in cloads {
+    for (nodes, c) in &cx.cloads {
         let val = function::scaled(
             &cx.g.functions[fct[&c.card.fct]],
             t,
@@ -86,14 +80,9 @@ fn concentrated_loads(
 }
 
 /// Gravity acts on each node's own mass (not the tied masses moved to main nodes).
-fn gravity(
-    cx: &Ctx,
-    gravity: &OnLocal<model::Gravity>,
-    mass: &[f64],
-    t: f64,
-    fext: &mut [[f64; SLOT]],
-) {
-    for (nodes, c) in gravity {
+fn gravity(cx: &Ctx, t: f64, fext: &mut [[f64; SLOT]]) {
+    let mass = &cx.sd.mass;
+    for (nodes, c) in &cx.gravity {
         let acc = if c.card.fct == 0 {
             c.card.fscale_y
         } else {
@@ -122,7 +111,7 @@ pub(super) fn newly_deleted(s: &mut State) -> Vec<(u8, u32)> {
         return out;
     }
     for (b, w) in s.blocks.iter().zip(s.was_alive.iter_mut()) {
-        let ki = kind_index(b.kind()) as u8;
+        let ki = b.kind().index() as u8;
         for (e, a) in w.iter_mut().enumerate() {
             if *a && !b.alive(e) {
                 *a = false;

@@ -13,7 +13,6 @@ use crate::error::RunError;
 use crate::global::GlobalData;
 use crate::kinematics::rigid_body::RigidBodyState;
 use crate::model;
-use crate::model::ElementKind;
 use crate::output;
 use crate::parallel::World;
 use std::collections::HashMap;
@@ -138,14 +137,6 @@ pub(super) struct State {
     pub interface_samples: Vec<output::InterfaceSample>,
     /// The `--energies` CSV rows.
     pub energy_rows: Vec<[f64; 9]>,
-}
-
-/// The index of an element kind in the model's kind table.
-pub(super) fn kind_index(k: ElementKind) -> usize {
-    crate::model::ElementKind::ALL
-        .iter()
-        .position(|&q| q == k)
-        .unwrap()
 }
 
 impl<'a> Ctx<'a> {
@@ -432,7 +423,7 @@ fn slots(cx: &mut Ctx, blocks: &[Box<dyn Block>]) -> Vec<(u32, SlotKey)> {
         cx.offsets.push(slot_meta.len());
         let le = b.local();
         let nc = b.corners();
-        let ki = kind_index(b.kind());
+        let ki = b.kind().index();
         let stride = b.kind().nodes();
         for e in 0..le.global.len() {
             for c in 0..nc {

@@ -2,7 +2,7 @@
 //! (ties: smallest kind, then id), combined with the contact nodal and
 //! kinematic steps, and the collective stop when any rank met a problem.
 
-use super::setup::{kind_index, Ctx, State, Step};
+use super::setup::{Ctx, State, Step};
 use crate::contact::ContactStep;
 use crate::element::blocks::Block;
 use crate::error::RunError;
@@ -19,24 +19,11 @@ pub(super) struct Found {
     pub contact: Option<ContactStep>,
 }
 
-/// The listing's name of an element kind.
-pub(super) fn kind_name(k: ElementKind) -> &'static str {
-    match k {
-        ElementKind::Shell4 => "SHELL",
-        ElementKind::Shell3 => "SH3N",
-        ElementKind::Brick8 => "BRICK",
-        ElementKind::Tetra4 => "TETRA4",
-        ElementKind::Spring => "SPRING",
-        ElementKind::Truss => "TRUSS",
-        ElementKind::Beam => "BEAM",
-    }
-}
-
 /// This rank's smallest element time step: (dt, kind index, element id).
 fn smallest_element_step(cx: &Ctx, blocks: &[Box<dyn Block>]) -> (f64, usize, u64) {
     let mut best = (f64::INFINITY, usize::MAX, u64::MAX);
     for b in blocks {
-        let ki = kind_index(b.kind());
+        let ki = b.kind().index();
         let le = b.local();
         for (e, st) in b.steps().iter().enumerate() {
             if b.alive(e) {
@@ -59,8 +46,8 @@ pub(super) fn global_step(cx: &Ctx, s: &State, found: Found) -> Result<Step, Run
     let prob = found.element.map(|(k, ge, m)| {
         format!(
             "{} {} {m} at cycle {cycle}, time {t:e}",
-            kind_name(k),
-            cx.g.element_ids[kind_index(k)][ge as usize]
+            k.listing_name(),
+            cx.g.element_ids[k.index()][ge as usize]
         )
     });
     let prob = found.node.or(prob);
@@ -91,7 +78,7 @@ pub(super) fn global_step(cx: &Ctx, s: &State, found: Found) -> Result<Step, Run
     let contacts: Vec<ContactStep> = all.into_iter().map(|a| a.4).collect();
     let step = Step {
         dt: d,
-        what: kind_name(crate::model::ElementKind::ALL[ki]),
+        what: crate::model::ElementKind::ALL[ki].listing_name(),
         id,
     };
     let mut step = with_contact(step, &contacts);
