@@ -120,7 +120,7 @@ fn a_signal_on_one_rank_stops_every_rank_at_the_same_cycle_with_a_restart_file()
 }
 
 /// Kills `rank` of a run on `np` ranks (0: one process, no mpirun) at
-/// cycle 600 by SIGKILL; the job ends within 10 s and its run file reads
+/// cycle 600 by SIGKILL; the job ends (within 60 s: a hang is what this catches) and its run file reads
 /// up to the last complete state.
 fn killed_at_cycle_600_leaves_a_readable_run_file(np: u32, rank: u32, tag: &str) {
     let dir = scratch(tag);
@@ -132,7 +132,9 @@ fn killed_at_cycle_600_leaves_a_readable_run_file(np: u32, rank: u32, tag: &str)
         !out.status.success(),
         "the job must fail when a rank is killed"
     );
-    assert!(secs < 10.0, "the job took {secs:.1} s to end after SIGKILL");
+    // A hang detector, not a speed bound: the run to cycle 600 itself takes
+    // seconds, more when the suite loads both cores.
+    assert!(secs < 60.0, "the job took {secs:.1} s to end after SIGKILL");
     // States 0..5 (up to cycle 532) were complete before cycle 600.
     let script = r#"
 import sys, h5py, numpy as np

@@ -352,6 +352,7 @@ pub struct TiedSums {
 }
 
 /// One rank's runtime of the TYPE2 interfaces.
+#[derive(Clone)]
 pub struct TiedSystem {
     pub setup: TiedSetup,
     /// Local index of each tnode (NONE: not on this rank).

@@ -265,6 +265,7 @@ impl History {
         }
         buf[3] = *s.w_ext;
         buf[4] = *s.wall_work;
+        let vel: &[[f64; 3]] = s.at_n.map_or(&s.v[..], |a| &a.v);
         for (bi, b) in s.blocks.iter().enumerate() {
             let le = b.local();
             let nn = b.kind().nodes();
@@ -280,7 +281,7 @@ impl History {
                 let mut v2 = 0.0;
                 for &n in &le.nodes[nn * e..nn * (e + 1)] {
                     if n != crate::model::NO_NODE {
-                        let v = s.v[n as usize];
+                        let v = vel[n as usize];
                         v2 += v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
                     }
                 }
@@ -303,7 +304,7 @@ impl History {
             let o = o_node + 9 * i;
             for k in 0..3 {
                 buf[o + k] = s.x[l][k] - ctx.sd.x[l][k];
-                buf[o + 3 + k] = s.v[l][k];
+                buf[o + 3 + k] = vel[l][k];
                 buf[o + 6 + k] = if mass[l] > 0.0 && !s.fixed[l][k] {
                     (s.fext[l][k] - s.fint[l][k]) / mass[l]
                 } else {
@@ -312,7 +313,10 @@ impl History {
             }
         }
         ctx.world.sum_f64(&mut buf);
-        let (ke, ker) = (s.kinetic)(s.v, s.vr, s.bodies, s.wall_v);
+        let (ke, ker) = match s.at_n {
+            Some(a) => (s.kinetic)(&a.v, &a.vr, &a.bodies, &a.wall_v),
+            None => (s.kinetic)(s.v, s.vr, s.bodies, s.wall_v),
+        };
         // The listing's internal energy leaves the hourglass energy out (its
         // own column), as the Radioss listing and time histories do; the
         // balance counts both.

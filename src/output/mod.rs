@@ -80,6 +80,19 @@ pub struct Context<'a> {
     pub interfaces: &'a [InterfaceInfo],
 }
 
+/// The velocities at t^n, the time of the positions, forces and internal
+/// energy of a cycle's end. The loop carries velocities at t^{n−½}; the
+/// kinetic energy Radioss lists is ½m|v^n|² with v^n = v^{n−½} + ½Δt a^n
+/// (`decks/free_plate` against OpenRadioss: the same K-ENERGY T to four
+/// digits; ½m|v^{n−½}|² is 7–11% high while the plate rings).
+#[derive(Clone, Debug)]
+pub struct VelocitiesAtN {
+    pub v: Vec<[f64; 3]>,
+    pub vr: Vec<[f64; 3]>,
+    pub bodies: Vec<RigidBodyState>,
+    pub wall_v: Vec<[f64; 3]>,
+}
+
 /// Kinetic energies (translational, rotational) the listing's way, from
 /// the velocities, rigid bodies and rigid-wall velocities (collective).
 pub type KineticFn<'a> =
@@ -132,6 +145,10 @@ pub struct LoopState<'a> {
     pub contact_force: &'a [[f64; 3]],
     pub interfaces: &'a [InterfaceSample],
     pub kinetic: &'a KineticFn<'a>,
+    /// The velocities at t^n when the loop has them (every cycle the
+    /// histories sample, and the last); else the kinetic energies and
+    /// velocities are those of `v`, `vr` (t = 0 and restarts: the same).
+    pub at_n: Option<&'a VelocitiesAtN>,
 }
 
 /// The outputs of one run, on every rank.
@@ -354,6 +371,12 @@ impl Output {
             next_anim: self.next_anim,
         };
         restart::save(ctx, &self.rst_path, s, &counters).map_err(input)
+    }
+
+    /// Whether the end of this cycle (time `t`) writes a time-history row
+    /// (which needs the velocities at t^n).
+    pub fn samples_at(&self, t: f64) -> bool {
+        self.file.is_some() && self.history.due(t)
     }
 
     /// At the end of every cycle (collective). `Some(message)` when the run

@@ -43,6 +43,15 @@ pub(super) fn kinetic(
     (e[0], e[1])
 }
 
+/// The kinetic energies at t^n: from `State::at_n` when the cycle has
+/// them, else (t = 0) from the velocities as they are.
+fn kinetic_at_n(cx: &Ctx, s: &State) -> (f64, f64) {
+    match &s.at_n {
+        Some(a) => kinetic(cx, &a.v, &a.vr, &a.bodies, &a.wall_v),
+        None => kinetic(cx, &s.v, &s.vr, &s.bodies, &s.walls.v),
+    }
+}
+
 /// The energies of one listing row or `--energies` CSV row.
 #[derive(Clone, Copy, Debug, Default)]
 pub(super) struct Energies {
@@ -64,7 +73,7 @@ pub(super) fn global(cx: &Ctx, s: &State) -> Energies {
         s.e_contact,
     ];
     cx.world.sum_f64(&mut e);
-    let (kinetic, rotational) = kinetic(cx, &s.v, &s.vr, &s.bodies, &s.walls.v);
+    let (kinetic, rotational) = kinetic_at_n(cx, s);
     Energies {
         internal: e[0],
         hourglass: e[1],
@@ -90,6 +99,6 @@ pub(super) fn final_breakdown(cx: &Ctx, s: &State) -> [f64; 8] {
     e[4] = s.wall_work;
     e[5] = s.e_contact;
     cx.world.sum_f64(&mut e);
-    let (ke, ker) = kinetic(cx, &s.v, &s.vr, &s.bodies, &s.walls.v);
+    let (ke, ker) = kinetic_at_n(cx, s);
     [e[0], e[1], e[2], ke, ker, e[3], e[4], e[5]]
 }

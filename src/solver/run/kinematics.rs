@@ -251,3 +251,53 @@ fn boundary_conditions(s: &mut State) {
         }
     }
 }
+
+/// The velocities at t^n, the time of this cycle's positions, forces and
+/// internal energy: v^n = v^{n−½} + ½Δt^{n−½} a^n, a^n with every condition
+/// of the velocity phases (boundary conditions, rigid bodies and walls,
+/// imposed motion, ties). The next cycle's velocity phases run and are
+/// undone (collective: every rank asks at the same cycles), and v^n is read
+/// between v^{n−½} and v^{n+½}. At cycle 0 (and wherever no step was taken
+/// yet) the velocities are those of t^n already.
+pub(super) fn at_n(cx: &Ctx, s: &mut State) -> output::VelocitiesAtN {
+    let now = |s: &State| output::VelocitiesAtN {
+        v: s.v.clone(),
+        vr: s.vr.clone(),
+        bodies: s.bodies.clone(),
+        wall_v: s.walls.v.clone(),
+    };
+    if s.cycle == 0 || s.dt_prev <= 0.0 {
+        return now(s);
+    }
+    let before = now(s);
+    let kept = (
+        s.ftie.clone(),
+        s.walls.clone(),
+        s.wall_work,
+        s.interface_samples.clone(),
+        s.ties.clone(),
+    );
+    velocities(cx, s, 0.5 * (s.dt_prev + s.dt));
+    let w = s.dt_prev / (s.dt_prev + s.dt);
+    let lerp = |a: &[[f64; 3]], b: &[[f64; 3]]| -> Vec<[f64; 3]> {
+        a.iter()
+            .zip(b)
+            .map(|(p, q)| [0, 1, 2].map(|k| p[k] + w * (q[k] - p[k])))
+            .collect()
+    };
+    let mut bodies = before.bodies.clone();
+    for (b, after) in bodies.iter_mut().zip(&s.bodies) {
+        b.v = lerp(&[b.v], &[after.v])[0];
+        b.omega = lerp(&[b.omega], &[after.omega])[0];
+    }
+    let at = output::VelocitiesAtN {
+        v: lerp(&before.v, &s.v),
+        vr: lerp(&before.vr, &s.vr),
+        bodies,
+        wall_v: lerp(&before.wall_v, &s.walls.v),
+    };
+    // Undo: the state is again that of the cycle's end.
+    (s.v, s.vr, s.bodies) = (before.v, before.vr, before.bodies);
+    (s.ftie, s.walls, s.wall_work, s.interface_samples, s.ties) = kept;
+    at
+}

@@ -129,6 +129,9 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
         if let Err(e) = cycle(&cx, &mut s, &mut report) {
             break Err(e);
         }
+        if out.samples_at(s.t) {
+            ensure_at_n(&cx, &mut s);
+        }
         // Output hook: histories, states, restart files, progress, stop requests.
         match out.after_cycle(&octx, &mut loop_state(&mut s, &ke_of)) {
             Ok(None) => {}
@@ -140,6 +143,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
         }
     };
     // Output hook: last state and samples, XDMF (collective, also after a stop).
+    ensure_at_n(&cx, &mut s);
     let result = match (result, out.finish(&octx, &mut loop_state(&mut s, &ke_of))) {
         (Ok(()), Err(e)) => Err(e),
         (r, _) => r,
@@ -184,6 +188,7 @@ fn cycle_zero(cx: &Ctx, s: &mut State, report: &mut Report) -> Result<(), RunErr
 /// One explicit cycle: velocities at n+½, positions at n+1, forces and the
 /// time step there, then the listing's rows.
 fn cycle(cx: &Ctx, s: &mut State, report: &mut Report) -> Result<(), RunError> {
+    s.at_n = None;
     let dt_v = if s.cycle == 0 {
         0.5 * s.dt
     } else {
@@ -221,7 +226,10 @@ fn cycle(cx: &Ctx, s: &mut State, report: &mut Report) -> Result<(), RunError> {
 /// or the listing wants them; the printed cycles' rows and interface lines.
 fn print_cycle(cx: &Ctx, s: &mut State, report: &mut Report) {
     let print_now = s.cycle % cx.print_every == 0 || s.t >= cx.tstop;
-    let energies_now = (cx.opts.energies.is_some() || print_now).then(|| energy::global(cx, s));
+    let energies_now = (cx.opts.energies.is_some() || print_now).then(|| {
+        ensure_at_n(cx, s);
+        energy::global(cx, s)
+    });
     if let (Some(_), Some(e)) = (&cx.opts.energies, energies_now) {
         s.energy_rows.push([
             s.t,
@@ -241,6 +249,13 @@ fn print_cycle(cx: &Ctx, s: &mut State, report: &mut Report) {
     }
     if print_now {
         report.tied_lines(cx, s);
+    }
+}
+
+/// The velocities at t^n of this cycle, computed once (collective).
+fn ensure_at_n(cx: &Ctx, s: &mut State) {
+    if s.at_n.is_none() {
+        s.at_n = Some(kinematics::at_n(cx, s));
     }
 }
 
@@ -341,6 +356,7 @@ fn loop_state<'s>(s: &'s mut State, kinetic: &'s output::KineticFn<'s>) -> outpu
         contact_force: &s.contact_force,
         interfaces: &s.interface_samples,
         kinetic,
+        at_n: s.at_n.as_ref(),
     }
 }
 

@@ -80,6 +80,7 @@ pub(super) struct Ctx<'a> {
 /// Per-wall state, replicated on every rank: point, velocity; and per rank:
 /// the force its owned nodes put on the wall in the last cycle (time
 /// histories) and which of its nodes are tied to it.
+#[derive(Clone)]
 pub(super) struct Walls {
     pub p: Vec<[f64; 3]>,
     pub v: Vec<[f64; 3]>,
@@ -137,6 +138,9 @@ pub(super) struct State {
     pub interface_samples: Vec<output::InterfaceSample>,
     /// The `--energies` CSV rows.
     pub energy_rows: Vec<[f64; 9]>,
+    /// The velocities at t^n of this cycle, once something asked for them
+    /// (the listing's kinetic energy: `kinematics::at_n`).
+    pub at_n: Option<output::VelocitiesAtN>,
 }
 
 impl<'a> Ctx<'a> {
@@ -390,6 +394,7 @@ pub(super) fn initial_state(
         contact_force: Vec::new(),
         interface_samples: vec![output::InterfaceSample::default(); n_samples],
         energy_rows: Vec::new(),
+        at_n: None,
     })
 }
 
