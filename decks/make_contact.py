@@ -307,6 +307,58 @@ def sliding_block():
     return name, S, N
 
 
+PUSH_A = 10.0       # mm/ms^2: the acceleration the push gives the block
+
+
+def pushed_block():
+    """The listing's energy balance with a pushing load (issue 13): a block
+    on a TYPE7 surface with Coulomb friction, pushed along x by constant
+    /CLOADs from rest (each node's force its lumped mass times a, so the
+    block moves as a rigid body), lying just outside the contact gap (no
+    normal force, so no friction work): K-ENERGY T must equal EXT-WORK at
+    every printed cycle, from the first ones (Radioss lists 0.0%)."""
+    name = "pushed_block"
+    n = 2
+    m = RHO * BLOCK ** 3
+    gap = PLATE_T
+    z0 = gap + 0.05
+    m_e = m / n ** 3
+    S = header(name, "Brick block pushed along a plate: EXT-WORK = K-ENERGY T", [
+        f"{name}: steel block, {BLOCK:g} mm cube of 2x2x2 bricks, {z0:g} mm above a fixed shell plate",
+        f"(one 200 x 60 shell, t = {PLATE_T:g}, z = 0: just outside the TYPE7 gap {gap:g}), pushed from rest",
+        f"along +x by constant /CLOADs of c m_e/8 a on each node of c bricks (a = {PUSH_A:g} mm/ms^2).",
+        "TYPE7: block nodes secondary, plate main, Fric = 0.2 (Ifric = 0, Iform = 0).",
+        "Expected: K-ENERGY T = EXT-WORK = (m a t)^2 / (2 m) at every cycle (ERROR 0.0%).",
+        "Written by decks/make_contact.py."])
+    S += law1(1, "steel")
+    S += prop_solid(1, "block") + prop_shell(2, "plate 1 mm", PLATE_T, 1)
+    S += part(1, "block", 1, 1) + part(2, "plate", 2, 1)
+    box = Box(1, 1, (20.0, 25.0, z0), (BLOCK, BLOCK, BLOCK), (n, n, n))
+    pn, ps = plate(1001, 1001, (0.0, 0.0), 200.0, 60.0, 1, 1, 0.0)
+    S += nodes_block(box.nodes() + pn)
+    S += bricks_block(1, box.bricks()) + shells_block(2, ps)
+    S += group_part(1, "block nodes", [1]) + group_part(2, "plate nodes", [2])
+    S += surf_part(3, "plate", [2])
+    S += bcs(1, "plate fixed", "111 111", 2)
+    S += funct(1, "constant 1", [(0.0, 1.0), (1e6, 1.0)])
+    # Nodes by the number of bricks they join (corners 1, edges 2, faces 4, inside 8).
+    joined = {}
+    for i in range(n + 1):
+        for j in range(n + 1):
+            for k in range(n + 1):
+                c = 1
+                for q in (i, j, k):
+                    c *= 1 if q in (0, n) else 2
+                joined.setdefault(c, []).append(box.nid(i, j, k))
+    for c, ids in sorted(joined.items()):
+        S += group(10 + c, f"nodes of {c} bricks", ids)
+        S += cload(c, f"push along +x, nodes of {c} bricks", 1, "X", 10 + c, c * m_e / 8 * PUSH_A)
+    S += inter7(1, "block on plate, Coulomb", 1, 3, fric=0.2)
+    S += ["/END"]
+    N = engine(name, 1.0, -3, comments=["1 ms; a row every 3 cycles."])
+    return name, S, N
+
+
 # Speed-dependent laws: (title, Ifric, Fric, C1..C6, V).
 RENARD = [0.3, 0.2, 0.5, 0.1, 1.0, 3.0]  # mu_s, mu_d, mu_max, mu_min, Vcr1, Vcr2
 DARMSTAD = [5.0e11, -0.1, 3.0e5, -0.2, 0.1, -0.3]
@@ -662,7 +714,7 @@ def contact_patch_1p_coarse():
 
 MAKERS = dict(contact_patch=contact_patch, contact_patch_1p=contact_patch_1p,
               contact_patch_1p_coarse=contact_patch_1p_coarse, sliding_block=sliding_block,
-              sliding_laws=sliding_laws, ball_drop=ball_drop, bars_head_on=bars_head_on,
+              sliding_laws=sliding_laws, pushed_block=pushed_block, ball_drop=ball_drop, bars_head_on=bars_head_on,
               tube_crush=tube_crush)
 
 if __name__ == "__main__":

@@ -89,6 +89,9 @@ enum Command {
         /// Run although the deck has keywords the engine does not compute; the listing and the run file name them
         #[arg(long)]
         skip_unsupported: bool,
+        /// Stop the run (exit 3) when the listing's ERROR passes this many percent of energy created, where the engine file has no /STOP Emax (0: no limit)
+        #[arg(long, default_value_t = 100.0, value_parser = percent)]
+        energy_error_limit: f64,
     },
     /// Print what a run file DIR/NAME.h5 (or a restart file) holds
     Info {
@@ -125,6 +128,16 @@ fn load(args: &DeckArgs) -> Result<Model, InputError> {
             strict: args.strict,
         },
     )
+}
+
+/// A percentage: a finite number ≥ 0 (a trailing % allowed).
+fn percent(s: &str) -> Result<f64, String> {
+    match s.trim().trim_end_matches('%').parse::<f64>() {
+        Ok(v) if v.is_finite() && v >= 0.0 => Ok(v),
+        _ => Err(format!(
+            "expected a percentage ≥ 0 (for example 100 or 50%), found '{s}'"
+        )),
+    }
 }
 
 fn input_error(e: impl std::fmt::Display) -> ExitCode {
@@ -254,6 +267,7 @@ fn main() -> ExitCode {
             stop_after_cycle,
             no_run_file,
             skip_unsupported,
+            energy_error_limit,
         } => {
             let Some(world) = MpiWorld::init() else {
                 return input_error("MPI could not be initialised");
@@ -271,6 +285,7 @@ fn main() -> ExitCode {
                 energies,
                 strict: deck.strict,
                 skip_unsupported,
+                energy_error_limit,
                 output: crashsim::output::OutputOptions {
                     restart,
                     quiet,

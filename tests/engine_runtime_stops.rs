@@ -63,8 +63,9 @@ fn an_unstable_run_stops_naming_the_element_or_node() {
     );
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(3), "stderr: {err}");
+    // The element or node check, or the energy watchdog (it names the part).
     assert!(
-        (err.contains("SHELL ") || err.contains("node "))
+        (err.contains("SHELL ") || err.contains("node ") || err.contains("PART 1"))
             && err.contains("at cycle")
             && err.contains("time"),
         "{err}"
@@ -149,7 +150,11 @@ fn gravity_accelerates_a_free_plate_at_g() {
         );
     }
     // External work equals the kinetic energy gained (energy error ~ 0).
-    let last = listing.lines().filter(|l| l.contains('%')).last().unwrap();
+    let last = listing
+        .lines()
+        .filter(|l| l.contains('%') && l.trim_start().starts_with(|c: char| c.is_ascii_digit()))
+        .last()
+        .unwrap();
     let err: f64 = last
         .split_whitespace()
         .nth(5)
@@ -158,4 +163,80 @@ fn gravity_accelerates_a_free_plate_at_g() {
         .parse()
         .unwrap();
     assert!(err.abs() <= 1.0, "energy error {err}% with gravity work");
+}
+
+/// decks/bars_head_on made to blow up: contact stiffness ×1e6 (Stfac 0.1 →
+/// 1e5) and a /DT scale of 2, with `engine` as its engine file and `extra`
+/// arguments to `run`.
+fn blown_bars(tag: &str, engine: &str, extra: &[&str]) -> (PathBuf, std::process::Output) {
+    let dir = tmp(tag);
+    let deck = common::deck_variant("bars_head_on", &dir, |i, lines| {
+        (i >= 9 && lines[i - 9].starts_with("/INTER/TYPE7/"))
+            .then(|| lines[i].replacen("                 0.1", "                 1e5", 1))
+    });
+    assert!(std::fs::read_to_string(&deck).unwrap().contains("1e5"));
+    let eng = dir.join("engine_0001.rad");
+    std::fs::write(&eng, engine).unwrap();
+    let mut args = vec![
+        "run",
+        deck.to_str().unwrap(),
+        "--engine",
+        eng.to_str().unwrap(),
+        "--out",
+        dir.to_str().unwrap(),
+    ];
+    args.extend_from_slice(extra);
+    let out = common::crashsim(&args);
+    (dir, out)
+}
+
+const BLOWN_ENGINE: &str = "/RUN/bars_head_on/1\n0.055998\n/DT\n2.0 0.0\n/PRINT/-1/55\n";
+
+#[test]
+fn a_blow_up_stops_on_the_energy_watchdog_naming_cycle_time_and_part() {
+    let (dir, out) = blown_bars("watchdog", BLOWN_ENGINE, &[]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(3), "stderr: {err}");
+    assert!(
+        err.contains("ENERGY ERROR LIMIT REACHED")
+            && err.contains("the default limit 100%")
+            && err.contains("at cycle")
+            && err.contains("time")
+            && err.contains("PART "),
+        "{err}"
+    );
+    let listing = std::fs::read_to_string(dir.join("bars_head_on.out")).unwrap();
+    assert!(listing.contains("ERROR TERMINATION: ENERGY ERROR LIMIT REACHED"));
+    assert!(
+        dir.join("bars_head_on.h5").is_file(),
+        "the run file is kept"
+    );
+}
+
+#[test]
+fn stop_emax_with_nth_checks_every_cycle() {
+    // Rows every 100 cycles only: /STOP's NTH = 1 makes the check run every
+    // cycle, and its Emax (a fraction: 0.5 = 50%) is the limit.
+    let (_, out) = blown_bars(
+        "stop-emax",
+        "/RUN/bars_head_on/1\n0.055998\n/DT\n2.0 0.0\n/PRINT/-100/55\n/STOP\n0.5 0 0 1 0 0\n",
+        &[],
+    );
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(3), "stderr: {err}");
+    assert!(
+        err.contains("ENERGY ERROR LIMIT REACHED") && err.contains("/STOP Emax 0.5"),
+        "{err}"
+    );
+}
+
+#[test]
+fn no_energy_limit_leaves_the_blow_up_to_the_element_checks() {
+    let (_, out) = blown_bars("no-limit", BLOWN_ENGINE, &["--energy-error-limit", "0"]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(3), "stderr: {err}");
+    assert!(
+        !err.contains("ENERGY ERROR LIMIT") && err.contains("BRICK "),
+        "{err}"
+    );
 }

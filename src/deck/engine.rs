@@ -168,6 +168,7 @@ pub(super) fn parse_engine_block(block: &Block, eng: &mut Engine) -> InputResult
                 nth: c.tok_int(3, "NTH")?.unwrap_or(0),
                 nanim: c.tok_int(4, "NANIM")?.unwrap_or(0),
                 nerr_posit: c.tok_int(5, "NERR_POSIT")?.unwrap_or(0),
+                loc: block.loc.clone(),
             });
         }
         "TITLE" => eng.title = Some(cards.title()),

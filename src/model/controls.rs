@@ -131,4 +131,5 @@ pub struct StopSpec {
     pub nth: i64,
     pub nanim: i64,
     pub nerr_posit: i64,
+    pub loc: Loc,
 }

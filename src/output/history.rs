@@ -40,8 +40,10 @@
 use super::h5::Member;
 use super::{Context, LoopState};
 use crate::element::blocks::Block;
+use crate::global::GlobalData;
 use crate::model::geometry::{hexa_volume, quad_area, tetra_volume, triangle_area};
 use crate::model::{ElementKind, PropertyKind};
+use crate::parallel::exact_sum::{sum_over_ranks, ExactSum};
 use serde::{Deserialize, Serialize};
 
 /// Columns of the `global` member of `/th/rows`.
@@ -173,12 +175,10 @@ pub struct History {
     th_local: Vec<(usize, usize)>,
 }
 
-/// Mass of each of a block's elements on the initial geometry (see the module doc).
-fn element_masses(ctx: &Context, b: &dyn Block) -> Vec<f64> {
+/// Mass of each of a block's elements on the initial geometry `x0` (see the module doc).
+pub(crate) fn element_masses(g: &GlobalData, x0: &[[f64; 3]], b: &dyn Block) -> Vec<f64> {
     let le = b.local();
     let nn = b.kind().nodes();
-    let x0 = &ctx.sd.x;
-    let g = ctx.g;
     (0..le.global.len())
         .map(|e| {
             let n = &le.nodes[nn * e..nn * (e + 1)];
@@ -198,6 +198,40 @@ fn element_masses(ctx: &Context, b: &dyn Block) -> Vec<f64> {
             }
         })
         .collect()
+}
+
+/// This rank's exact sums per part: internal energy without hourglass (as
+/// Radioss's part histories), kinetic energy Σ_e Σ_corners ½·(m_e/n)·|v|²
+/// and mass of the live elements.
+pub(crate) fn part_sums(
+    blocks: &[Box<dyn Block>],
+    elem_mass: &[Vec<f64>],
+    vel: &[[f64; 3]],
+    parts: usize,
+) -> Vec<[ExactSum; 3]> {
+    let mut sums = vec![[ExactSum::default(); 3]; parts];
+    for (bi, b) in blocks.iter().enumerate() {
+        let le = b.local();
+        let nn = b.kind().nodes();
+        for (e, out) in b.outputs().iter().enumerate() {
+            let p = &mut sums[le.part[e] as usize];
+            p[0].add(out.eint - out.ehg);
+            if out.deleted {
+                continue;
+            }
+            let me = elem_mass[bi][e];
+            p[2].add(me);
+            let mut v2 = 0.0;
+            for &n in &le.nodes[nn * e..nn * (e + 1)] {
+                if n != crate::model::NO_NODE {
+                    let v = vel[n as usize];
+                    v2 += v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+                }
+            }
+            p[1].add(0.5 * me / nn as f64 * v2);
+        }
+    }
+    sums
 }
 
 impl History {
@@ -233,7 +267,7 @@ impl History {
             next: 0.0,
             elem_mass: blocks
                 .iter()
-                .map(|b| element_masses(ctx, b.as_ref()))
+                .map(|b| element_masses(ctx.g, &ctx.sd.x, b.as_ref()))
                 .collect(),
             th_local,
         }
@@ -256,74 +290,56 @@ impl History {
         let o_if = o_parts + 3 * np;
         let o_wall = o_if + IW * ni;
         let o_node = o_wall + 3 * nw;
-        let mut buf = vec![0.0f64; o_node + 9 * nm];
-        buf[0] = s.blocks.iter().map(|b| b.energy()).sum::<f64>();
-        for b in s.blocks.iter() {
-            let (hg, pl) = b.energy_parts();
-            buf[1] += hg;
-            buf[2] += pl;
-        }
-        buf[3] = *s.w_ext;
-        buf[4] = *s.wall_work;
+        // Exact sums, element by element and node by node: the same row
+        // for any number of ranks (the interfaces' samples are this rank's
+        // sums already).
+        let mut exact = vec![ExactSum::default(); o_node + 9 * nm];
+        let mut el = [ExactSum::default(); 3];
+        s.blocks.iter().for_each(|b| b.energy_sums(&mut el));
+        exact[..3].copy_from_slice(&el);
+        (exact[3], exact[4]) = (*s.w_ext, *s.wall_work);
         let vel: &[[f64; 3]] = s.at_n.map_or(&s.v[..], |a| &a.v);
-        for (bi, b) in s.blocks.iter().enumerate() {
-            let le = b.local();
-            let nn = b.kind().nodes();
-            for (e, out) in b.outputs().iter().enumerate() {
-                let p = le.part[e] as usize;
-                // Internal energy without hourglass, as Radioss's part histories.
-                buf[o_parts + 3 * p] += out.eint - out.ehg;
-                if out.deleted {
-                    continue;
-                }
-                let me = self.elem_mass[bi][e];
-                buf[o_parts + 3 * p + 2] += me;
-                let mut v2 = 0.0;
-                for &n in &le.nodes[nn * e..nn * (e + 1)] {
-                    if n != crate::model::NO_NODE {
-                        let v = vel[n as usize];
-                        v2 += v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
-                    }
-                }
-                buf[o_parts + 3 * p + 1] += 0.5 * me / nn as f64 * v2;
-            }
-        }
+        let parts = part_sums(s.blocks, &self.elem_mass, vel, np);
+        exact[o_parts..o_parts + 3 * np].copy_from_slice(parts.as_flattened());
         for (i, smp) in s.interfaces.iter().enumerate().take(ni) {
             let o = o_if + IW * i;
-            buf[o..o + 3].copy_from_slice(&smp.normal);
-            buf[o + 3..o + 6].copy_from_slice(&smp.tangential);
-            buf[o + 6] = smp.energy;
-            buf[o + 7..o + 10].copy_from_slice(&smp.tied_force);
-            buf[o + 10..o + 13].copy_from_slice(&smp.tied_moment);
+            let values = [smp.normal, smp.tangential, [smp.energy, 0.0, 0.0]];
+            for (j, x) in values.as_flattened()[..7].iter().enumerate() {
+                exact[o + j] = ExactSum::of(*x);
+            }
+            for k in 0..3 {
+                exact[o + 7 + k] = ExactSum::of(smp.tied_force[k]);
+                exact[o + 10 + k] = ExactSum::of(smp.tied_moment[k]);
+            }
         }
         for (w, f) in s.wall_force.iter().enumerate().take(nw) {
-            buf[o_wall + 3 * w..o_wall + 3 * w + 3].copy_from_slice(f);
+            exact[o_wall + 3 * w..o_wall + 3 * w + 3].copy_from_slice(f);
         }
         let mass = &ctx.sd.mass;
         for &(i, l) in &self.th_local {
             let o = o_node + 9 * i;
             for k in 0..3 {
-                buf[o + k] = s.x[l][k] - ctx.sd.x[l][k];
-                buf[o + 3 + k] = vel[l][k];
-                buf[o + 6 + k] = if mass[l] > 0.0 && !s.fixed[l][k] {
-                    (s.fext[l][k] - s.fint[l][k]) / mass[l]
-                } else {
-                    0.0
-                };
+                exact[o + k] = ExactSum::of(s.x[l][k] - ctx.sd.x[l][k]);
+                exact[o + 3 + k] = ExactSum::of(vel[l][k]);
+                if mass[l] > 0.0 && !s.fixed[l][k] {
+                    exact[o + 6 + k] = ExactSum::of((s.fext[l][k] - s.fint[l][k]) / mass[l]);
+                }
             }
         }
-        ctx.world.sum_f64(&mut buf);
+        sum_over_ranks(ctx.world, &mut exact);
+        let buf: Vec<f64> = exact.iter().map(|x| x.value()).collect();
         let (ke, ker) = match s.at_n {
             Some(a) => (s.kinetic)(&a.v, &a.vr, &a.bodies, &a.wall_v),
             None => (s.kinetic)(s.v, s.vr, s.bodies, s.wall_v),
         };
         // The listing's internal energy leaves the hourglass energy out (its
         // own column), as the Radioss listing and time histories do; the
-        // balance counts both.
-        let (ie, w) = (buf[0] - buf[1], buf[3]);
-        // The listing's energy error.
+        // external work is the listing's EXT-WORK, the rigid walls' included.
+        let (ie, w) = (buf[0] - buf[1], buf[3] + buf[4]);
+        // The listing's energy error (Radioss's: hourglass and contact
+        // energies outside; solver::run::energy::error_fraction).
         let err = if s.e0 + w != 0.0 {
-            100.0 * (ie + buf[1] + ke + ker - s.e0 - w) / (s.e0 + w).abs()
+            100.0 * (ie + ke + ker - s.e0 - w) / (s.e0 + w).abs()
         } else {
             0.0
         };

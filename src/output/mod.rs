@@ -43,7 +43,7 @@ use crate::element::blocks::Block;
 use crate::error::RunError;
 use crate::global::GlobalData;
 use crate::kinematics::rigid_body::RigidBodyState;
-use crate::parallel::World;
+use crate::parallel::{ExactSum, World};
 use history::{History, ThRow};
 use restart::OutputCounters;
 use runfile::RunFile;
@@ -121,8 +121,8 @@ pub struct LoopState<'a> {
     /// Per wall, per secondary node held here (the wall's list order).
     pub tied: &'a mut [Vec<bool>],
     /// This rank's partial sums of the external and rigid-wall work.
-    pub w_ext: &'a mut f64,
-    pub wall_work: &'a mut f64,
+    pub w_ext: &'a mut ExactSum,
+    pub wall_work: &'a mut ExactSum,
     /// The `--history` CSV schedule and samples.
     pub next_th: &'a mut f64,
     pub history: &'a mut Vec<(f64, Vec<[f64; 3]>)>,
@@ -134,14 +134,14 @@ pub struct LoopState<'a> {
     pub contact: &'a mut crate::contact::ContactSystem,
     pub ties: &'a mut crate::contact::tied::TiedSystem,
     pub fcont: &'a mut [[f64; 3]],
-    pub e_contact: &'a mut f64,
+    pub e_contact: &'a mut ExactSum,
     pub fixed: &'a mut [[bool; 6]],
     /// Inputs (not saved): the kinetic energy at
     /// t = 0 (energy error), this rank's partial wall forces of the last
     /// cycle, contact forces per local node and this rank's interface
     /// samples (zeros / empty until contact lands).
     pub e0: f64,
-    pub wall_force: &'a [[f64; 3]],
+    pub wall_force: &'a [[ExactSum; 3]],
     pub contact_force: &'a [[f64; 3]],
     pub interfaces: &'a [InterfaceSample],
     pub kinetic: &'a KineticFn<'a>,

@@ -39,6 +39,7 @@
 use super::h5::{self, Rows, Xfer};
 use super::{Context, LoopState};
 use crate::kinematics::rigid_body::RigidBodyState;
+use crate::parallel::exact_sum::{sum_over_ranks, ExactSum};
 use crate::parallel::World;
 use hdf5::types::VarLenUnicode;
 use hdf5::{File, Group};
@@ -364,9 +365,10 @@ pub struct LoopScalars {
     pub dt_prev: f64,
     pub step_what: String,
     pub step_id: u64,
-    /// Summed over ranks (each rank keeps a partial; rank 0 takes the whole back).
-    pub w_ext: f64,
-    pub wall_work: f64,
+    /// Exact sums over the ranks, as `ExactSum` words (each rank keeps a
+    /// partial; rank 0 takes the whole back): external and rigid-wall work.
+    pub w_ext: Vec<u64>,
+    pub wall_work: Vec<u64>,
     pub next_th: f64,
     pub history: Vec<(f64, Vec<[f64; 3]>)>,
     pub bodies: Vec<RigidBodyState>,
@@ -424,7 +426,7 @@ pub fn save(
     let g = ctx.g;
     let n = g.node_ids.len();
     let mut sums = [*s.w_ext, *s.wall_work];
-    ctx.world.sum_f64(&mut sums);
+    sum_over_ranks(ctx.world, &mut sums);
     let scalars = LoopScalars {
         deck: g.name.clone(),
         nodes: n as u64,
@@ -435,8 +437,8 @@ pub fn save(
         dt_prev: *s.dt_prev,
         step_what: s.step_what.to_string(),
         step_id: *s.step_id,
-        w_ext: sums[0],
-        wall_work: sums[1],
+        w_ext: sums[0].to_words().to_vec(),
+        wall_work: sums[1].to_words().to_vec(),
         next_th: *s.next_th,
         history: s.history.clone(),
         bodies: s.bodies.to_vec(),
@@ -506,7 +508,15 @@ fn save_interfaces(
 ) -> Result<(), String> {
     let n = ctx.g.node_ids.len();
     if !s.contact.is_empty() {
-        let ex = s.contact.export(ctx.world, *s.e_contact)?;
+        // The whole contact energy on rank 0 (the export sums over ranks).
+        let mut e = [*s.e_contact];
+        sum_over_ranks(ctx.world, &mut e);
+        let mine = if ctx.world.rank() == 0 {
+            e[0].value()
+        } else {
+            0.0
+        };
+        let ex = s.contact.export(ctx.world, mine)?;
         w.replicated("contact", &ex.scalars)?;
         w.keyed("contact.pairs", &ex.records)?;
         w.dense_f64(
@@ -584,9 +594,9 @@ fn restore_interfaces(
             .import(ctx.world, &sc, &records, &x_sort)
             .map_err(|m| r.err(m))?;
         *s.e_contact = if ctx.world.rank() == 0 {
-            sc.e_contact
+            ExactSum::of(sc.e_contact)
         } else {
-            0.0
+            ExactSum::default()
         };
         unpack(r, "nodes.fcont", all, n, s.fcont)?;
         let mut fixed: Vec<(u64, u8)> = r
@@ -724,8 +734,23 @@ pub fn restore(ctx: &Context, path: &Path, s: &mut LoopState) -> Result<OutputCo
     *s.step_id = sc.step_id;
     // Partial sums: the whole on rank 0.
     let root = ctx.world.rank() == 0;
-    *s.w_ext = if root { sc.w_ext } else { 0.0 };
-    *s.wall_work = if root { sc.wall_work } else { 0.0 };
+    let whole = |w: &[u64]| -> Result<ExactSum, String> {
+        if w.len() != ExactSum::WORDS {
+            return Err(format!(
+                "{}: the work sums have {} words, expected {} (a restart file of another version)",
+                path.display(),
+                w.len(),
+                ExactSum::WORDS
+            ));
+        }
+        Ok(if root {
+            ExactSum::from_words(w)
+        } else {
+            ExactSum::default()
+        })
+    };
+    *s.w_ext = whole(&sc.w_ext)?;
+    *s.wall_work = whole(&sc.wall_work)?;
     *s.next_th = sc.next_th;
     *s.history = sc.history;
     s.bodies.clone_from_slice(&sc.bodies);

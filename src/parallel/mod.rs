@@ -8,10 +8,12 @@
 //! (`broadcast`, `allgather`, `scatter`) are bincode-encoded on top of the
 //! trait's byte and number primitives.
 
+pub mod exact_sum;
 mod mpi_world;
 mod serial;
 mod threads;
 
+pub use exact_sum::ExactSum;
 pub use mpi_world::MpiWorld;
 pub use serial::Serial;
 pub use threads::{run_ranks, ThreadRank};

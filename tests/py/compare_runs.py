@@ -2,9 +2,10 @@
 
 Usage: compare_runs.py A.h5 B.h5 LISTING.out [same-ranks]
 
-Checks: the same datasets with the same shapes and dtypes; identical mesh,
-state and node-history data; energies and part histories equal to 1e-12
-relative (sums over ranks are diagnostics); the ranks attribute differs only;
+Checks: the same datasets with the same shapes and dtypes, every one equal
+bit for bit (mesh, states, and the time histories: their energies, parts
+and walls are exact sums, src/parallel/exact_sum.rs); the ranks attribute
+differs only;
 (unless same-ranks), and the /th/rows global energies of A equal the listing's columns (I-ENERGY,
 K-ENERGY T, K-ENERGY R, EXT-WORK, ERROR) at the same cycles, to the listing's
 4 significant digits.
@@ -32,8 +33,6 @@ def main():
     da, db = walk(a), walk(b)
     assert sorted(da) == sorted(db), f"datasets differ: {sorted(set(da) ^ set(db))}"
     assert len(da) > 30, f"only {len(da)} datasets"
-    # Sums over parts and walls are added in a rank-dependent order.
-    approx = ("parts", "rigid_walls")
     for name in sorted(da):
         x, y = da[name], db[name]
         assert x.shape == y.shape, f"{name}: shape {x.shape} vs {y.shape}"
@@ -42,22 +41,12 @@ def main():
         if name == "th/rows":
             for m in x.dtype.names:
                 xm, ym = x[m], y[m]
-                if m == "global":
+                same = xm.tobytes() == ym.tobytes()
+                if not same and m == "global":
                     cols = da[name].attrs["global"].split(",")
-                    for k, col in enumerate(cols):
-                        if col == "energy_error_percent":
-                            # A difference of large sums: compare in percentage points.
-                            assert np.max(np.abs(xm[:, k] - ym[:, k])) <= 1e-8, f"{name} {col}: differs"
-                        else:
-                            scale = max(np.max(np.abs(xm[:, k])), 1e-300)
-                            err = np.max(np.abs(xm[:, k] - ym[:, k])) / scale
-                            assert err <= 1e-12, f"{name} {col}: relative difference {err}"
-                elif m in approx:
-                    scale = max(np.max(np.abs(xm)), 1e-300) if xm.size else 1.0
-                    err = np.max(np.abs(xm - ym)) / scale if xm.size else 0.0
-                    assert err <= 1e-12, f"{name} {m}: relative difference {err}"
-                else:
-                    assert np.array_equal(xm, ym), f"{name} {m}: values differ"
+                    bad = [c for k, c in enumerate(cols) if xm[:, k].tobytes() != ym[:, k].tobytes()]
+                    assert False, f"{name} global: columns {bad} differ"
+                assert same, f"{name} {m}: values differ (bit for bit)"
         else:
             assert np.array_equal(x, y), f"{name}: values differ"
     for k in a.attrs:

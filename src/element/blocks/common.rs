@@ -61,28 +61,42 @@ pub(super) fn settle_common(
     problem
 }
 
-/// Hourglass energy kept by an element state (0 for elements without hourglass modes).
+/// Hourglass energy kept by an element state (0 for elements without
+/// hourglass modes), and its plastic work.
 pub(super) trait HourglassEnergy {
     fn hourglass_energy(&self) -> f64;
+    fn plastic_work(&self) -> f64;
 }
 impl HourglassEnergy for Shell4State {
     fn hourglass_energy(&self) -> f64 {
         self.ehg
+    }
+    fn plastic_work(&self) -> f64 {
+        self.eplas
     }
 }
 impl HourglassEnergy for Shell3State {
     fn hourglass_energy(&self) -> f64 {
         0.0
     }
+    fn plastic_work(&self) -> f64 {
+        self.eplas
+    }
 }
 impl HourglassEnergy for Hex8State {
     fn hourglass_energy(&self) -> f64 {
         self.ehg
     }
+    fn plastic_work(&self) -> f64 {
+        self.eplas
+    }
 }
 impl HourglassEnergy for Tet4State {
     fn hourglass_energy(&self) -> f64 {
         0.0
+    }
+    fn plastic_work(&self) -> f64 {
+        self.eplas
     }
 }
 pub(super) fn hourglass_of<S: HourglassEnergy>(s: &S) -> f64 {

@@ -1,7 +1,9 @@
 //! 8-node bricks with one integration point and viscous hourglass (Radioss
 //! Isolid = 1, 2; kernel in `crate::element::hex8`).
 
-use super::common::{decode_state, gather, hourglass_of, settle_common, von_mises_3d};
+use super::common::{
+    decode_state, gather, hourglass_of, settle_common, von_mises_3d, HourglassEnergy,
+};
 use super::sections::solid_sections;
 use super::solid_block::solid_block;
 use super::{Block, BlockInput, ElemOut, ElemRow, ElemStep};

@@ -31,6 +31,7 @@ pub use tet4::Tet4Block;
 use super::SLOT;
 use crate::domain::LocalElements;
 use crate::model::{ElementKind, Function, MaterialSpec, Part, Property};
+use crate::parallel::ExactSum;
 
 /// Per-element result the solver needs after a step.
 #[derive(Clone, Copy, Debug, Default)]
@@ -60,6 +61,8 @@ pub struct ElemOut {
     /// Hourglass energy (part of `eint`; Radioss reports it apart from the
     /// listing's and the time histories' internal energy).
     pub ehg: f64,
+    /// Plastic work (part of `eint`).
+    pub eplas: f64,
     pub deleted: bool,
 }
 
@@ -92,6 +95,16 @@ pub trait Block: Send + Sync {
     fn rows(&self) -> Vec<ElemRow>;
     /// Values for the HDF5 states, one per local element (see `ElemOut`).
     fn outputs(&self) -> Vec<ElemOut>;
+    /// Adds the block's energies element by element to exact sums:
+    /// internal (with hourglass), hourglass, plastic work — the same totals
+    /// for any partition (`parallel::exact_sum`).
+    fn energy_sums(&self, acc: &mut [ExactSum; 3]) {
+        for o in self.outputs() {
+            acc[0].add(o.eint);
+            acc[1].add(o.ehg);
+            acc[2].add(o.eplas);
+        }
+    }
     /// Everything the element needs to continue after a restart (its state,
     /// integration-point stresses and strains, deleted flag), as bytes; the
     /// restart file keys it by the element's global index (`local().global[e]`).

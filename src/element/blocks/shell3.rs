@@ -1,6 +1,8 @@
 //! C0 3-node shells (Radioss Ish3n = 1, 2; kernel in `crate::element::shell3`).
 
-use super::common::{decode_state, gather, hourglass_of, settle_common, von_mises_shell};
+use super::common::{
+    decode_state, gather, hourglass_of, settle_common, von_mises_shell, HourglassEnergy,
+};
 use super::sections::shell_sections;
 use super::shell_block::shell_block;
 use super::{Block, BlockInput, ElemOut, ElemRow, ElemStep};

@@ -1,7 +1,9 @@
 //! Belytschko-Tsay 4-node shells (Radioss Ishell = 1, 2, 3, 4; kernel in
 //! `crate::element::shell4`).
 
-use super::common::{decode_state, gather, hourglass_of, settle_common, von_mises_shell};
+use super::common::{
+    decode_state, gather, hourglass_of, settle_common, von_mises_shell, HourglassEnergy,
+};
 use super::sections::shell_sections;
 use super::shell_block::shell_block;
 use super::{Block, BlockInput, ElemOut, ElemRow, ElemStep};

@@ -174,6 +174,7 @@ macro_rules! shell_block {
                             thick: st.thick,
                             eint: st.eint + hourglass_of(st),
                             ehg: hourglass_of(st),
+                            eplas: st.plastic_work(),
                             deleted: !self.alive[e],
                         }
                     })

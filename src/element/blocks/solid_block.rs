@@ -133,6 +133,7 @@ macro_rules! solid_block {
                         thick: 0.0,
                         eint: s.eint + hourglass_of(s),
                         ehg: hourglass_of(s),
+                        eplas: s.plastic_work(),
                         deleted: !alive,
                     })
                     .collect()

@@ -210,6 +210,7 @@ impl Block for SpringBlock {
                 thick: 0.0,
                 eint: s.eint,
                 ehg: 0.0,
+                eplas: 0.0,
                 deleted: !alive,
             })
             .collect()

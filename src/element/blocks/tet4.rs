@@ -1,7 +1,9 @@
 //! Standard 4-node tetrahedra (Radioss Itetra4 = 0, 1000; kernel in
 //! `crate::element::tet4`).
 
-use super::common::{decode_state, gather, hourglass_of, settle_common, von_mises_3d};
+use super::common::{
+    decode_state, gather, hourglass_of, settle_common, von_mises_3d, HourglassEnergy,
+};
 use super::sections::solid_sections;
 use super::solid_block::solid_block;
 use super::{Block, BlockInput, ElemOut, ElemRow, ElemStep};

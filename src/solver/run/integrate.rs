@@ -4,7 +4,10 @@
 
 use super::setup::{Ctx, State};
 
-/// External work over the step, with the forces at n; the energy the
+/// External work over the step [t^n, t^{n+1}], f^n·v^{n+½}·Δt^{n+½} (the
+/// whole step: with the kinetic energy at t^n, a constant load's work is
+/// then ½m|v^n|² exactly, as Radioss lists it; a half first step would lose
+/// ¼ f a Δt²); the energy the
 /// contact forces take (elastic, damping, friction), with the mean of the
 /// velocities before and after the step: f·v_after alone overstates the
 /// work by (f·Δt)²/2M, which adds up when friction forces are large and
@@ -16,14 +19,15 @@ pub(super) fn work(cx: &Ctx, s: &mut State, dt_v: f64) {
             continue;
         }
         for k in 0..3 {
-            s.w_ext += s.fext[l][k] * s.v[l][k] * dt_v;
-            s.w_ext += s.fext[l][3 + k] * s.vr[l][k] * dt_v;
+            s.w_ext.add(s.fext[l][k] * s.v[l][k] * s.dt);
+            s.w_ext.add(s.fext[l][3 + k] * s.vr[l][k] * s.dt);
             let dv = if s.fixed[l][k] || mass[l] <= 0.0 || cx.tied_tr[l] {
                 0.0
             } else {
                 (s.fext[l][k] - s.fint[l][k] + s.fcont[l][k] + s.ftie[l][k]) / mass[l] * dt_v
             };
-            s.e_contact -= s.fcont[l][k] * (s.v[l][k] - 0.5 * dv) * dt_v;
+            s.e_contact
+                .add(-s.fcont[l][k] * (s.v[l][k] - 0.5 * dv) * dt_v);
         }
     }
 }

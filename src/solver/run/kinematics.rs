@@ -11,10 +11,16 @@ use crate::output;
 /// Every velocity phase of one cycle, with the velocity step `dt_v` = ½(Δt^{n−½}+Δt^{n+½}).
 pub(super) fn velocities(cx: &Ctx, s: &mut State, dt_v: f64) {
     tied_transfer(cx, s);
+    // The rigid walls' nodes at v^{n−½}: their work is taken with them.
+    let before: Vec<Vec<[f64; 3]>> = cx
+        .walls
+        .iter()
+        .map(|(nodes, _)| nodes.iter().map(|&l| s.v[l as usize]).collect())
+        .collect();
     accelerate(cx, s, dt_v);
     rigid_bodies(cx, s, dt_v);
     imposed_motion(cx, s);
-    rigid_walls(cx, s);
+    rigid_walls(cx, s, &before);
     boundary_conditions(s);
     // Tied secondary nodes follow their main nodes (after every other condition).
     if !s.ties.is_empty() {
@@ -133,7 +139,10 @@ fn rigid_bodies(cx: &Ctx, s: &mut State, dt_v: f64) {
 }
 
 /// Imposed velocities at t + ½Δt; imposed displacements: the velocity that
-/// reaches u(t + Δt) at the end of the step.
+/// reaches u(t + Δt) at the end of the step. The reaction that imposes
+/// them does work, counted as external work as Radioss counts it (EXT-WORK):
+/// f·v·Δt with f = m (v_imposed − v_free)/Δt, the velocity after the step,
+/// as for the loads and the rigid walls.
 fn imposed_motion(cx: &Ctx, s: &mut State) {
     let (t, dt) = (s.t, s.dt);
     let th = t + 0.5 * dt;
@@ -143,11 +152,7 @@ fn imposed_motion(cx: &Ctx, s: &mut State) {
         };
         let d = c.card.dir.index();
         for &l in nodes {
-            if d < 3 {
-                s.v[l as usize][d] = val;
-            } else {
-                s.vr[l as usize][d - 3] = val;
-            }
+            impose(cx, s, l as usize, d, val);
         }
     }
     for (nodes, c) in &cx.impdisp {
@@ -157,23 +162,37 @@ fn imposed_motion(cx: &Ctx, s: &mut State) {
         let d = c.card.dir.index();
         for &l in nodes {
             let l = l as usize;
-            s.v[l][d] = (u - (s.x[l][d] - cx.sd.x[l][d])) / dt;
+            impose(cx, s, l, d, (u - (s.x[l][d] - cx.sd.x[l][d])) / dt);
         }
     }
 }
 
+/// Sets a node's velocity (d < 3) or rotational velocity (d − 3) to
+/// `val`; the reaction's work joins this rank's external work (owned nodes).
+fn impose(cx: &Ctx, s: &mut State, l: usize, d: usize, val: f64) {
+    let (slot, m) = if d < 3 {
+        (&mut s.v[l][d], cx.mass[l])
+    } else {
+        (&mut s.vr[l][d - 3], cx.inertia[l])
+    };
+    if cx.owned[l] {
+        s.w_ext.add(m * (val - *slot) * val);
+    }
+    *slot = val;
+}
+
 /// Rigid walls: each stops its nodes; a moving wall follows its node's
 /// /IMPVEL, or (free, with a mass) takes the momentum its nodes lost.
-fn rigid_walls(cx: &Ctx, s: &mut State) {
+fn rigid_walls(cx: &Ctx, s: &mut State, before: &[Vec<[f64; 3]>]) {
     let (dt, th) = (s.dt, s.t + 0.5 * s.dt);
     for (w, (nodes, wall)) in cx.walls.iter().enumerate() {
-        s.walls.force[w] = [0.0; 3];
+        s.walls.force[w] = Default::default();
         for c in &cx.wall_driver[w] {
             if let Some(val) = cx.imposed(c, th) {
                 s.walls.v[w][c.card.dir.index()] = val;
             }
         }
-        let push = wall_nodes(cx, s, w, nodes);
+        let push = wall_nodes(cx, s, w, (nodes, &before[w]));
         if wall.node.is_some() && cx.wall_driver[w].is_empty() && wall.card.mass > 0.0 {
             // Free moving wall: its mass takes the momentum the nodes lost.
             let mut all: Vec<(u32, [f64; 3])> =
@@ -200,10 +219,22 @@ fn rigid_walls(cx: &Ctx, s: &mut State) {
     }
 }
 
-/// One wall's nodes on this rank: their velocities after the wall, the
-/// wall's work and force; returns the owned nodes' forces (global node, force).
-fn wall_nodes(cx: &Ctx, s: &mut State, w: usize, nodes: &[u32]) -> Vec<(u32, [f64; 3])> {
+/// One wall's nodes on this rank (with their velocities at n−½): their
+/// velocities after the wall, the wall's work and force; returns the owned
+/// nodes' forces (global node, force).
+fn wall_nodes(
+    cx: &Ctx,
+    s: &mut State,
+    w: usize,
+    (nodes, before): (&[u32], &[[f64; 3]]),
+) -> Vec<(u32, [f64; 3])> {
     let wall = cx.walls[w].1;
+    // A free wall (its own mass) is part of the system, its kinetic energy
+    // counted: what its impacts take stays inside (a negative ERROR, as a
+    // contact's loss); a fixed or driven wall is outside: its contact takes
+    // energy and its motion does work on the nodes it pushes.
+    let free = wall.node.is_some() && cx.wall_driver[w].is_empty() && wall.card.mass > 0.0;
+    let vw = s.walls.v[w];
     let mut push: Vec<(u32, [f64; 3])> = Vec::new();
     for (i, &l) in nodes.iter().enumerate() {
         let l = l as usize;
@@ -220,22 +251,42 @@ fn wall_nodes(cx: &Ctx, s: &mut State, w: usize, nodes: &[u32]) -> Vec<(u32, [f6
             s.walls.tied[w][i],
         );
         let v = s.v[l];
-        if cx.owned[l] {
-            // Work of the wall's force on the node over the step,
-            // f·v·dt with f = m(v_after − v_before)/dt: zero for a fixed wall.
-            s.wall_work += cx.mass[l]
-                * ((nv[0] - v[0]) * nv[0] + (nv[1] - v[1]) * nv[1] + (nv[2] - v[2]) * nv[2]);
+        if cx.owned[l] && !free {
+            let dv = [0, 1, 2].map(|k| nv[k] - v[k]);
+            s.wall_work.add(
+                wall_work(
+                    cx.mass[l],
+                    dv,
+                    [0, 1, 2].map(|k| before[i][k] - vw[k]),
+                    wall.normal,
+                ) + cx.mass[l] * (dv[0] * vw[0] + dv[1] * vw[1] + dv[2] * vw[2]),
+            );
         }
         s.v[l] = nv;
         s.walls.tied[w][i] = now_tied;
         if cx.owned[l] && f != [0.0; 3] {
             push.push((cx.sd.node_global[l], f));
             for k in 0..3 {
-                s.walls.force[w][k] += f[k];
+                s.walls.force[w][k].add(f[k]);
             }
         }
     }
     push
+}
+
+/// The work a rigid wall's contact takes from a node over the step, as
+/// Radioss counts it in EXT-WORK: with the impulse m·Δv the wall gave
+/// (Δv = v_after − v_free) and the node's velocity relative to the wall at
+/// n−½, `u`: the normal part ½ (m Δv·n)(u·n) (the kinetic energy a stop
+/// takes), the tangential (friction) part m Δv_t·u_t. Negative: the wall
+/// takes energy. (A moving wall driven from outside adds m Δv·v_wall.)
+fn wall_work(m: f64, dv: [f64; 3], u: [f64; 3], n: [f64; 3]) -> f64 {
+    let dvn = dv[0] * n[0] + dv[1] * n[1] + dv[2] * n[2];
+    let un = u[0] * n[0] + u[1] * n[1] + u[2] * n[2];
+    let tangential: f64 = (0..3)
+        .map(|k| (dv[k] - dvn * n[k]) * (u[k] - un * n[k]))
+        .sum();
+    m * (0.5 * dvn * un + tangential)
 }
 
 /// Boundary conditions have the last word.
@@ -273,7 +324,7 @@ pub(super) fn at_n(cx: &Ctx, s: &mut State) -> output::VelocitiesAtN {
     let kept = (
         s.ftie.clone(),
         s.walls.clone(),
-        s.wall_work,
+        (s.wall_work, s.w_ext),
         s.interface_samples.clone(),
         s.ties.clone(),
     );
@@ -298,6 +349,12 @@ pub(super) fn at_n(cx: &Ctx, s: &mut State) -> output::VelocitiesAtN {
     };
     // Undo: the state is again that of the cycle's end.
     (s.v, s.vr, s.bodies) = (before.v, before.vr, before.bodies);
-    (s.ftie, s.walls, s.wall_work, s.interface_samples, s.ties) = kept;
+    (
+        s.ftie,
+        s.walls,
+        (s.wall_work, s.w_ext),
+        s.interface_samples,
+        s.ties,
+    ) = kept;
     at
 }

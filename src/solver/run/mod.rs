@@ -16,6 +16,7 @@ mod prepare;
 mod report;
 mod setup;
 mod time_step;
+mod watchdog;
 
 #[cfg(test)]
 mod tests;
@@ -46,6 +47,9 @@ pub struct RunOptions {
     /// Run although the input has keywords the engine does not compute
     /// (the listing and the run file say which were skipped).
     pub skip_unsupported: bool,
+    /// The energy watchdog's default limit on the listing's ERROR, in
+    /// percent (energy created; 0: none), where the engine file has no /STOP Emax.
+    pub energy_error_limit: f64,
     /// HDF5 run file, restart, progress (src/output).
     pub output: crate::output::OutputOptions,
 }
@@ -92,6 +96,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
     let mut cx = setup::context(world, opts, &g, &sd, &mut ties);
     let mut s = setup::initial_state(&mut cx, ties, bodies)?;
     let cx = cx;
+    let mut dog = watchdog::Watchdog::new(&cx, &s.blocks);
     let mut report = Report::open(opts, &g.name, world.rank())?;
     report.header(&cx, &notes);
     cycle_zero(&cx, &mut s, &mut report)?;
@@ -126,7 +131,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
         if s.t >= cx.tstop {
             break Ok(());
         }
-        if let Err(e) = cycle(&cx, &mut s, &mut report) {
+        if let Err(e) = cycle(&cx, &mut s, &mut report, &mut dog) {
             break Err(e);
         }
         if out.samples_at(s.t) {
@@ -187,7 +192,12 @@ fn cycle_zero(cx: &Ctx, s: &mut State, report: &mut Report) -> Result<(), RunErr
 
 /// One explicit cycle: velocities at n+½, positions at n+1, forces and the
 /// time step there, then the listing's rows.
-fn cycle(cx: &Ctx, s: &mut State, report: &mut Report) -> Result<(), RunError> {
+fn cycle(
+    cx: &Ctx,
+    s: &mut State,
+    report: &mut Report,
+    dog: &mut watchdog::Watchdog,
+) -> Result<(), RunError> {
     s.at_n = None;
     let dt_v = if s.cycle == 0 {
         0.5 * s.dt
@@ -218,15 +228,21 @@ fn cycle(cx: &Ctx, s: &mut State, report: &mut Report) -> Result<(), RunError> {
             s.dt, s.step.what, s.step.id, s.cycle, s.t
         )));
     }
-    print_cycle(cx, s, report);
-    Ok(())
+    print_cycle(cx, s, report, dog)
 }
 
-/// The global energies (one all-reduce), at the cycles the --energies CSV
-/// or the listing wants them; the printed cycles' rows and interface lines.
-fn print_cycle(cx: &Ctx, s: &mut State, report: &mut Report) {
+/// The global energies (one all-reduce), at the cycles the --energies CSV,
+/// the listing or the watchdog wants them; the printed cycles' rows and
+/// interface lines; the watchdog's check (its stop comes after the row).
+fn print_cycle(
+    cx: &Ctx,
+    s: &mut State,
+    report: &mut Report,
+    dog: &mut watchdog::Watchdog,
+) -> Result<(), RunError> {
     let print_now = s.cycle % cx.print_every == 0 || s.t >= cx.tstop;
-    let energies_now = (cx.opts.energies.is_some() || print_now).then(|| {
+    let wanted = cx.opts.energies.is_some() || print_now || dog.every_cycle;
+    let energies_now = wanted.then(|| {
         ensure_at_n(cx, s);
         energy::global(cx, s)
     });
@@ -249,6 +265,10 @@ fn print_cycle(cx: &Ctx, s: &mut State, report: &mut Report) {
     }
     if print_now {
         report.tied_lines(cx, s);
+    }
+    match energies_now {
+        Some(e) => dog.check(cx, s, &e),
+        None => Ok(()),
     }
 }
 
@@ -411,8 +431,21 @@ fn final_block(
     }
     l.line(&format!("     ENERGIES AT THE END     : internal {:.6E} (hourglass {:.6E} included, plastic work {:.6E}), kinetic {:.6E} + rotational {:.6E}", e[0], e[1], e[2], e[3], e[4]));
     l.line(&format!(
-        "                               external work {:.6E}, rigid-wall work {:.6E}, contact energy {:.6E}",
-        e[5], e[6], e[7]
+        "                               external work {:.6E} (loads and imposed motions {:.6E}, rigid walls {:.6E}), contact energy {:.6E}",
+        e[5] + e[6], e[5], e[6], e[7]
+    ));
+    let at_end = energy::Energies {
+        internal: e[0],
+        hourglass: e[1],
+        external_work: e[5] + e[6],
+        contact: e[7],
+        kinetic: e[3],
+        rotational: e[4],
+    };
+    l.line(&format!(
+        "     ENERGY BALANCE          : ERROR {:.1}% as Radioss lists it (internal energy without hourglass + kinetic, against the initial energy + external work); the hourglass and contact energies (elastic, friction, damping) are outside it, as in Radioss: with them it closes to {:.1}%",
+        100.0 * energy::error_fraction(s.e0, &at_end),
+        100.0 * energy::closed_fraction(s.e0, &at_end)
     ));
     if let Some(c) = &contact_timing {
         l.line(&format!(

@@ -80,14 +80,9 @@ impl Report {
         let Some(l) = &mut self.listing else {
             return;
         };
-        let (e0, w) = (s.e0, e.external_work);
+        let w = e.external_work;
         let ie = e.internal - e.hourglass;
-        let err = if e0 + w != 0.0 {
-            100.0 * (ie + e.hourglass + e.contact + e.kinetic + e.rotational - e0 - w)
-                / (e0 + w).abs()
-        } else {
-            0.0
-        };
+        let err = 100.0 * super::energy::error_fraction(s.e0, e);
         l.line(&format_row(&Row {
             cycle: s.cycle,
             time: s.t,

@@ -14,7 +14,7 @@ use crate::global::GlobalData;
 use crate::kinematics::rigid_body::RigidBodyState;
 use crate::model;
 use crate::output;
-use crate::parallel::World;
+use crate::parallel::{ExactSum, World};
 use std::collections::HashMap;
 
 /// One rank's rigid body membership.
@@ -79,12 +79,12 @@ pub(super) struct Ctx<'a> {
 
 /// Per-wall state, replicated on every rank: point, velocity; and per rank:
 /// the force its owned nodes put on the wall in the last cycle (time
-/// histories) and which of its nodes are tied to it.
+/// histories, summed exactly) and which of its nodes are tied to it.
 #[derive(Clone)]
 pub(super) struct Walls {
     pub p: Vec<[f64; 3]>,
     pub v: Vec<[f64; 3]>,
-    pub force: Vec<[f64; 3]>,
+    pub force: Vec<[ExactSum; 3]>,
     pub tied: Vec<Vec<bool>>,
 }
 
@@ -122,10 +122,11 @@ pub(super) struct State {
     pub ties: TiedSystem,
     pub bodies: Vec<RigidBodyState>,
     pub walls: Walls,
-    /// This rank's partial sums: external work, rigid-wall work, contact energy.
-    pub w_ext: f64,
-    pub wall_work: f64,
-    pub e_contact: f64,
+    /// This rank's partial sums, exact (the same totals for any partition):
+    /// external work, rigid-wall work, contact energy.
+    pub w_ext: ExactSum,
+    pub wall_work: ExactSum,
+    pub e_contact: ExactSum,
     /// Kinetic energy at t = 0 (the energy error's reference).
     pub e0: f64,
     /// Idel: which of this rank's elements were alive at the last look.
@@ -385,9 +386,9 @@ pub(super) fn initial_state(
         ties,
         bodies,
         walls: initial_walls(cx),
-        w_ext: 0.0,
-        wall_work: 0.0,
-        e_contact: 0.0,
+        w_ext: ExactSum::default(),
+        wall_work: ExactSum::default(),
+        e_contact: ExactSum::default(),
         e0: 0.0,
         history: Vec::new(),
         next_th: 0.0,
@@ -455,7 +456,7 @@ fn initial_walls(cx: &Ctx) -> Walls {
                 }
             })
             .collect(),
-        force: vec![[0.0f64; 3]; g.rigid_walls.len()],
+        force: vec![[ExactSum::default(); 3]; g.rigid_walls.len()],
         tied: cx.walls.iter().map(|(l, _)| vec![false; l.len()]).collect(),
     }
 }

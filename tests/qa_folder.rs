@@ -1,0 +1,176 @@
+//! Walks `../shared/decks/openradioss-qa` (issue 13): every deck runs or is
+//! refused by name — none runs to exit 0 with energies more than 50% off
+//! its OpenRadioss listing. Prints one line per deck: status, worst
+//! deviation, seconds.
+//!
+//! The deviation of a run: at every row of the reference engine listing,
+//! our I-ENERGY and K-ENERGY T (every cycle, `--energies`, read at the
+//! row's time) against the reference, relative to the column's largest
+//! reference value (a column under 1% of the run's energy scale — the
+//! largest I-ENERGY + K-ENERGY T — is held to 1% of that scale).
+
+mod common;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+/// (time, I-ENERGY, K-ENERGY T) of every row of an engine listing.
+fn reference_rows(listing: &Path) -> Vec<[f64; 3]> {
+    let text = std::fs::read_to_string(listing).unwrap_or_default();
+    text.lines()
+        .filter_map(|l| {
+            let t: Vec<&str> = l.split_whitespace().collect();
+            if t.len() < 9 || t[0].parse::<u64>().is_err() || !t[5].ends_with('%') {
+                return None;
+            }
+            let p = |s: &str| s.parse::<f64>().ok();
+            Some([p(t[1])?, p(t[6])?, p(t[7])?])
+        })
+        .collect()
+}
+
+/// (time, internal, kinetic) of our `--energies` CSV.
+fn our_rows(csv: &Path) -> Vec<[f64; 3]> {
+    let (_, rows) = common::read_csv(csv);
+    rows.iter().map(|r| [r[0], r[3], r[4]]).collect()
+}
+
+/// Our value of column `k` at time `t` (linear between cycles; the
+/// listing prints 4 digits of time: its last row may lie just past our end).
+fn at(ours: &[[f64; 3]], t: f64, k: usize) -> Option<f64> {
+    let last = ours.last()?;
+    if t > last[0] && t <= last[0] * (1.0 + 1e-3) {
+        return Some(last[k]);
+    }
+    let i = ours.partition_point(|r| r[0] < t);
+    if i == 0 {
+        return ours.first().map(|r| r[k]);
+    }
+    let b = ours.get(i)?;
+    let a = ours[i - 1];
+    let w = if b[0] > a[0] {
+        (t - a[0]) / (b[0] - a[0])
+    } else {
+        1.0
+    };
+    Some(a[k] + w * (b[k] - a[k]))
+}
+
+/// The worst deviation of our run from the reference rows (see the module doc).
+fn worst_deviation(reference: &[[f64; 3]], ours: &[[f64; 3]]) -> f64 {
+    let scale = reference.iter().map(|r| r[1] + r[2]).fold(0.0f64, f64::max);
+    let mut worst = 0.0f64;
+    for k in [1, 2] {
+        let col = reference.iter().map(|r| r[k].abs()).fold(0.0f64, f64::max);
+        let base = col.max(0.01 * scale).max(f64::MIN_POSITIVE);
+        for r in reference {
+            // Past our end (a run that stopped early): the deviation is total.
+            let d = match at(ours, r[0], k) {
+                Some(v) => (v - r[k]).abs() / base,
+                None => 1.0,
+            };
+            worst = worst.max(d);
+        }
+    }
+    worst
+}
+
+/// Whether a message names a keyword (` /WORD`, as the refusals do).
+fn names_a_keyword(msg: &str) -> bool {
+    msg.match_indices(" /")
+        .any(|(i, _)| msg[i + 2..].starts_with(|c: char| c.is_ascii_uppercase()))
+}
+
+struct Outcome {
+    deck: String,
+    status: String,
+    worst: Option<f64>,
+    seconds: f64,
+}
+
+fn run_deck(folder: &Path) -> Outcome {
+    let name = |suffix: &str| -> Option<PathBuf> {
+        std::fs::read_dir(folder)
+            .ok()?
+            .filter_map(|e| e.ok().map(|e| e.path()))
+            .find(|p| p.to_string_lossy().ends_with(suffix))
+    };
+    let deck = folder.file_name().unwrap().to_string_lossy().into_owned();
+    let (Some(starter), Some(listing)) = (name("_0000.rad"), name("_0001.out")) else {
+        return Outcome {
+            deck,
+            status: "no starter deck or reference listing".into(),
+            worst: None,
+            seconds: 0.0,
+        };
+    };
+    let dir = common::scratch(&format!("qa-{deck}"));
+    let csv = dir.join("energies.csv");
+    let started = Instant::now();
+    let out = common::crashsim(&[
+        "run",
+        starter.to_str().unwrap(),
+        "--out",
+        dir.to_str().unwrap(),
+        "--energies",
+        csv.to_str().unwrap(),
+        "--quiet",
+    ]);
+    let seconds = started.elapsed().as_secs_f64();
+    let err = String::from_utf8_lossy(&out.stderr);
+    let first = err.lines().next().unwrap_or("");
+    let (status, worst) = match out.status.code() {
+        Some(0) => {
+            let w = worst_deviation(&reference_rows(&listing), &our_rows(&csv));
+            ("ran".to_string(), Some(w))
+        }
+        Some(2) if names_a_keyword(&err) => (format!("refused: {first}"), None),
+        Some(2) => (format!("refused without naming a keyword: {first}"), None),
+        Some(3) => (format!("stopped: {first}"), None),
+        c => (format!("failed ({c:?}): {first}"), None),
+    };
+    let _ = std::fs::remove_dir_all(&dir);
+    Outcome {
+        deck,
+        status,
+        worst,
+        seconds,
+    }
+}
+
+#[test]
+fn every_qa_deck_runs_or_is_refused_by_name_and_none_runs_far_off() {
+    let root = common::shared_dir().join("decks/openradioss-qa");
+    let mut folders: Vec<PathBuf> = std::fs::read_dir(&root)
+        .unwrap()
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.is_dir())
+        .collect();
+    folders.sort();
+    assert!(folders.len() >= 30, "{} decks", folders.len());
+    let outcomes: Vec<Outcome> = folders.iter().map(|f| run_deck(f)).collect();
+    println!("{:<60} {:>9} {:>8}  status", "deck", "worst", "seconds");
+    for o in &outcomes {
+        let worst = o
+            .worst
+            .map_or("-".to_string(), |w| format!("{:.1}%", 100.0 * w));
+        let status: String = o.status.chars().take(160).collect();
+        println!("{:<60} {worst:>9} {:>8.1}  {status}", o.deck, o.seconds);
+    }
+    let ran = outcomes.iter().filter(|o| o.worst.is_some()).count();
+    println!("{ran} of {} decks ran to their end", outcomes.len());
+    let bad: Vec<&Outcome> = outcomes
+        .iter()
+        .filter(|o| {
+            o.worst.is_some_and(|w| w > 0.5)
+                || o.status.starts_with("failed")
+                || o.status.starts_with("refused without")
+        })
+        .collect();
+    assert!(
+        bad.is_empty(),
+        "far off, failed, or refused without naming a keyword: {:?}",
+        bad.iter()
+            .map(|o| (&o.deck, &o.status, o.worst))
+            .collect::<Vec<_>>()
+    );
+}
