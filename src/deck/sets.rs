@@ -1,5 +1,5 @@
-//! Sets: /GRNOD/NODE, /GRNOD/GRNOD, /GRNOD/PART, /GRSHEL/SHEL, /SURF/PART,
-//! /SURF/SEG, /SURF/GRSHEL, /SUBSET. Each is a title line then a list of ids,
+//! Sets: /GRNOD/NODE, /GRNOD/GRNOD, /GRNOD/PART, /GRSHEL/SHEL, /SURF/PART
+//! (and /SURF/PART/EXT, /SURF/PART/ALL), /SURF/SEG, /SURF/GRSHEL, /SUBSET. Each is a title line then a list of ids,
 //! ten 10-column fields a line, until the next keyword (/SURF/SEG: one
 //! segment a line). Ids are resolved by `to_model`.
 
@@ -46,8 +46,14 @@ pub struct ShellGroupCard {
 
 #[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
 pub enum SurfaceDef {
-    /// /SURF/PART: the shell faces of the parts (negative id: normals reversed).
+    /// /SURF/PART and /SURF/PART/EXT: the shell faces of the parts and the
+    /// external faces of their solids (negative id: normals reversed).
     Parts(Vec<i64>),
+    /// /SURF/PART/ALL: the shell faces of the parts and every face of their
+    /// solids, inner ones included (reference guide, /SURF/PART/ALL: "a
+    /// surface segment is created for every face of a solid element that
+    /// belongs to the item_ID listed"; shells are selected as by /SURF/PART).
+    PartsAllFaces(Vec<i64>),
     /// /SURF/GRSHEL: the faces of the shells of the groups (negative: reversed).
     ShellGroups(Vec<i64>),
     /// /SURF/SEG: explicit segments (n4 = n3 or 0 for a triangle).
@@ -131,7 +137,10 @@ pub(super) fn parse_set(block: &Block, deck: &mut Deck) -> InputResult<bool> {
             });
         }
         ("SURF", "PART" | "GRSHEL" | "SEG") => {
-            let id = header_id(block, 2, "surf_ID")?;
+            // /SURF/PART/EXT/surf_ID and /SURF/PART/ALL/surf_ID: the id one place on.
+            let faces = block.parts.get(2).map(String::as_str);
+            let faces = faces.filter(|&f| p1 == "PART" && (f == "EXT" || f == "ALL"));
+            let id = header_id(block, if faces.is_some() { 3 } else { 2 }, "surf_ID")?;
             let mut cards = Cards::new(block);
             let title = cards.title();
             let mut item_locs = Vec::new();
@@ -139,7 +148,11 @@ pub(super) fn parse_set(block: &Block, deck: &mut Deck) -> InputResult<bool> {
                 "PART" => {
                     let (items, locs) = id_list(&mut cards, "part_ID")?;
                     item_locs = locs;
-                    SurfaceDef::Parts(items)
+                    if faces == Some("ALL") {
+                        SurfaceDef::PartsAllFaces(items)
+                    } else {
+                        SurfaceDef::Parts(items)
+                    }
                 }
                 "GRSHEL" => {
                     let (items, locs) = id_list(&mut cards, "grshel_ID")?;

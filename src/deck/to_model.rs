@@ -611,7 +611,8 @@ fn resolve_skipped(
     index.resolve(id, loc, kw, field).map_err(|mut e| {
         let id_s = id.to_string();
         if let Some(w) = deck.warnings.iter().find(|w| {
-            w.keyword.starts_with(family) && w.keyword.rsplit('/').next() == Some(id_s.as_str())
+            w.keyword.starts_with(family)
+                && w.keyword.rsplit('/').next().map(str::trim) == Some(id_s.as_str())
         }) {
             e.message = format!(
                 "{}; {} at {} defines it but that keyword is not supported",
