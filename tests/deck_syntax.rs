@@ -399,3 +399,27 @@ fn bcs_trarot_short_forms_read_by_column() {
         ]
     );
 }
+
+#[test]
+fn a_dangling_id_names_the_unsupported_keyword_that_would_define_it() {
+    // OpenRadioss QA AMS_boxbeam: /INTER/TYPE7 names node group 5, which
+    // /GRNOD/GRSHEL/5 (not supported) defines.
+    let c = Case::new("dangling");
+    let deck = two_bricks(&[
+        "/GRNOD/GRSHEL/5",
+        "from shells",
+        &i10(1),
+        "/BCS/1",
+        "fix",
+        &("   111 111".to_string() + &i10(0) + &i10(5)),
+    ]);
+    let d = c.read(&deck, None).unwrap_or_else(|e| panic!("{e}"));
+    let e = build_model(&d).unwrap_err();
+    assert_eq!(e.field, "grnod_ID");
+    assert!(
+        e.message.contains("node group 5 is not defined")
+            && e.message.contains("/GRNOD/GRSHEL/5 at")
+            && e.message.contains("not supported"),
+        "{e}"
+    );
+}
