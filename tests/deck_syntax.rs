@@ -231,17 +231,24 @@ fn th_object_list_ends_at_a_line_holding_no_id() {
         "DEF",
         &i10(1),
         "#include qadiags.inc",
+        "/TH/PART/5",
+        "no object yet",
+        "DEF",
+        "#include qadiags.inc",
     ]);
     let d = c.read(&deck, None).unwrap_or_else(|e| panic!("{e}"));
     let th = |id: u64| d.time_histories.iter().find(|t| t.id == id).unwrap();
     assert_eq!(th(3).objects, vec![1, 12]);
     assert_eq!(th(4).objects, vec![1]);
+    // Right after the variables, a Copyright> line is no variable name either.
+    assert_eq!(th(5).variables, vec!["DEF"]);
+    assert!(th(5).objects.is_empty());
     let w: Vec<_> = d
         .warnings
         .iter()
         .filter(|w| w.message.contains("not an object id"))
         .collect();
-    assert_eq!(w.len(), 2, "{:?}", d.warnings);
+    assert_eq!(w.len(), 3, "{:?}", d.warnings);
     assert!(w[0].loc.file.ends_with("qadiags.inc") && w[0].loc.line == 1);
     assert!(w[0].message.contains("3 line(s)"), "{}", w[0].message);
     build_model(&d).unwrap_or_else(|e| panic!("{e}"));

@@ -231,12 +231,16 @@ pub(super) fn parse_th(block: &Block, deck: &mut Deck) -> InputResult<bool> {
     let one_per_line = TH_ONE_PER_LINE.contains(&kind.as_str());
     while let Some(c) = cards.next_nonblank() {
         let first = c.text(1, 10);
-        // Variable lines hold names (start with a letter); object lines hold ids.
+        // Variable lines hold names (a letter, then letters, digits or '_');
+        // object lines hold ids.
         if objects.is_empty()
             && first
                 .chars()
                 .next()
                 .is_some_and(|ch| ch.is_ascii_alphabetic())
+            && first
+                .chars()
+                .all(|ch| ch.is_ascii_alphanumeric() || ch == '_')
         {
             for k in 0..10 {
                 let v = c.text(1 + 10 * k, 10);
