@@ -246,12 +246,53 @@ fn th_object_list_ends_at_a_line_holding_no_id() {
     let w: Vec<_> = d
         .warnings
         .iter()
-        .filter(|w| w.message.contains("not an object id"))
+        .filter(|w| w.message.contains("is text, not a /TH object id"))
         .collect();
     assert_eq!(w.len(), 3, "{:?}", d.warnings);
     assert!(w[0].loc.file.ends_with("qadiags.inc") && w[0].loc.line == 1);
     assert!(w[0].message.contains("3 line(s)"), "{}", w[0].message);
     build_model(&d).unwrap_or_else(|e| panic!("{e}"));
+}
+
+#[test]
+fn group_and_surface_lists_end_at_a_line_of_text() {
+    let c = Case::new("list-copyright");
+    c.write("qadiags.inc", "Copyright>        OpenRadioss\nCopyright>\n");
+    let deck = two_bricks(&[
+        "/GRNOD/NODE/2",
+        "corner nodes",
+        &(i10(1) + &i10(3)),
+        &i10(12),
+        "#include qadiags.inc",
+        "/SURF/PART/ALL/6",
+        "all faces",
+        &i10(1),
+        "#include qadiags.inc",
+    ]);
+    let d = c.read(&deck, None).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(d.node_groups[0].items, vec![1, 3, 12]);
+    let w: Vec<_> = d
+        .warnings
+        .iter()
+        .filter(|w| w.message.contains("is text, not a"))
+        .collect();
+    assert_eq!(w.len(), 2, "{:?}", d.warnings);
+    assert_eq!(w[0].keyword, "/GRNOD/NODE/2");
+    assert!(w[0].message.contains("2 line(s)"), "{}", w[0].message);
+    let m = build_model(&d).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(m.surfaces[0].segments.len(), 12);
+}
+
+#[test]
+fn a_mistyped_number_in_a_list_stays_an_error() {
+    // Only text (a letter in column 1 of the field) ends a list.
+    let c = Case::new("list-typo");
+    let deck = two_bricks(&["/GRNOD/NODE/2", "nodes", &(i10(1) + &i10("1O"))]);
+    let e = c.read(&deck, None).unwrap_err();
+    assert_eq!(
+        (e.keyword.as_str(), e.field.as_str()),
+        ("/GRNOD/NODE/2", "item_ID")
+    );
 }
 
 // ---------------------------------------------------------------------------

@@ -1,10 +1,11 @@
 //! /BEGIN, the starter control cards (/ANALY, /SPMD, /IOFLAG, /RANDOM,
 //! /SHFRA), time-history requests (/TH/*) and starter /ANIM requests.
 
-use super::fields::{parse_int, Card, Cards};
+use super::fields::{Card, Cards};
+use super::list_end;
 use super::source::Block;
 use super::{header_id, Deck};
-use crate::model::{AnimationSpec, Begin, InputResult, TimeHistorySpec, Units, Warning};
+use crate::model::{AnimationSpec, Begin, InputResult, TimeHistorySpec, Units};
 use serde::{Deserialize, Serialize};
 
 pub(super) fn parse_begin(block: &Block, deck: &mut Deck) -> InputResult<()> {
@@ -188,37 +189,6 @@ const TH_ONE_PER_LINE: &[&str] = &[
     "NODE", "SHELL", "SHEL", "SH3N", "BRIC", "BRICK", "SPRING", "TRUSS", "BEAM",
 ];
 
-/// Whether a /TH line after the variables holds text where the first object
-/// id belongs (columns 1-10 not an integer).
-fn holds_no_id(c: &Card) -> bool {
-    let first = c.text(1, 10);
-    !first.is_empty() && parse_int(first).is_err()
-}
-
-/// A /TH object list ends at the first line holding no id: that line and the
-/// non-blank ones after it, up to the next keyword, are ignored with one
-/// warning. /TH only asks for output, so ignoring them changes no result, and
-/// OpenRadioss does the same: the QA decks include `qadiags.inc` (23
-/// `Copyright>` lines) right after a /TH block's ids (AMS_boxbeam's /TH/PART/4,
-/// INTERF_INT_7_fpenmax's /TH/INTER/7), and their starter listings show the
-/// objects above those lines only, with no error or warning.
-fn warn_after_objects(c: &Card, cards: &Cards, warnings: &mut Vec<Warning>) {
-    let more = cards
-        .remaining()
-        .iter()
-        .filter(|l| !l.text.trim().is_empty())
-        .count();
-    warnings.push(Warning {
-        loc: c.loc(),
-        keyword: c.kw.to_string(),
-        message: format!(
-            "'{}' in columns 1-10 is not an object id: the object list ends here and {} line(s) up to the next keyword are ignored (an output request; no result changes)",
-            c.text(1, 10),
-            1 + more
-        ),
-    });
-}
-
 pub(super) fn parse_th(block: &Block, deck: &mut Deck) -> InputResult<bool> {
     let Some(kind) = block.parts.get(1).cloned() else {
         return Ok(false);
@@ -250,8 +220,8 @@ pub(super) fn parse_th(block: &Block, deck: &mut Deck) -> InputResult<bool> {
             }
             continue;
         }
-        if holds_no_id(&c) {
-            warn_after_objects(&c, &cards, &mut deck.warnings);
+        if list_end::holds_text(&c) {
+            list_end::ended_by_text(&c, &cards, "/TH object id", &mut deck.warnings);
             break;
         }
         if one_per_line {

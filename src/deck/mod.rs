@@ -17,6 +17,7 @@ mod engine;
 mod id_index;
 mod interfaces;
 pub mod keyword_policy;
+mod list_end;
 mod materials;
 mod mesh;
 mod parts;

@@ -4,9 +4,10 @@
 //! segment a line). Ids are resolved by `to_model`.
 
 use super::fields::Cards;
+use super::list_end;
 use super::source::Block;
 use super::{header_id, Deck, Id};
-use crate::model::{InputError, InputResult, Loc};
+use crate::model::{InputError, InputResult, Loc, Warning};
 use serde::{Deserialize, Serialize};
 
 /// What the ids of a node group's list name.
@@ -113,7 +114,7 @@ pub(super) fn parse_set(block: &Block, deck: &mut Deck) -> InputResult<bool> {
             let id = header_id(block, 2, "grnd_ID")?;
             let mut cards = Cards::new(block);
             let title = cards.title();
-            let (items, item_locs) = id_list(&mut cards, "item_ID")?;
+            let (items, item_locs) = id_list(&mut cards, "item_ID", &mut deck.warnings)?;
             deck.node_groups.push(NodeGroupCard {
                 id,
                 title,
@@ -127,7 +128,7 @@ pub(super) fn parse_set(block: &Block, deck: &mut Deck) -> InputResult<bool> {
             let id = header_id(block, 2, "grshel_ID")?;
             let mut cards = Cards::new(block);
             let title = cards.title();
-            let (items, item_locs) = id_list(&mut cards, "shell_ID")?;
+            let (items, item_locs) = id_list(&mut cards, "shell_ID", &mut deck.warnings)?;
             deck.shell_groups.push(ShellGroupCard {
                 id,
                 title,
@@ -146,7 +147,7 @@ pub(super) fn parse_set(block: &Block, deck: &mut Deck) -> InputResult<bool> {
             let mut item_locs = Vec::new();
             let def = match p1 {
                 "PART" => {
-                    let (items, locs) = id_list(&mut cards, "part_ID")?;
+                    let (items, locs) = id_list(&mut cards, "part_ID", &mut deck.warnings)?;
                     item_locs = locs;
                     if faces == Some("ALL") {
                         SurfaceDef::PartsAllFaces(items)
@@ -155,7 +156,7 @@ pub(super) fn parse_set(block: &Block, deck: &mut Deck) -> InputResult<bool> {
                     }
                 }
                 "GRSHEL" => {
-                    let (items, locs) = id_list(&mut cards, "grshel_ID")?;
+                    let (items, locs) = id_list(&mut cards, "grshel_ID", &mut deck.warnings)?;
                     item_locs = locs;
                     SurfaceDef::ShellGroups(items)
                 }
@@ -191,7 +192,7 @@ pub(super) fn parse_set(block: &Block, deck: &mut Deck) -> InputResult<bool> {
             let mut cards = Cards::new(block);
             let title = cards.title();
             let mut children = Vec::new();
-            for v in id_list(&mut cards, "subset_ID")?.0 {
+            for v in id_list(&mut cards, "subset_ID", &mut deck.warnings)?.0 {
                 if v < 0 {
                     return Err(InputError::new(
                         block.loc.clone(),
@@ -214,12 +215,21 @@ pub(super) fn parse_set(block: &Block, deck: &mut Deck) -> InputResult<bool> {
     Ok(true)
 }
 
-/// Ten 10-column ids a line until the block ends; blank and 0 fields are
-/// skipped. Also gives where each line's items start.
-fn id_list(cards: &mut Cards, name: &str) -> InputResult<(Vec<i64>, ItemLocs)> {
+/// Ten 10-column ids a line until the block ends (or a line of text ends
+/// the list: [`list_end`]); blank and 0 fields are skipped. Also gives where
+/// each line's items start.
+fn id_list(
+    cards: &mut Cards,
+    name: &str,
+    warnings: &mut Vec<Warning>,
+) -> InputResult<(Vec<i64>, ItemLocs)> {
     let mut out = Vec::new();
     let mut locs = Vec::new();
     while let Some(c) = cards.next_nonblank() {
+        if list_end::holds_text(&c) {
+            list_end::ended_by_text(&c, cards, name, warnings);
+            break;
+        }
         locs.push((out.len(), c.loc()));
         for k in 0..10 {
             if let Some(v) = c.int_opt(1 + 10 * k, 10, name)? {
