@@ -2,6 +2,7 @@
 //! /SHFRA), time-history requests (/TH/*) and starter /ANIM requests.
 
 use super::fields::{Card, Cards};
+use super::list_end;
 use super::source::Block;
 use super::{header_id, Deck};
 use crate::model::{AnimationSpec, Begin, InputResult, TimeHistorySpec, Units};
@@ -200,12 +201,16 @@ pub(super) fn parse_th(block: &Block, deck: &mut Deck) -> InputResult<bool> {
     let one_per_line = TH_ONE_PER_LINE.contains(&kind.as_str());
     while let Some(c) = cards.next_nonblank() {
         let first = c.text(1, 10);
-        // Variable lines hold names (start with a letter); object lines hold ids.
+        // Variable lines hold names (a letter, then letters, digits or '_');
+        // object lines hold ids.
         if objects.is_empty()
             && first
                 .chars()
                 .next()
                 .is_some_and(|ch| ch.is_ascii_alphabetic())
+            && first
+                .chars()
+                .all(|ch| ch.is_ascii_alphanumeric() || ch == '_')
         {
             for k in 0..10 {
                 let v = c.text(1 + 10 * k, 10);
@@ -215,8 +220,16 @@ pub(super) fn parse_th(block: &Block, deck: &mut Deck) -> InputResult<bool> {
             }
             continue;
         }
+        if list_end::holds_text(&c) {
+            list_end::ended_by_text(&c, &cards, "/TH object id", &mut deck.warnings);
+            break;
+        }
         if one_per_line {
-            objects.push(c.id(1, "obj_ID")?);
+            // 0 names no object, as a 0 among ten ids per line does.
+            let v = c.id_opt(1, "obj_ID")?;
+            if v != 0 {
+                objects.push(v);
+            }
         } else {
             for k in 0..10 {
                 let v = c.id_opt(1 + 10 * k, "obj_ID")?;

@@ -108,11 +108,14 @@ pub(super) fn parse_engine_block(block: &Block, eng: &mut Engine) -> InputResult
         "TFILE" => {
             eng.tfile_format = header_int(block, 1, "Type")?.unwrap_or(4);
             let c = cards.next("the card with dT_his")?;
+            // 0 samples every cycle: OpenRadioss QA's OPTIONS_damp deck has
+            // dT_his = 0, its engine listing prints "TIME INTERVAL FOR TIME
+            // HISTORY PLOTS 0.000000" and its T01 file holds a row per cycle.
             let p = c.tok_real(0, "dT_his")?.unwrap_or(0.0);
-            if p <= 0.0 {
+            if p < 0.0 {
                 return Err(c.err(
                     "dT_his",
-                    format!("{p}: the time-history period must be > 0"),
+                    format!("{p}: the time-history period must be >= 0 (0: every cycle)"),
                 ));
             }
             eng.th_period = Some(p);

@@ -40,7 +40,9 @@ impl IdIndex {
         self.map.get(&id).copied()
     }
 
-    /// The index of `id`, or an error at `loc` saying that `keyword`'s `field` names an unknown id.
+    /// The index of `id`, or an error at `loc` saying that `keyword`'s `field` names an unknown id
+    /// ("WHAT ID is not defined in the deck": `to_model` adds the unsupported keyword that
+    /// would define it, reading that wording).
     pub fn resolve(
         &self,
         id: Id,

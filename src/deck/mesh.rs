@@ -69,10 +69,25 @@ impl Elements {
 }
 
 /// `/NODE` (and `/NODE/unit_ID`): one node a line until the next keyword.
+///
+/// A node numbered 0 is left out with a warning. OpenRadioss reads it (QA's
+/// RESSORT_kjoint2 has one; its starter listing prints node 0 among the
+/// coordinates), but 0 in a node field means "no node" throughout the
+/// reference guide (an optional node, a group list's 0 entries), so nothing
+/// can name that node: it joins no element, group or condition, has no mass,
+/// and moves nothing.
 pub(super) fn parse_nodes(block: &Block, deck: &mut Deck) -> InputResult<()> {
     let mut cards = Cards::new(block);
     deck.nodes.reserve(block.lines.len());
     while let Some(c) = cards.next_nonblank() {
+        if c.int_opt(1, 10, "node_ID")? == Some(0) {
+            deck.warnings.push(crate::model::Warning {
+                loc: c.loc(),
+                keyword: block.header.clone(),
+                message: "node_ID 0 is left out: 0 means 'no node' in every node field, so no element, group or condition can name it".into(),
+            });
+            continue;
+        }
         let id = c.id(1, "node_ID")?;
         let x = c.real(11, "X", 0.0)?;
         let y = c.real(31, "Y", 0.0)?;

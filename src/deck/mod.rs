@@ -17,6 +17,7 @@ mod engine;
 mod id_index;
 mod interfaces;
 pub mod keyword_policy;
+mod list_end;
 mod materials;
 mod mesh;
 mod parts;
@@ -171,7 +172,7 @@ pub fn read_engine(
     unsupported: &mut Vec<Warning>,
     opts: ReadOptions,
 ) -> InputResult<Engine> {
-    let src = source::read(path)?;
+    let src = source::read_as(path, source::LineFormat::Free)?;
     let mut eng = Engine::default();
     for block in &src.blocks {
         if !engine::parse_engine_block(block, &mut eng)? {
@@ -200,10 +201,29 @@ fn unknown_keyword(
     Ok(())
 }
 
-/// Dispatches one starter block to its family's parser.
+/// Reads one starter block; a keyword no family reads (or a variant of one
+/// that its family does not know) goes to the keyword policy.
 fn parse_starter_block(block: &Block, deck: &mut Deck, opts: ReadOptions) -> InputResult<()> {
+    let handled = match read_starter_block(block, deck) {
+        Err(e) if e.variant_not_read => false,
+        r => r?,
+    };
+    if !handled {
+        unknown_keyword(
+            block,
+            &mut deck.warnings,
+            &mut deck.unsupported,
+            opts,
+            "starter",
+        )?;
+    }
+    Ok(())
+}
+
+/// Dispatches one starter block to its family's parser; false when none reads it.
+fn read_starter_block(block: &Block, deck: &mut Deck) -> InputResult<bool> {
     let p: Vec<&str> = block.parts.iter().map(String::as_str).collect();
-    let handled = match p[0] {
+    Ok(match p[0] {
         "BEGIN" => controls::parse_begin(block, deck).map(|_| true)?,
         "TITLE" => {
             let mut cards = Cards::new(block);
@@ -230,17 +250,7 @@ fn parse_starter_block(block: &Block, deck: &mut Deck, opts: ReadOptions) -> Inp
         }
         "INTER" => interfaces::parse_interface(block, deck)?,
         _ => false,
-    };
-    if !handled {
-        unknown_keyword(
-            block,
-            &mut deck.warnings,
-            &mut deck.unsupported,
-            opts,
-            "starter",
-        )?;
-    }
-    Ok(())
+    })
 }
 
 /// One warning when a fixed-card block has non-blank lines after its last
@@ -279,12 +289,19 @@ pub(crate) fn header_id(block: &Block, idx: usize, name: &str) -> InputResult<Id
     }
     match fields::parse_int(t) {
         Ok(v) if v > 0 => Ok(v as Id),
-        _ => Err(InputError::new(
-            block.loc.clone(),
-            &block.header,
-            name,
-            format!("'{t}' in the keyword line: expected a positive integer id"),
-        )),
+        _ => {
+            let mut e = InputError::new(
+                block.loc.clone(),
+                &block.header,
+                name,
+                format!("'{t}' in the keyword line: expected a positive integer id"),
+            );
+            // A word where the id belongs names a variant of the keyword
+            // (`/IMPDISP/FGEO/10`, `/SURF/PART/FOO/1`) that this family's
+            // reader does not know: unsupported by name, not a syntax error.
+            e.variant_not_read = t.starts_with(|c: char| c.is_ascii_alphabetic());
+            Err(e)
+        }
     }
 }
 

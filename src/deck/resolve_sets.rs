@@ -173,8 +173,17 @@ fn shell_segment(nodes: &[u32], flip: bool) -> [u32; 4] {
     }
 }
 
-/// External faces of the solids of part `p` (faces not shared by two of its solids), outward.
-fn solid_faces(ctx: &SetContext, p: u32, flip: bool, out: &mut Vec<[u32; 4]>) {
+/// Which faces of a part's solids a surface takes.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum SolidFaces {
+    /// Faces not shared by two of its solids (/SURF/PART, /SURF/PART/EXT).
+    External,
+    /// Every face, each solid's own, outward from it (/SURF/PART/ALL).
+    All,
+}
+
+/// The faces of the solids of part `p` that `which` selects, outward (inward if `flip`).
+fn solid_faces(ctx: &SetContext, p: u32, which: SolidFaces, flip: bool, out: &mut Vec<[u32; 4]>) {
     use crate::model::ElementKind;
     let mut faces: Vec<[u32; 4]> = Vec::new();
     for set in ctx.elements {
@@ -199,6 +208,11 @@ fn solid_faces(ctx: &SetContext, p: u32, flip: bool, out: &mut Vec<[u32; 4]>) {
             }
         }
     }
+    let flipped = |f: [u32; 4]| if flip { [f[0], f[3], f[2], f[1]] } else { f };
+    if which == SolidFaces::All {
+        out.extend(faces.into_iter().map(flipped));
+        return;
+    }
     let key = |f: &[u32; 4]| {
         let mut k = *f;
         k.sort_unstable();
@@ -210,7 +224,7 @@ fn solid_faces(ctx: &SetContext, p: u32, flip: bool, out: &mut Vec<[u32; 4]>) {
     }
     for f in faces {
         if count[&key(&f)] == 1 {
-            out.push(if flip { [f[0], f[3], f[2], f[1]] } else { f });
+            out.push(flipped(f));
         }
     }
 }
@@ -238,8 +252,15 @@ pub fn surfaces(
         let mut segments = Vec::new();
         let kw;
         match &c.def {
-            SurfaceDef::Parts(items) => {
-                kw = format!("/SURF/PART/{}", c.id);
+            SurfaceDef::Parts(items) | SurfaceDef::PartsAllFaces(items) => {
+                let which = match &c.def {
+                    SurfaceDef::PartsAllFaces(_) => SolidFaces::All,
+                    _ => SolidFaces::External,
+                };
+                kw = match which {
+                    SolidFaces::All => format!("/SURF/PART/ALL/{}", c.id),
+                    SolidFaces::External => format!("/SURF/PART/{}", c.id),
+                };
                 for (k, &item) in items.iter().enumerate() {
                     let loc = item_loc(&c.item_locs, k, &c.loc);
                     let p = ctx
@@ -255,7 +276,7 @@ pub fn surfaces(
                             }
                         }
                     }
-                    solid_faces(ctx, p, flip, &mut segments);
+                    solid_faces(ctx, p, which, flip, &mut segments);
                 }
             }
             SurfaceDef::ShellGroups(items) => {

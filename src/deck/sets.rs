@@ -1,12 +1,13 @@
-//! Sets: /GRNOD/NODE, /GRNOD/GRNOD, /GRNOD/PART, /GRSHEL/SHEL, /SURF/PART,
-//! /SURF/SEG, /SURF/GRSHEL, /SUBSET. Each is a title line then a list of ids,
+//! Sets: /GRNOD/NODE, /GRNOD/GRNOD, /GRNOD/PART, /GRSHEL/SHEL, /SURF/PART
+//! (and /SURF/PART/EXT, /SURF/PART/ALL), /SURF/SEG, /SURF/GRSHEL, /SUBSET. Each is a title line then a list of ids,
 //! ten 10-column fields a line, until the next keyword (/SURF/SEG: one
 //! segment a line). Ids are resolved by `to_model`.
 
 use super::fields::Cards;
+use super::list_end;
 use super::source::Block;
 use super::{header_id, Deck, Id};
-use crate::model::{InputError, InputResult, Loc};
+use crate::model::{InputError, InputResult, Loc, Warning};
 use serde::{Deserialize, Serialize};
 
 /// What the ids of a node group's list name.
@@ -46,8 +47,14 @@ pub struct ShellGroupCard {
 
 #[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
 pub enum SurfaceDef {
-    /// /SURF/PART: the shell faces of the parts (negative id: normals reversed).
+    /// /SURF/PART and /SURF/PART/EXT: the shell faces of the parts and the
+    /// external faces of their solids (negative id: normals reversed).
     Parts(Vec<i64>),
+    /// /SURF/PART/ALL: the shell faces of the parts and every face of their
+    /// solids, inner ones included (reference guide, /SURF/PART/ALL: "a
+    /// surface segment is created for every face of a solid element that
+    /// belongs to the item_ID listed"; shells are selected as by /SURF/PART).
+    PartsAllFaces(Vec<i64>),
     /// /SURF/GRSHEL: the faces of the shells of the groups (negative: reversed).
     ShellGroups(Vec<i64>),
     /// /SURF/SEG: explicit segments (n4 = n3 or 0 for a triangle).
@@ -107,7 +114,7 @@ pub(super) fn parse_set(block: &Block, deck: &mut Deck) -> InputResult<bool> {
             let id = header_id(block, 2, "grnd_ID")?;
             let mut cards = Cards::new(block);
             let title = cards.title();
-            let (items, item_locs) = id_list(&mut cards, "item_ID")?;
+            let (items, item_locs) = id_list(&mut cards, "item_ID", &mut deck.warnings)?;
             deck.node_groups.push(NodeGroupCard {
                 id,
                 title,
@@ -121,7 +128,7 @@ pub(super) fn parse_set(block: &Block, deck: &mut Deck) -> InputResult<bool> {
             let id = header_id(block, 2, "grshel_ID")?;
             let mut cards = Cards::new(block);
             let title = cards.title();
-            let (items, item_locs) = id_list(&mut cards, "shell_ID")?;
+            let (items, item_locs) = id_list(&mut cards, "shell_ID", &mut deck.warnings)?;
             deck.shell_groups.push(ShellGroupCard {
                 id,
                 title,
@@ -131,18 +138,25 @@ pub(super) fn parse_set(block: &Block, deck: &mut Deck) -> InputResult<bool> {
             });
         }
         ("SURF", "PART" | "GRSHEL" | "SEG") => {
-            let id = header_id(block, 2, "surf_ID")?;
+            // /SURF/PART/EXT/surf_ID and /SURF/PART/ALL/surf_ID: the id one place on.
+            let faces = block.parts.get(2).map(String::as_str);
+            let faces = faces.filter(|&f| p1 == "PART" && (f == "EXT" || f == "ALL"));
+            let id = header_id(block, if faces.is_some() { 3 } else { 2 }, "surf_ID")?;
             let mut cards = Cards::new(block);
             let title = cards.title();
             let mut item_locs = Vec::new();
             let def = match p1 {
                 "PART" => {
-                    let (items, locs) = id_list(&mut cards, "part_ID")?;
+                    let (items, locs) = id_list(&mut cards, "part_ID", &mut deck.warnings)?;
                     item_locs = locs;
-                    SurfaceDef::Parts(items)
+                    if faces == Some("ALL") {
+                        SurfaceDef::PartsAllFaces(items)
+                    } else {
+                        SurfaceDef::Parts(items)
+                    }
                 }
                 "GRSHEL" => {
-                    let (items, locs) = id_list(&mut cards, "grshel_ID")?;
+                    let (items, locs) = id_list(&mut cards, "grshel_ID", &mut deck.warnings)?;
                     item_locs = locs;
                     SurfaceDef::ShellGroups(items)
                 }
@@ -178,7 +192,7 @@ pub(super) fn parse_set(block: &Block, deck: &mut Deck) -> InputResult<bool> {
             let mut cards = Cards::new(block);
             let title = cards.title();
             let mut children = Vec::new();
-            for v in id_list(&mut cards, "subset_ID")?.0 {
+            for v in id_list(&mut cards, "subset_ID", &mut deck.warnings)?.0 {
                 if v < 0 {
                     return Err(InputError::new(
                         block.loc.clone(),
@@ -201,12 +215,21 @@ pub(super) fn parse_set(block: &Block, deck: &mut Deck) -> InputResult<bool> {
     Ok(true)
 }
 
-/// Ten 10-column ids a line until the block ends; blank and 0 fields are
-/// skipped. Also gives where each line's items start.
-fn id_list(cards: &mut Cards, name: &str) -> InputResult<(Vec<i64>, ItemLocs)> {
+/// Ten 10-column ids a line until the block ends (or a line of text ends
+/// the list: [`list_end`]); blank and 0 fields are skipped. Also gives where
+/// each line's items start.
+fn id_list(
+    cards: &mut Cards,
+    name: &str,
+    warnings: &mut Vec<Warning>,
+) -> InputResult<(Vec<i64>, ItemLocs)> {
     let mut out = Vec::new();
     let mut locs = Vec::new();
     while let Some(c) = cards.next_nonblank() {
+        if list_end::holds_text(&c) {
+            list_end::ended_by_text(&c, cards, name, warnings);
+            break;
+        }
         locs.push((out.len(), c.loc()));
         for k in 0..10 {
             if let Some(v) = c.int_opt(1 + 10 * k, 10, name)? {

@@ -7,7 +7,8 @@
 //!   file's folder); `#enddata` ends the input like `/END`;
 //! - a line whose first character is `/` starts a keyword block;
 //! - every other line belongs to the block above it (blank lines too: in a
-//!   fixed-card block a blank line is a card whose fields all take defaults).
+//!   fixed-card block a blank line is a card whose fields all take defaults);
+//! - tab characters: see [`LineFormat`].
 
 use crate::model::{InputError, InputResult, Loc};
 use std::path::{Path, PathBuf};
@@ -63,15 +64,41 @@ pub struct Source {
     pub files: Vec<PathBuf>,
 }
 
-/// Reads `path` and everything it includes, and splits it into blocks.
-/// Whether `/END` was met is in [`Source::end`]; the caller decides if it is required
+/// How the data lines of a file are laid out, which decides what a tab is.
+///
+/// The reference guide does not mention tabs. Its "Starter Keywords Syntax"
+/// page says the starter's block content "is entered in fixed format": each
+/// field owns fixed columns, and a tab owns no column, so a tab followed by
+/// data on a starter line would put the data in no known field. Its "Engine
+/// Keywords Syntax" page says engine data "are read in free format ... separated
+/// by at least one blank", where a tab is one more blank. Hence:
+/// - [`LineFormat::Fixed`] (starter files): a tab with only blanks or tabs
+///   after it ends the line (trailing white space, as OpenRadioss QA's
+///   SUBMODEL deck has after its /BEGIN unit line); a tab before data is an
+///   error naming its column;
+/// - [`LineFormat::Free`] (engine files): a tab separates values like a blank.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LineFormat {
+    Fixed,
+    Free,
+}
+
+/// Reads `path` (a starter file: fixed format) and everything it includes,
+/// and splits it into blocks. Whether `/END` was met is in [`Source::end`]; the caller decides if it is required
 /// (after the blocks are parsed, so that a truncated card is reported as such).
 pub fn read(path: &Path) -> InputResult<Source> {
+    read_as(path, LineFormat::Fixed)
+}
+
+/// [`read`] with the tab rule of `format` (engine files: [`LineFormat::Free`]).
+pub fn read_as(path: &Path, format: LineFormat) -> InputResult<Source> {
     let mut lines = Vec::new();
     let mut files = Vec::new();
     let mut stack = Vec::new();
     let mut end = None;
-    read_file(path, None, &mut stack, &mut lines, &mut files, &mut end)?;
+    read_file(
+        path, None, format, &mut stack, &mut lines, &mut files, &mut end,
+    )?;
     let blocks = split_blocks(lines)?;
     Ok(Source { blocks, end, files })
 }
@@ -79,6 +106,7 @@ pub fn read(path: &Path) -> InputResult<Source> {
 fn read_file(
     path: &Path,
     included_from: Option<&Loc>,
+    format: LineFormat,
     stack: &mut Vec<PathBuf>,
     out: &mut Vec<Line>,
     files: &mut Vec<PathBuf>,
@@ -189,7 +217,7 @@ fn read_file(
             continue; // old-style comment line
         }
         if raw.first() == Some(&b'#') {
-            let text = decode_line(raw, &loc, true).map_err(|e| in_block(e, out))?;
+            let text = decode_line(raw, &loc).map_err(|e| in_block(e, out))?;
             if let Some(target) = include_target(&text) {
                 let target = target.ok_or_else(|| {
                     InputError::new(
@@ -199,14 +227,22 @@ fn read_file(
                         "expected a file name after #include",
                     )
                 })?;
-                read_file(&dir.join(target), Some(&loc), stack, out, files, end)?;
+                read_file(
+                    &dir.join(target),
+                    Some(&loc),
+                    format,
+                    stack,
+                    out,
+                    files,
+                    end,
+                )?;
             } else if text.trim_end().eq_ignore_ascii_case("#enddata") {
                 *end = Some(loc);
             }
             continue;
         }
-        let text = decode_line(raw, &loc, false).map_err(|e| in_block(e, out))?;
-        let t = text.trim_end();
+        let text = decode_line(raw, &loc).map_err(|e| in_block(e, out))?;
+        let t = tabs(&text, format, &loc).map_err(|e| in_block(e, out))?;
         if t.eq_ignore_ascii_case("/END") {
             *end = Some(loc);
             break;
@@ -257,9 +293,8 @@ fn include_target(text: &str) -> Option<Option<&str>> {
 
 /// Checks a raw line and turns it into text. Control bytes mean the file is not
 /// text; bytes that are not UTF-8 are taken as Latin-1 (older decks carry
-/// accented titles). Comments may hold tabs; data lines may not, because the
-/// block format is positional and a tab has no column.
-fn decode_line(raw: &[u8], loc: &Loc, comment: bool) -> InputResult<String> {
+/// accented titles). Tabs are left to [`tabs`].
+fn decode_line(raw: &[u8], loc: &Loc) -> InputResult<String> {
     if raw.len() > MAX_LINE_BYTES {
         return Err(InputError::new(
             loc.clone(),
@@ -287,23 +322,30 @@ fn decode_line(raw: &[u8], loc: &Loc, comment: bool) -> InputResult<String> {
             ),
         ));
     }
-    if !comment {
-        if let Some(pos) = raw.iter().position(|&b| b == b'\t') {
-            return Err(InputError::new(
-                loc.clone(),
-                "",
-                "",
-                format!(
-                    "tab character at column {}; block-format fields are positional, use spaces",
-                    pos + 1
-                ),
-            ));
-        }
-    }
     Ok(match std::str::from_utf8(raw) {
         Ok(s) => s.to_string(),
         Err(_) => raw.iter().map(|&b| b as char).collect(),
     })
+}
+
+/// A data line without its trailing white space, under the tab rule of
+/// [`LineFormat`]: in a fixed-format line a tab before data is an error (it
+/// has no column); in a free-format line a tab is a blank.
+fn tabs(text: &str, format: LineFormat, loc: &Loc) -> InputResult<String> {
+    let t = text.trim_end();
+    match (format, t.find('\t')) {
+        (_, None) => Ok(t.to_string()),
+        (LineFormat::Free, Some(_)) => Ok(t.replace('\t', " ")),
+        (LineFormat::Fixed, Some(pos)) => Err(InputError::new(
+            loc.clone(),
+            "",
+            "",
+            format!(
+                "tab character at column {} before data; block-format fields are positional (fixed columns), use spaces",
+                t[..pos].chars().count() + 1
+            ),
+        )),
+    }
 }
 
 fn split_blocks(lines: Vec<Line>) -> InputResult<Vec<Block>> {
@@ -311,11 +353,19 @@ fn split_blocks(lines: Vec<Line>) -> InputResult<Vec<Block>> {
     for line in lines {
         if line.text.starts_with('/') {
             let header = line.text.trim_end().to_string();
-            let parts: Vec<String> = header[1..]
+            // `//SUBMODEL/1` ... `//ENDSUB` (the reference guide's submodel
+            // keywords) are keywords whose name keeps its leading '/':
+            // parts ["/SUBMODEL", "1"], so that no family reads them and the
+            // keyword policy names them.
+            let double = header.starts_with("//");
+            let mut parts: Vec<String> = header[if double { 2 } else { 1 }..]
                 .split('/')
                 .map(|p| p.trim().to_ascii_uppercase())
                 .collect();
-            if parts.first().is_none_or(|p| p.is_empty()) {
+            if double {
+                parts[0].insert(0, '/');
+            }
+            if parts.first().is_none_or(|p| p.is_empty() || p == "/") {
                 return Err(InputError::new(
                     line.loc,
                     &header,

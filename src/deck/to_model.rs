@@ -11,6 +11,53 @@ use crate::model::*;
 
 /// Builds the model from a deck.
 pub fn build_model(deck: &Deck) -> Result<Model, InputError> {
+    build(deck).map_err(|e| name_unsupported_definition(e, deck))
+}
+
+/// An id that no card defines ([`IdIndex::resolve`]: "WHAT ID is not defined
+/// in the deck") but a keyword of its family that is not supported would
+/// (`/GRNOD/GRSHEL/5` for node group 5): the error names that keyword, so
+/// that the deck is refused by the feature's name, not by a dangling id.
+fn name_unsupported_definition(mut e: InputError, deck: &Deck) -> InputError {
+    // "node group" before "node": the first matching prefix decides.
+    const FAMILIES: &[(&str, &str)] = &[
+        ("node group", "/GRNOD"),
+        ("shell group", "/GRSHEL"),
+        ("surface", "/SURF"),
+        ("function", "/FUNCT"),
+        ("material", "/MAT"),
+        ("property", "/PROP"),
+        ("part", "/PART"),
+        ("interface", "/INTER"),
+        ("node", "/NODE"),
+    ];
+    if e.message.contains("defines it") {
+        return e;
+    }
+    let found = FAMILIES.iter().find_map(|(what, family)| {
+        let id = e
+            .message
+            .strip_prefix(what)?
+            .strip_suffix(" is not defined in the deck")?
+            .trim();
+        Some((*family, id.to_string()))
+    });
+    if let Some((family, id)) = found {
+        let defines = |w: &&Warning| {
+            w.keyword.starts_with(family)
+                && w.keyword.rsplit('/').next().map(str::trim) == Some(id.as_str())
+        };
+        if let Some(w) = deck.unsupported.iter().find(defines) {
+            e.message = format!(
+                "{}; {} at {} defines it but that keyword is not supported",
+                e.message, w.keyword, w.loc
+            );
+        }
+    }
+    e
+}
+
+fn build(deck: &Deck) -> Result<Model, InputError> {
     let begin = deck.begin.clone().ok_or_else(|| {
         InputError::new(
             Loc {
@@ -611,7 +658,8 @@ fn resolve_skipped(
     index.resolve(id, loc, kw, field).map_err(|mut e| {
         let id_s = id.to_string();
         if let Some(w) = deck.warnings.iter().find(|w| {
-            w.keyword.starts_with(family) && w.keyword.rsplit('/').next() == Some(id_s.as_str())
+            w.keyword.starts_with(family)
+                && w.keyword.rsplit('/').next().map(str::trim) == Some(id_s.as_str())
         }) {
             e.message = format!(
                 "{}; {} at {} defines it but that keyword is not supported",

@@ -15,6 +15,10 @@ pub struct InputError {
     pub field: String,
     /// What was found and what was expected.
     pub message: String,
+    /// The keyword line names a variant that no reader computes (a word where
+    /// the id belongs, e.g. `/IMPDISP/FGEO/10`): the reader records the keyword
+    /// as unsupported, by name, instead of stopping on it.
+    pub variant_not_read: bool,
 }
 
 impl InputError {
@@ -24,6 +28,7 @@ impl InputError {
             keyword: keyword.to_string(),
             field: field.to_string(),
             message: message.into(),
+            variant_not_read: false,
         }
     }
 }

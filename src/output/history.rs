@@ -249,13 +249,16 @@ impl History {
             .collect();
         let engine = &g.engine;
         let tstop = engine.run.as_ref().map(|r| r.tstop).unwrap_or(0.0);
-        // No /TFILE: sample as often as the states are written, else 100 times a run.
-        let period = engine
-            .th_period
-            .filter(|p| *p > 0.0)
-            .or(engine.anim_period.filter(|p| *p > 0.0))
-            .unwrap_or(tstop / 100.0)
-            .max(f64::MIN_POSITIVE);
+        // No /TFILE: sample as often as the states are written, else 100 times
+        // a run. /TFILE dT_his = 0: every cycle (period 0).
+        let period = match engine.th_period {
+            Some(p) if p >= 0.0 => p,
+            _ => engine
+                .anim_period
+                .filter(|p| *p > 0.0)
+                .unwrap_or(tstop / 100.0)
+                .max(f64::MIN_POSITIVE),
+        };
         History {
             layout: ThLayout {
                 parts: g.parts.len(),
@@ -349,7 +352,7 @@ impl History {
         values.extend_from_slice(&[ie, ke, ker, w, err, buf[1], buf[2], buf[4], contact]);
         values.extend_from_slice(&buf[o_parts..o_node + 9 * nm]);
         debug_assert_eq!(values.len(), l.width());
-        while self.next <= *s.t {
+        while self.period > 0.0 && self.next <= *s.t {
             self.next += self.period;
         }
         ThRow {

@@ -217,7 +217,8 @@ fn cycle(
     s.dt = s.step.dt;
     if s.t >= s.next_th {
         sample_history(cx, s);
-        while s.next_th <= s.t {
+        // A period of 0 (/TFILE dT_his = 0) samples every cycle.
+        while cx.th_period > 0.0 && s.next_th <= s.t {
             s.next_th += cx.th_period;
         }
     }
