@@ -269,3 +269,84 @@ fn a_load_on_a_rigid_bodys_main_node_accelerates_the_body() {
         );
     }
 }
+
+/// The same rigid plate with, on its main node only: a /CLOAD of 2 along x
+/// and of 5 along y, a /BCS fixing y and the rotations, and an /IMPVEL of
+/// 0.3 along z. They act on the body, as in Radioss: every node moves at
+/// vx = F t / m, vy = 0 (the y load is held), vz = 0.3.
+#[test]
+fn boundary_conditions_and_imposed_velocity_on_a_rigid_bodys_main_node_hold_the_body() {
+    let src = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("decks/free_plate");
+    let dir = tmp("rbody-bcs-impvel");
+    let starter = std::fs::read_to_string(src.join("free_plate_0000.rad")).unwrap();
+    let head = &starter[..starter.find("/INIVEL/TRA/1").unwrap()];
+    let cards = [
+        "/NODE",
+        "      1000                  40                  30                   0",
+        "/GRNOD/PART/7",
+        "all plate nodes",
+        "         1",
+        "/RBODY/1",
+        "plate as one rigid body",
+        "      1000         0         0         0                 0.5         7         0         0         0",
+        "                   0                   0                   0",
+        "                   0                   0                   0",
+        "/FUNCT/3",
+        "constant",
+        "                   0                   1",
+        "                  10                   1",
+        "/GRNOD/NODE/8",
+        "the main node",
+        "      1000",
+        "/CLOAD/9",
+        "pull along x",
+        "         3         X         0         0         8                             1                   2",
+        "/CLOAD/10",
+        "pull along y, held by the BCS",
+        "         3         Y         0         0         8                             1                   5",
+        "/BCS/11",
+        "main node: y and the rotations fixed",
+        "   010 111         0         8",
+        "/IMPVEL/12",
+        "main node: z velocity",
+        "         3         Z         0         0         8         0         0",
+        "                   1                 0.3                   0                   0",
+        "/END",
+    ];
+    let deck = dir.join("rbody_bcs_0000.rad");
+    std::fs::write(&deck, format!("{head}{}\n", cards.join("\n"))).unwrap();
+    std::fs::copy(
+        src.join("free_plate_0001.rad"),
+        dir.join("rbody_bcs_0001.rad"),
+    )
+    .unwrap();
+    let fs = dir.join("final.csv");
+    let out = common::crashsim(&[
+        "run",
+        deck.to_str().unwrap(),
+        "--out",
+        dir.to_str().unwrap(),
+        "--quiet",
+        "--final-state",
+        fs.to_str().unwrap(),
+    ]);
+    common::ok(&out, "run");
+    let m = 0.03768 + 0.5;
+    let expected = 2.0 / m * 0.5;
+    for line in std::fs::read_to_string(&fs).unwrap().lines().skip(1) {
+        let c: Vec<f64> = line.split(',').map(|s| s.parse().unwrap()).collect();
+        assert!(
+            (c[4] - expected).abs() < 5e-3 * expected,
+            "node {}: vx {} against F t / m = {expected}",
+            c[0],
+            c[4]
+        );
+        assert!(c[5].abs() < 1e-12, "node {}: vy {} (held)", c[0], c[5]);
+        assert!(
+            (c[6] - 0.3).abs() < 1e-12,
+            "node {}: vz {} (imposed 0.3)",
+            c[0],
+            c[6]
+        );
+    }
+}

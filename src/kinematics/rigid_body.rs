@@ -120,6 +120,14 @@ impl RigidBodyState {
         dt_v: f64,
         dt_x: f64,
     ) -> (V3, V3) {
+        let ft = self.accelerate(loads, f_main, dt_v);
+        self.move_by(dt_x);
+        ft
+    }
+
+    /// The velocities at n+½ from the loads (see [`advance`](Self::advance));
+    /// returns the resultant force and moment.
+    pub fn accelerate(&mut self, loads: &mut [NodeLoad], f_main: V3, dt_v: f64) -> (V3, V3) {
         loads.sort_by_key(|l| l.node);
         let mut f = f_main;
         let mut t = [0.0; 3];
@@ -143,6 +151,11 @@ impl RigidBodyState {
             self.v[k] += f[k] / self.mass * dt_v;
             self.omega[k] += alpha[k] * dt_v;
         }
+        (f, t)
+    }
+
+    /// The centre and orientation at n+1 with the velocities at n+½.
+    pub fn move_by(&mut self, dt_x: f64) {
         for k in 0..3 {
             self.center[k] += self.v[k] * dt_x;
         }
@@ -154,7 +167,6 @@ impl RigidBodyState {
             ]),
             &self.rot,
         );
-        (f, t)
     }
 
     /// Velocity of a point of the body at position x (at the start of the step).

@@ -11,7 +11,7 @@ use crate::output;
 /// Every velocity phase of one cycle, with the velocity step `dt_v` = ½(Δt^{n−½}+Δt^{n+½}).
 pub(super) fn velocities(cx: &Ctx, s: &mut State, dt_v: f64) {
     tied_transfer(cx, s);
-    // The rigid walls' nodes at v^{n−½}: their work is taken with them.
+    // The rigid walls' nodes at v^{n−½}: the walls' work is taken with them.
     let before: Vec<Vec<[f64; 3]>> = cx
         .walls
         .iter()
@@ -123,7 +123,9 @@ fn rigid_bodies(cx: &Ctx, s: &mut State, dt_v: f64) {
     for (b, lb) in cx.local_bodies.iter().enumerate() {
         let mut loads: Vec<NodeLoad> = all.iter().flat_map(|r| r[b].iter().copied()).collect();
         let c_before = s.bodies[b].center;
-        s.bodies[b].advance(&mut loads, [0.0; 3], dt_v, s.dt);
+        s.bodies[b].accelerate(&mut loads, [0.0; 3], dt_v);
+        constrain_body(cx, s, b);
+        s.bodies[b].move_by(s.dt);
         for &(l, _) in &lb.members {
             let l = l as usize;
             s.v[l] = s.bodies[b].velocity_at(s.x[l], c_before);
@@ -134,6 +136,38 @@ fn rigid_bodies(cx: &Ctx, s: &mut State, dt_v: f64) {
         if let Some(l) = lb.main_local {
             s.v[l as usize] = s.bodies[b].v;
             s.vr[l as usize] = s.bodies[b].omega;
+        }
+    }
+}
+
+/// The /BCS and /IMPVEL of a rigid body's main node act on the body (as in
+/// Radioss): its velocity (translations) or spin (rotations, global frame)
+/// in those directions is zero or imposed at t + ½Δt. The reaction's work
+/// on the translations, m (v_imposed − v_free)·v_imposed, is external work,
+/// counted once, on the rank that owns the main node.
+fn constrain_body(cx: &Ctx, s: &mut State, b: usize) {
+    let lb = &cx.local_bodies[b];
+    let mut imposed: [Option<f64>; 6] = lb.main_fixed.map(|f| f.then_some(0.0));
+    let th = s.t + 0.5 * s.dt;
+    for &i in &lb.main_impvel {
+        let c = &cx.g.imposed_velocities[i];
+        if let Some(val) = cx.imposed(c, th) {
+            imposed[c.card.dir.index()] = Some(val);
+        }
+    }
+    let counts = lb.main_local.is_some_and(|l| cx.owned[l as usize]);
+    let body = &mut s.bodies[b];
+    for (k, val) in imposed.iter().enumerate() {
+        let Some(val) = *val else {
+            continue;
+        };
+        if k < 3 {
+            if counts {
+                s.w_ext.add(body.mass * (val - body.v[k]) * val);
+            }
+            body.v[k] = val;
+        } else {
+            body.omega[k - 3] = val;
         }
     }
 }
@@ -231,10 +265,9 @@ fn wall_nodes(
     let wall = cx.walls[w].1;
     // A free wall (its own mass) is part of the system, its kinetic energy
     // counted: what its impacts take stays inside (a negative ERROR, as a
-    // contact's loss); a fixed or driven wall is outside: its contact takes
-    // energy and its motion does work on the nodes it pushes.
+    // contact's loss); a fixed or driven wall is outside: the work of its
+    // impulses is external work (EXT-WORK), as Radioss counts it.
     let free = wall.node.is_some() && cx.wall_driver[w].is_empty() && wall.card.mass > 0.0;
-    let vw = s.walls.v[w];
     let mut push: Vec<(u32, [f64; 3])> = Vec::new();
     for (i, &l) in nodes.iter().enumerate() {
         let l = l as usize;
@@ -252,15 +285,8 @@ fn wall_nodes(
         );
         let v = s.v[l];
         if cx.owned[l] && !free {
-            let dv = [0, 1, 2].map(|k| nv[k] - v[k]);
-            s.wall_work.add(
-                wall_work(
-                    cx.mass[l],
-                    dv,
-                    [0, 1, 2].map(|k| before[i][k] - vw[k]),
-                    wall.normal,
-                ) + cx.mass[l] * (dv[0] * vw[0] + dv[1] * vw[1] + dv[2] * vw[2]),
-            );
+            s.wall_work
+                .add(impulse_work(cx.mass[l], (before[i], v), nv));
         }
         s.v[l] = nv;
         s.walls.tied[w][i] = now_tied;
@@ -274,19 +300,20 @@ fn wall_nodes(
     push
 }
 
-/// The work a rigid wall's contact takes from a node over the step, as
-/// Radioss counts it in EXT-WORK: with the impulse m·Δv the wall gave
-/// (Δv = v_after − v_free) and the node's velocity relative to the wall at
-/// n−½, `u`: the normal part ½ (m Δv·n)(u·n) (the kinetic energy a stop
-/// takes), the tangential (friction) part m Δv_t·u_t. Negative: the wall
-/// takes energy. (A moving wall driven from outside adds m Δv·v_wall.)
-fn wall_work(m: f64, dv: [f64; 3], u: [f64; 3], n: [f64; 3]) -> f64 {
-    let dvn = dv[0] * n[0] + dv[1] * n[1] + dv[2] * n[2];
-    let un = u[0] * n[0] + u[1] * n[1] + u[2] * n[2];
-    let tangential: f64 = (0..3)
-        .map(|k| (dv[k] - dvn * n[k]) * (u[k] - un * n[k]))
-        .sum();
-    m * (0.5 * dvn * un + tangential)
+/// The work of a rigid wall's impulse on a node over the step: the impulse
+/// m (v_after − v_free) times the node's mean velocity over the step,
+/// ½ (v^{n−½} + v_after). A node resting on a fixed wall takes none (its
+/// velocity is zero before and after, whatever the forces pressing it); a
+/// node landing on it loses its whole approach kinetic energy over the
+/// steps it needs to land; friction takes what it slows; a driven wall's
+/// push gives F·v_wall Δt. Radioss counts these in EXT-WORK (its normal
+/// term −½ DV·I_N, with DV the velocity at n−½, and friction term): INT357's
+/// plates pressed onto its wall lose 6.0 there, as in the reference listing.
+fn impulse_work(m: f64, (v_half, v_free): ([f64; 3], [f64; 3]), v_after: [f64; 3]) -> f64 {
+    0.5 * m
+        * (0..3)
+            .map(|k| (v_after[k] - v_free[k]) * (v_after[k] + v_half[k]))
+            .sum::<f64>()
 }
 
 /// Boundary conditions have the last word.

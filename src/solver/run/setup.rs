@@ -24,6 +24,11 @@ pub(super) struct LocalBody {
     pub main_local: Option<u32>,
     /// Card MASS + main node's own mass: what the main node carries.
     pub main_mass: f64,
+    /// The main node's /BCS (fixed degrees of freedom, global frame) and
+    /// /IMPVEL cards (indices into `GlobalData::imposed_velocities`): they
+    /// act on the body, as in Radioss.
+    pub main_fixed: [bool; 6],
+    pub main_impvel: Vec<usize>,
 }
 
 /// Local nodes of a card, with the card.
@@ -254,10 +259,21 @@ fn rigid_body_roles(cx: &mut Ctx) {
             cx.is_main[l as usize] = true;
         }
         members.sort_by_key(|m| m.1);
+        let mut main_fixed = [false; 6];
+        for c in g.bcs.iter().filter(|c| c.nodes.contains(&rb.main_node)) {
+            for k in 0..6 {
+                main_fixed[k] |= c.card.fixed[k];
+            }
+        }
+        let main_impvel = (0..g.imposed_velocities.len())
+            .filter(|&i| g.imposed_velocities[i].nodes.contains(&rb.main_node))
+            .collect();
         cx.local_bodies.push(LocalBody {
             members,
             main_local,
             main_mass: rb.card.mass + main_local.map(|l| sd.mass[l as usize]).unwrap_or(0.0),
+            main_fixed,
+            main_impvel,
         });
     }
     cx.ke_skip = (0..n).map(|l| cx.is_main[l] || cx.tied_tr[l]).collect();
