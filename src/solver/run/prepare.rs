@@ -104,10 +104,16 @@ pub(super) fn prepare(opts: &RunOptions, nranks: usize) -> Result<Prepared, Stri
             continue;
         };
         let p = &m.properties[ip as usize];
-        if p.shell.as_ref().is_none_or(|s| s.n != 0) {
+        let Some(n) = p.shell.as_ref().map(|s| s.n) else {
+            continue;
+        };
+        let mat = crate::material::Material::from_card(&m.materials[im as usize]);
+        if n >= 2 && !mat.is_plastic() && seen.insert((ip, im)) {
+            notes.push(format!("{}: /PROP/{}: N = {n} with the elastic /MAT/{} is computed with {n} integration points through the thickness; the reference starter switches an elastic section to global integration N = 0 (its WARNING 1084): the same membrane and bending stiffness, to round-off", p.card.loc, p.card.id, m.materials[im as usize].id));
+        }
+        if n != 0 {
             continue;
         }
-        let mat = crate::material::Material::from_card(&m.materials[im as usize]);
         if let crate::element::shell4::N0Rule::Points(n) = crate::element::shell4::n0_rule(&mat) {
             if seen.insert((ip, im)) {
                 notes.push(format!("{}: /PROP/{}: N = 0 (global integration) with /MAT/{} (LAW2) is computed with N = {n} integration points, as the reference engine does (its starter WARNING 1912)", p.card.loc, p.card.id, m.materials[im as usize].id));
