@@ -52,16 +52,19 @@ fn write_deck(dir: &Path) -> (Vec<(usize, f64)>, V3) {
             mass[n] += rho * v / 4.0;
         }
     }
-    // Two triangles on the top face, 1 mm thick.
+    // Two triangles on the top face, 1 mm thick; each node takes the share
+    // of its corner angle, α/π (as the Radioss starter lumps them): right
+    // isosceles triangles, ½ at the right angle (6 and 8), ¼ at the others.
     let tris = [[5, 6, 7], [5, 7, 8]];
-    for _ in &tris {
-        for &n in &[5usize, 6, 7, 8] {
-            let _ = n;
-        }
-    }
     for t in &tris {
-        for &n in t {
-            mass[n] += rho * 1.0 * (h * h / 2.0) / 3.0;
+        for (k, &n) in t.iter().enumerate() {
+            let (a, b, c) = (x[n - 1], x[t[(k + 1) % 3] - 1], x[t[(k + 2) % 3] - 1]);
+            let u = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
+            let v = [c[0] - a[0], c[1] - a[1], c[2] - a[2]];
+            let cos = (u[0] * v[0] + u[1] * v[1] + u[2] * v[2])
+                / ((u[0] * u[0] + u[1] * u[1] + u[2] * u[2]).sqrt()
+                    * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt());
+            mass[n] += rho * 1.0 * (h * h / 2.0) * cos.acos() / std::f64::consts::PI;
         }
     }
     // A spring 1-9 of mass 2e-6 (half to each node).

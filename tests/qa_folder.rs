@@ -1,7 +1,8 @@
 //! Walks `../shared/decks/openradioss-qa` (issue 13): every deck runs or is
 //! refused by name — none runs to exit 0 with energies more than 50% off
-//! its OpenRadioss listing. Prints one line per deck: status, worst
-//! deviation, seconds.
+//! its OpenRadioss listing, and every deck that runs is within 10% unless
+//! `KNOWN_OFF` says why not (SOLIDES_..._H101 is held to it: 0.9% today). Prints one
+//! line per deck: status, worst deviation, seconds.
 //!
 //! The deviation of a run: at every row of the reference engine listing,
 //! our I-ENERGY and K-ENERGY T (every cycle, `--energies`, read at the
@@ -79,6 +80,13 @@ fn names_a_keyword(msg: &str) -> bool {
     msg.match_indices(" /")
         .any(|(i, _)| msg[i + 2..].starts_with(|c: char| c.is_ascii_uppercase()))
 }
+
+/// Decks that run but not yet within 10% of their reference (issue 15's
+/// bar), with why; every other deck that runs is held to 10%.
+const KNOWN_OFF: &[(&str, &str)] = &[(
+    "COQUES3N_ct3a",
+    "the plate's exchange between I-ENERGY and K-ENERGY T runs out of phase with the reference's (the same energies at t = 0 and at the end; up to 15% of the columns' largest value around t = 180-540): the 3-node shell's bending frequency differs",
+)];
 
 struct Outcome {
     deck: String,
@@ -158,17 +166,21 @@ fn every_qa_deck_runs_or_is_refused_by_name_and_none_runs_far_off() {
     }
     let ran = outcomes.iter().filter(|o| o.worst.is_some()).count();
     println!("{ran} of {} decks ran to their end", outcomes.len());
+    for (deck, why) in KNOWN_OFF {
+        println!("known: {deck}: {why}");
+    }
     let bad: Vec<&Outcome> = outcomes
         .iter()
         .filter(|o| {
-            o.worst.is_some_and(|w| w > 0.5)
+            let known = KNOWN_OFF.iter().any(|(d, _)| *d == o.deck);
+            o.worst.is_some_and(|w| w > 0.5 || (w > 0.1 && !known))
                 || o.status.starts_with("failed")
                 || o.status.starts_with("refused without")
         })
         .collect();
     assert!(
         bad.is_empty(),
-        "far off, failed, or refused without naming a keyword: {:?}",
+        "far off (over 10%, or over 50% for a known deck), failed, or refused without naming a keyword: {:?}",
         bad.iter()
             .map(|o| (&o.deck, &o.status, o.worst))
             .collect::<Vec<_>>()
