@@ -16,16 +16,28 @@ fn tmp(tag: &str) -> PathBuf {
 }
 
 fn run_with_engine(deck: &Path, dir: &Path, engine: &str) -> std::process::Output {
+    run_with_engine_and(deck, dir, engine, &[])
+}
+
+/// `run DECK --engine ENGINE --out DIR` with `extra` arguments.
+fn run_with_engine_and(
+    deck: &Path,
+    dir: &Path,
+    engine: &str,
+    extra: &[&str],
+) -> std::process::Output {
     let eng = dir.join("engine_0001.rad");
     std::fs::write(&eng, engine).unwrap();
-    common::crashsim(&[
+    let mut args = vec![
         "run",
         deck.to_str().unwrap(),
         "--engine",
         eng.to_str().unwrap(),
         "--out",
         dir.to_str().unwrap(),
-    ])
+    ];
+    args.extend_from_slice(extra);
+    common::crashsim(&args)
 }
 
 #[test]
@@ -175,18 +187,7 @@ fn blown_bars(tag: &str, engine: &str, extra: &[&str]) -> (PathBuf, std::process
             .then(|| lines[i].replacen("                 0.1", "                 1e5", 1))
     });
     assert!(std::fs::read_to_string(&deck).unwrap().contains("1e5"));
-    let eng = dir.join("engine_0001.rad");
-    std::fs::write(&eng, engine).unwrap();
-    let mut args = vec![
-        "run",
-        deck.to_str().unwrap(),
-        "--engine",
-        eng.to_str().unwrap(),
-        "--out",
-        dir.to_str().unwrap(),
-    ];
-    args.extend_from_slice(extra);
-    let out = common::crashsim(&args);
+    let out = run_with_engine_and(&deck, &dir, engine, extra);
     (dir, out)
 }
 

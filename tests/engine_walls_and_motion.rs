@@ -199,16 +199,15 @@ fn imposed_displacement_is_followed_exactly() {
 }
 
 /// decks/free_plate made one rigid body (/RBODY on all its nodes, main node
-/// 1000 at the centre, MASS 0.5) with a constant /CLOAD of 2 along x on the
-/// main node only: the load acts on the body, as in Radioss, so every node
-/// moves at v = F t / m (m: the plate, its nodes and the card's mass).
-#[test]
-fn a_load_on_a_rigid_bodys_main_node_accelerates_the_body() {
+/// 1000 at the centre, MASS 0.5, node group 8 = the main node, /FUNCT/3 = 1)
+/// with `loads` (cards on the main node) added; runs it and returns the
+/// final-state rows (id, x, y, z, vx, vy, vz, ...).
+fn rigid_plate_with(tag: &str, loads: &[&str]) -> Vec<Vec<f64>> {
     let src = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("decks/free_plate");
-    let dir = tmp("rbody-cload");
+    let dir = tmp(tag);
     let starter = std::fs::read_to_string(src.join("free_plate_0000.rad")).unwrap();
     let head = &starter[..starter.find("/INIVEL/TRA/1").unwrap()];
-    let cards = [
+    let body = [
         "/NODE",
         "      1000                  40                  30                   0",
         "/GRNOD/PART/7",
@@ -226,22 +225,15 @@ fn a_load_on_a_rigid_bodys_main_node_accelerates_the_body() {
         "/GRNOD/NODE/8",
         "the main node",
         "      1000",
-        "/CLOAD/9",
-        "pull along x",
-        "         3         X         0         0         8                             1                   2",
-        "/END",
     ];
-    let deck = dir.join("rbody_cload_0000.rad");
+    let deck = dir.join("rbody_0000.rad");
+    let cards = [&body[..], loads, &["/END"]].concat();
     std::fs::write(&deck, format!("{head}{}\n", cards.join("\n"))).unwrap();
-    std::fs::copy(
-        src.join("free_plate_0001.rad"),
-        dir.join("rbody_cload_0001.rad"),
-    )
-    .unwrap();
+    std::fs::copy(src.join("free_plate_0001.rad"), dir.join("rbody_0001.rad")).unwrap();
     let m = common::crashsim_json(&["check", deck.to_str().unwrap(), "--json"])["total_mass"]
         .as_f64()
         .unwrap();
-    assert!((m - (0.03768 + 0.5)).abs() < 1e-12, "total mass {m}");
+    assert!((m - PLATE_AND_BODY_MASS).abs() < 1e-12, "total mass {m}");
     let fs = dir.join("final.csv");
     let out = common::crashsim(&[
         "run",
@@ -253,10 +245,33 @@ fn a_load_on_a_rigid_bodys_main_node_accelerates_the_body() {
         fs.to_str().unwrap(),
     ]);
     common::ok(&out, "run");
+    std::fs::read_to_string(&fs)
+        .unwrap()
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').map(|s| s.parse().unwrap()).collect())
+        .collect()
+}
+
+/// The plate's nodes and the card's MASS.
+const PLATE_AND_BODY_MASS: f64 = 0.03768 + 0.5;
+
+/// A constant /CLOAD of 2 along x on the main node only: the load acts on
+/// the body, as in Radioss, so every node moves at v = F t / m (m: the
+/// plate, its nodes and the card's mass).
+#[test]
+fn a_load_on_a_rigid_bodys_main_node_accelerates_the_body() {
+    let rows = rigid_plate_with(
+        "rbody-cload",
+        &[
+            "/CLOAD/9",
+            "pull along x",
+            "         3         X         0         0         8                             1                   2",
+        ],
+    );
     // Velocities live at the half step: the last one is v(t_end - dt/2), dt ~ 1.7e-3 ms.
-    let expected = 2.0 / m * 0.5;
-    for line in std::fs::read_to_string(&fs).unwrap().lines().skip(1) {
-        let c: Vec<f64> = line.split(',').map(|s| s.parse().unwrap()).collect();
+    let expected = 2.0 / PLATE_AND_BODY_MASS * 0.5;
+    for c in rows {
         assert!(
             (c[4] - expected).abs() < 5e-3 * expected,
             "node {}: vx {} against F t / m = {expected}",
@@ -265,7 +280,7 @@ fn a_load_on_a_rigid_bodys_main_node_accelerates_the_body() {
         );
         assert!(
             c[5].abs() < 1e-12 * expected && c[6].abs() < 1e-12 * expected,
-            "{line}"
+            "{c:?}"
         );
     }
 }
@@ -276,65 +291,26 @@ fn a_load_on_a_rigid_bodys_main_node_accelerates_the_body() {
 /// vx = F t / m, vy = 0 (the y load is held), vz = 0.3.
 #[test]
 fn boundary_conditions_and_imposed_velocity_on_a_rigid_bodys_main_node_hold_the_body() {
-    let src = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("decks/free_plate");
-    let dir = tmp("rbody-bcs-impvel");
-    let starter = std::fs::read_to_string(src.join("free_plate_0000.rad")).unwrap();
-    let head = &starter[..starter.find("/INIVEL/TRA/1").unwrap()];
-    let cards = [
-        "/NODE",
-        "      1000                  40                  30                   0",
-        "/GRNOD/PART/7",
-        "all plate nodes",
-        "         1",
-        "/RBODY/1",
-        "plate as one rigid body",
-        "      1000         0         0         0                 0.5         7         0         0         0",
-        "                   0                   0                   0",
-        "                   0                   0                   0",
-        "/FUNCT/3",
-        "constant",
-        "                   0                   1",
-        "                  10                   1",
-        "/GRNOD/NODE/8",
-        "the main node",
-        "      1000",
-        "/CLOAD/9",
-        "pull along x",
-        "         3         X         0         0         8                             1                   2",
-        "/CLOAD/10",
-        "pull along y, held by the BCS",
-        "         3         Y         0         0         8                             1                   5",
-        "/BCS/11",
-        "main node: y and the rotations fixed",
-        "   010 111         0         8",
-        "/IMPVEL/12",
-        "main node: z velocity",
-        "         3         Z         0         0         8         0         0",
-        "                   1                 0.3                   0                   0",
-        "/END",
-    ];
-    let deck = dir.join("rbody_bcs_0000.rad");
-    std::fs::write(&deck, format!("{head}{}\n", cards.join("\n"))).unwrap();
-    std::fs::copy(
-        src.join("free_plate_0001.rad"),
-        dir.join("rbody_bcs_0001.rad"),
-    )
-    .unwrap();
-    let fs = dir.join("final.csv");
-    let out = common::crashsim(&[
-        "run",
-        deck.to_str().unwrap(),
-        "--out",
-        dir.to_str().unwrap(),
-        "--quiet",
-        "--final-state",
-        fs.to_str().unwrap(),
-    ]);
-    common::ok(&out, "run");
-    let m = 0.03768 + 0.5;
-    let expected = 2.0 / m * 0.5;
-    for line in std::fs::read_to_string(&fs).unwrap().lines().skip(1) {
-        let c: Vec<f64> = line.split(',').map(|s| s.parse().unwrap()).collect();
+    let rows = rigid_plate_with(
+        "rbody-bcs-impvel",
+        &[
+            "/CLOAD/9",
+            "pull along x",
+            "         3         X         0         0         8                             1                   2",
+            "/CLOAD/10",
+            "pull along y, held by the BCS",
+            "         3         Y         0         0         8                             1                   5",
+            "/BCS/11",
+            "main node: y and the rotations fixed",
+            "   010 111         0         8",
+            "/IMPVEL/12",
+            "main node: z velocity",
+            "         3         Z         0         0         8         0         0",
+            "                   1                 0.3                   0                   0",
+        ],
+    );
+    let expected = 2.0 / PLATE_AND_BODY_MASS * 0.5;
+    for c in rows {
         assert!(
             (c[4] - expected).abs() < 5e-3 * expected,
             "node {}: vx {} against F t / m = {expected}",
