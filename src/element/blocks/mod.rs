@@ -86,12 +86,6 @@ pub trait Block: Send + Sync {
     /// geometry (global index within the kind, what is wrong).
     fn settle(&mut self) -> Option<(u32, &'static str)>;
     fn alive(&self, e: usize) -> bool;
-    /// Internal energy (with hourglass) of the block's elements.
-    fn energy(&self) -> f64;
-    /// Hourglass energy and plastic work (parts of `energy`).
-    fn energy_parts(&self) -> (f64, f64) {
-        (0.0, 0.0)
-    }
     fn rows(&self) -> Vec<ElemRow>;
     /// Values for the HDF5 states, one per local element (see `ElemOut`).
     fn outputs(&self) -> Vec<ElemOut>;

@@ -125,15 +125,6 @@ macro_rules! shell_block {
             fn alive(&self, e: usize) -> bool {
                 self.alive[e]
             }
-            fn energy(&self) -> f64 {
-                self.state.iter().map(|s| s.eint + hourglass_of(s)).sum()
-            }
-            fn energy_parts(&self) -> (f64, f64) {
-                (
-                    self.state.iter().map(hourglass_of).sum(),
-                    self.state.iter().map(|s| s.eplas).sum(),
-                )
-            }
             fn rows(&self) -> Vec<ElemRow> {
                 (0..self.le.global.len())
                     .map(|e| {

@@ -101,9 +101,6 @@ macro_rules! solid_block {
             fn alive(&self, e: usize) -> bool {
                 self.alive[e]
             }
-            fn energy(&self) -> f64 {
-                self.state.iter().map(|s| s.eint + hourglass_of(s)).sum()
-            }
             fn rows(&self) -> Vec<ElemRow> {
                 (0..self.le.global.len())
                     .map(|e| {

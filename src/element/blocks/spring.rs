@@ -179,9 +179,6 @@ impl Block for SpringBlock {
     fn alive(&self, e: usize) -> bool {
         self.alive[e]
     }
-    fn energy(&self) -> f64 {
-        self.state.iter().map(|s| s.eint).sum()
-    }
     fn rows(&self) -> Vec<ElemRow> {
         (0..self.le.global.len())
             .map(|e| {
