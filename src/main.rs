@@ -80,6 +80,9 @@ enum Command {
         /// No progress line on stderr
         #[arg(long)]
         quiet: bool,
+        /// The progress line on stderr even when it is not a terminal (under mpirun)
+        #[arg(long, conflicts_with = "quiet")]
+        progress: bool,
         /// Write the restart file after cycle K and stop (for tests)
         #[arg(long, hide = true)]
         stop_after_cycle: Option<u64>,
@@ -92,6 +95,9 @@ enum Command {
         /// Stop the run (exit 3) when the listing's ERROR passes this many percent of energy created, where the engine file has no /STOP Emax (0: no limit)
         #[arg(long, default_value_t = 100.0, value_parser = percent)]
         energy_error_limit: f64,
+        /// Threads per rank (default: RAYON_NUM_THREADS if set, else the cores divided by the ranks on this node)
+        #[arg(long, value_parser = clap::value_parser!(u32).range(1..=4096))]
+        threads: Option<u32>,
     },
     /// Print what a run file DIR/NAME.h5 (or a restart file) holds
     Info {
@@ -105,9 +111,15 @@ enum Command {
         /// The PNG to write
         #[arg(long)]
         out: PathBuf,
-        /// energies, interfaces, parts or node:ID
+        /// energies, interfaces, parts, node:ID, or mesh[:plastic_strain|von_mises] (the deformed mesh coloured by an element value)
         #[arg(long, default_value = "energies")]
         what: String,
+        /// mesh: the state to draw (its number under /states; default the last)
+        #[arg(long)]
+        state: Option<usize>,
+        /// mesh: where it is seen from: iso, x, y, z, -x, -y, -z or a direction X,Y,Z
+        #[arg(long, default_value = "iso")]
+        view: String,
     },
     /// Under mpirun: rank 0 reads and partitions the deck, scatters one
     /// subdomain per rank; every rank reports what it holds and checks its
@@ -245,16 +257,13 @@ fn main() -> ExitCode {
             }
             Err(e) => input_error(e),
         },
-        Command::Plot { file, out, what } => {
-            let what = match what.parse::<crashsim::output::plot::What>() {
-                Ok(w) => w,
-                Err(e) => return input_error(format!("--what {e}")),
-            };
-            match crashsim::output::plot::plot(&file, &out, &what) {
-                Ok(()) => ExitCode::SUCCESS,
-                Err(e) => input_error(e),
-            }
-        }
+        Command::Plot {
+            file,
+            out,
+            what,
+            state,
+            view,
+        } => plot(&file, &out, &what, state, &view),
         Command::Run {
             deck,
             out,
@@ -264,14 +273,27 @@ fn main() -> ExitCode {
             energies,
             restart,
             quiet,
+            progress,
             stop_after_cycle,
             no_run_file,
             skip_unsupported,
             energy_error_limit,
+            threads,
         } => {
             let Some(world) = MpiWorld::init() else {
                 return input_error("MPI could not be initialised");
             };
+            use crashsim::parallel::threads_per_rank as tpr;
+            let env = std::env::var("RAYON_NUM_THREADS").ok();
+            let choice = tpr::choose(
+                threads.map(|n| n as usize),
+                env.as_deref(),
+                tpr::cores(),
+                world.ranks_on_this_node(),
+            );
+            if let Err(e) = tpr::apply(choice) {
+                return input_error(e);
+            }
             if !no_run_file || restart.is_some() {
                 crashsim::output::h5::warm_up();
             }
@@ -289,6 +311,7 @@ fn main() -> ExitCode {
                 output: crashsim::output::OutputOptions {
                     restart,
                     quiet,
+                    progress,
                     stop_after_cycle,
                     no_run_file,
                 },
@@ -306,6 +329,42 @@ fn main() -> ExitCode {
                 }
             }
         }
+    }
+}
+
+/// `crashsim plot`: time histories, or the mesh view of one state.
+fn plot(file: &Path, out: &Path, what: &str, state: Option<usize>, view: &str) -> ExitCode {
+    use crashsim::output::{mesh_view, plot};
+    let what = match what.parse::<plot::What>() {
+        Ok(w) => w,
+        Err(e) => return input_error(format!("--what {e}")),
+    };
+    let view = match view.parse::<mesh_view::View>() {
+        Ok(v) => v,
+        Err(e) => return input_error(format!("--view {e}")),
+    };
+    let plot::What::Mesh(field) = what else {
+        return match plot::plot(file, out, &what) {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(e) => input_error(e),
+        };
+    };
+    match mesh_view::render(file, out, field, state, view) {
+        Ok(m) => {
+            println!(
+                "{}: state {} (t = {:.6e}, cycle {}), {} faces, {} from {:.4e} to {:.4e}",
+                out.display(),
+                m.state,
+                m.time,
+                m.cycle,
+                m.faces,
+                field.dataset(),
+                m.lo,
+                m.hi
+            );
+            ExitCode::SUCCESS
+        }
+        Err(e) => input_error(e),
     }
 }
 

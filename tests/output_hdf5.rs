@@ -199,7 +199,7 @@ fn info_and_plot_read_the_run_file() {
         (&["info", "BOX1BL.out"], "BOX1BL.out: not an HDF5 file"),
         (
             &["plot", "BOX1BL.h5", "--out", "x.png", "--what", "speed"],
-            "expected energies, interfaces, parts or node:ID",
+            "expected energies, interfaces, parts, node:ID (a /TH/NODE node id), mesh",
         ),
         (
             &["plot", "BOX1BL.h5", "--out", "x.png", "--what", "node:7"],

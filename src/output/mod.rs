@@ -29,11 +29,14 @@
 pub mod h5;
 pub mod history;
 pub mod info;
+pub mod mesh_view;
 pub mod plot;
 pub mod progress;
+pub mod raster;
 pub mod restart;
 pub mod runfile;
 pub mod stop;
+pub mod text;
 pub mod xdmf;
 
 pub use history::InterfaceSample;
@@ -56,6 +59,9 @@ pub struct OutputOptions {
     pub restart: Option<PathBuf>,
     /// No progress line.
     pub quiet: bool,
+    /// The progress line even when stderr is not a terminal (under mpirun,
+    /// whose ranks write into pipes that it forwards to the terminal).
+    pub progress: bool,
     /// Write the restart file after this cycle and stop (tests, hidden flag).
     pub stop_after_cycle: Option<u64>,
     /// No HDF5/XDMF run file (hidden: to measure what output costs).
@@ -236,7 +242,13 @@ impl Output {
             rfile_cycles: engine.rfile_cycles.filter(|&n| n > 0).map(|n| n as u64),
             stop_after: ctx.opts.stop_after_cycle,
             hooks: stop::TestHooks::from_env(),
-            progress: progress::Progress::new(world.rank(), ctx.opts.quiet, *s.t, *s.cycle, tstop),
+            progress: progress::Progress::new(
+                world.rank(),
+                progress::Mode::of(ctx.opts),
+                *s.t,
+                *s.cycle,
+                tstop,
+            ),
             xdmf: xdmf::XdmfModel {
                 name: g.name.clone(),
                 h5_name: format!("{}.h5", g.name),

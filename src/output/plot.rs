@@ -2,12 +2,11 @@
 //! curves from the time histories, drawn with plotters into a PNG, axes
 //! labelled with the deck's units.
 //!
-//! Text is drawn with ab_glyph from a TrueType font read at run time
-//! (`$CRASHSIM_FONT`, else DejaVu Sans from Debian's fonts-dejavu-core,
-//! which ci/setup installs): no fontconfig or freetype at build time.
+//! Text is drawn with the font `text` registers.
 
 use super::h5::attr;
 use super::info::open;
+use super::text::{register_font, tick};
 use hdf5::File;
 use plotters::prelude::*;
 use std::path::Path;
@@ -19,6 +18,8 @@ pub enum What {
     Interfaces,
     Parts,
     Node(u64),
+    /// The deformed mesh coloured by an element value (`mesh_view`).
+    Mesh(super::mesh_view::Field),
 }
 
 impl std::str::FromStr for What {
@@ -28,44 +29,16 @@ impl std::str::FromStr for What {
             "energies" => Ok(What::Energies),
             "interfaces" => Ok(What::Interfaces),
             "parts" => Ok(What::Parts),
+            "mesh" | "mesh:plastic_strain" => Ok(What::Mesh(super::mesh_view::Field::PlasticStrain)),
+            "mesh:von_mises" => Ok(What::Mesh(super::mesh_view::Field::VonMises)),
             _ => match s.strip_prefix("node:").map(|n| n.trim().parse::<u64>()) {
                 Some(Ok(id)) => Ok(What::Node(id)),
                 _ => Err(format!(
-                    "'{s}': expected energies, interfaces, parts or node:ID (a /TH/NODE node id)"
+                    "'{s}': expected energies, interfaces, parts, node:ID (a /TH/NODE node id), mesh, mesh:plastic_strain or mesh:von_mises"
                 )),
             },
         }
     }
-}
-
-const FONT_PATHS: [&str; 3] = [
-    "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf",
-    "/usr/share/fonts/TTF/DejaVuSans.ttf",
-    "/usr/share/fonts/dejavu/DejaVuSans.ttf",
-];
-
-/// Registers the font plotters draws text with (once).
-fn register_font() -> Result<(), String> {
-    static DONE: std::sync::OnceLock<Result<(), String>> = std::sync::OnceLock::new();
-    DONE.get_or_init(|| {
-        let candidates: Vec<String> = std::env::var("CRASHSIM_FONT")
-            .ok()
-            .into_iter()
-            .chain(FONT_PATHS.iter().map(|s| s.to_string()))
-            .collect();
-        for p in &candidates {
-            if let Ok(bytes) = std::fs::read(p) {
-                let bytes: &'static [u8] = Box::leak(bytes.into_boxed_slice());
-                return plotters::style::register_font("sans-serif", FontStyle::Normal, bytes)
-                    .map_err(|_| format!("{p}: not a TrueType font: set CRASHSIM_FONT to a .ttf file"));
-            }
-        }
-        Err(format!(
-            "no TrueType font for the plot's text: install fonts-dejavu-core (looked for {}) or set CRASHSIM_FONT to a .ttf file",
-            candidates.join(", ")
-        ))
-    })
-    .clone()
 }
 
 /// One curve.
@@ -157,6 +130,10 @@ pub fn plot(input: &Path, out: &Path, what: &What) -> Result<(), String> {
     let deck = attr(&f, "deck");
     let mut panels = Vec::new();
     match what {
+        What::Mesh(field) => {
+            return super::mesh_view::render(input, out, *field, None, Default::default())
+                .map(|_| ());
+        }
         What::Energies => {
             let (gs, gv) = read(&f, "global", input)?;
             let mut curves = Vec::new();
@@ -297,24 +274,6 @@ pub fn plot(input: &Path, out: &Path, what: &What) -> Result<(), String> {
         }
     }
     draw(out, &time, &format!("time [{ut}]"), &panels)
-}
-
-/// A tick label: plain decimals for moderate magnitudes, else exponent form.
-fn tick(v: &f64) -> String {
-    let a = v.abs();
-    if a == 0.0 || a < 1e-12 {
-        "0".into()
-    } else if (1e-3..1e5).contains(&a) {
-        let digits = (3 - a.log10().floor() as i32).clamp(0, 6) as usize;
-        let s = format!("{v:.digits$}");
-        if s.contains('.') {
-            s.trim_end_matches('0').trim_end_matches('.').to_string()
-        } else {
-            s
-        }
-    } else {
-        format!("{v:.2e}")
-    }
 }
 
 fn draw(out: &Path, time: &[f64], xlabel: &str, panels: &[Panel]) -> Result<(), String> {

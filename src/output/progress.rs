@@ -1,12 +1,36 @@
 //! The progress line: on a terminal, rank 0 keeps one line on stderr with
 //! the simulated time, the cycle, the time step, cycles per second and the
 //! estimated time left (from the simulated-time rate so far). Off when
-//! stderr is not a terminal or with `--quiet`; the listing on stdout is
-//! untouched. The line is redrawn at most four times a second and ends with
+//! stderr is not a terminal or with `--quiet`, on with `--progress` even
+//! when it is not one (under mpirun, which forwards the ranks' pipes to the
+//! terminal); the listing on stdout is untouched. The line is redrawn at most four times a second and ends with
 //! a carriage return, so the next listing row overwrites it.
 
 use std::io::{IsTerminal, Write};
 use std::time::{Duration, Instant};
+
+/// When the line is drawn.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Mode {
+    /// Never (`--quiet`).
+    Off,
+    /// When stderr is a terminal (the default).
+    Terminal,
+    /// Always (`--progress`).
+    Always,
+}
+
+impl Mode {
+    pub fn of(o: &super::OutputOptions) -> Mode {
+        if o.quiet {
+            Mode::Off
+        } else if o.progress {
+            Mode::Always
+        } else {
+            Mode::Terminal
+        }
+    }
+}
 
 pub struct Progress {
     on: bool,
@@ -20,10 +44,15 @@ pub struct Progress {
 
 impl Progress {
     /// `t0`, `cycle0`: where the loop starts (not 0 after a restart).
-    pub fn new(rank: u32, quiet: bool, t0: f64, cycle0: u64, tstop: f64) -> Progress {
+    pub fn new(rank: u32, mode: Mode, t0: f64, cycle0: u64, tstop: f64) -> Progress {
         let now = Instant::now();
+        let shown = match mode {
+            Mode::Off => false,
+            Mode::Terminal => std::io::stderr().is_terminal(),
+            Mode::Always => true,
+        };
         Progress {
-            on: rank == 0 && !quiet && std::io::stderr().is_terminal(),
+            on: rank == 0 && shown,
             started: now,
             // The first update draws at once.
             last: now.checked_sub(Duration::from_secs(1)).unwrap_or(now),
@@ -82,7 +111,7 @@ mod tests {
 
     #[test]
     fn the_line_names_time_cycle_step_rate_and_time_left() {
-        let p = Progress::new(1, false, 0.0, 0, 0.1);
+        let p = Progress::new(1, Mode::Always, 0.0, 0, 0.1);
         assert!(!p.on, "only rank 0 draws");
         // A quarter of the run in 2 s: 6 s left; 500 cycles in 2 s.
         let l = p.line(0.025, 500, 1e-4, 2.0);
@@ -91,7 +120,7 @@ mod tests {
             "t = 2.5000e-2 / 1.0000e-1  cycle 500  dt 1.000e-4  250 cycles/s  left 6 s"
         );
         // After a restart the rate counts from where the run started.
-        let p = Progress::new(0, true, 0.05, 500, 0.1);
+        let p = Progress::new(0, Mode::Off, 0.05, 500, 0.1);
         assert!(!p.on, "--quiet turns it off");
         assert!(p
             .line(0.075, 600, 1e-4, 1.0)

@@ -12,6 +12,7 @@ pub mod exact_sum;
 mod mpi_world;
 mod serial;
 mod threads;
+pub mod threads_per_rank;
 
 pub use exact_sum::ExactSum;
 pub use mpi_world::MpiWorld;

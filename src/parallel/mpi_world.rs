@@ -31,6 +31,13 @@ impl MpiWorld {
         })
     }
 
+    /// How many ranks of this job run on this rank's node (those that can
+    /// share memory with it: MPI_Comm_split_type SHARED); threads per rank
+    /// are chosen from it (`threads_per_rank`).
+    pub fn ranks_on_this_node(&self) -> usize {
+        self.comm.split_shared(self.comm.rank()).size().max(1) as usize
+    }
+
     /// Every rank's values concatenated in rank order, on every rank (an
     /// MPI_Allgatherv after an MPI_Allgather of the counts), with each rank's
     /// count and offset.

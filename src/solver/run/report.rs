@@ -51,12 +51,12 @@ impl Report {
         }
         let g = cx.g;
         self.line(&format!(
-            " crashsim {} — {} ({}), {} rank(s), {} thread(s) per rank",
+            " crashsim {} — {} ({}), {} rank(s), {}",
             env!("CARGO_PKG_VERSION"),
             g.name,
             g.title,
             cx.world.size(),
-            rayon::current_num_threads()
+            crate::parallel::threads_per_rank::describe()
         ));
         self.line(&format!(
             " units: {} {} {}   end time {:e}   /DT scale {}",
