@@ -99,6 +99,8 @@ enum Command {
         #[arg(long, value_parser = clap::value_parser!(u32).range(1..=4096))]
         threads: Option<u32>,
     },
+    /// Print the keywords crashsim reads and what it does with each (Markdown, as in the README)
+    Keywords,
     /// Print what a run file DIR/NAME.h5 (or a restart file) holds
     Info {
         /// The HDF5 file written by `crashsim run`
@@ -264,6 +266,10 @@ fn main() -> ExitCode {
             state,
             view,
         } => plot(&file, &out, &what, state, &view),
+        Command::Keywords => {
+            print!("{}", crashsim::deck::supported::markdown());
+            ExitCode::SUCCESS
+        }
         Command::Run {
             deck,
             out,

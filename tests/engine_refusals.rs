@@ -143,3 +143,42 @@ fn skip_unsupported_runs_and_says_what_it_skipped() {
         "{info}"
     );
 }
+
+/// /RANDOM with a noise moves the nodes, which the engine does not do: an
+/// unsupported keyword that stops `run` by name; a zero noise is read.
+#[test]
+fn a_random_noise_on_the_nodes_is_refused_by_name() {
+    let src = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("decks/free_plate");
+    let starter = std::fs::read_to_string(src.join("free_plate_0000.rad")).unwrap();
+    let (head, tail) = starter.split_once("/END").unwrap();
+    for (noise, refused) in [("0.01", true), ("0", false)] {
+        let dir = scratch(&format!("random-{noise}"));
+        let extra = format!("/RANDOM\n{noise:>20}{:>20}\n", 7);
+        std::fs::write(
+            dir.join("free_plate_0000.rad"),
+            format!("{head}{extra}/END{tail}"),
+        )
+        .unwrap();
+        std::fs::copy(
+            src.join("free_plate_0001.rad"),
+            dir.join("free_plate_0001.rad"),
+        )
+        .unwrap();
+        let out = crashsim(&[
+            "check",
+            dir.join("free_plate_0000.rad").to_str().unwrap(),
+            "--json",
+        ]);
+        let said = String::from_utf8_lossy(&out.stdout);
+        assert_eq!(said.contains("Random-Noise = 0.01"), refused, "{said}");
+        if refused {
+            run_refused(
+                &dir.join("free_plate_0000.rad"),
+                &[
+                    "free_plate_0000.rad:144: /RANDOM",
+                    "not computed by the engine",
+                ],
+            );
+        }
+    }
+}

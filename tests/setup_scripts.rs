@@ -16,8 +16,15 @@ fn packages(args: &[&str]) -> Vec<String> {
         .arg("--list")
         .output()
         .expect("bash runs");
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-    String::from_utf8_lossy(&out.stdout).lines().map(str::to_string).collect()
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8_lossy(&out.stdout)
+        .lines()
+        .map(str::to_string)
+        .collect()
 }
 
 /// Lines of a script that run ci/setup (comments left out).
@@ -43,15 +50,35 @@ fn the_demo_installs_no_package_that_only_the_tests_use() {
         "xauth",
         "libgl1-mesa-dri",
     ] {
-        assert!(!solver.iter().any(|s| s == p), "ci/setup installs {p} for the demo");
-        assert!(all.iter().any(|s| s == p), "ci/setup --tests leaves {p} out");
+        assert!(
+            !solver.iter().any(|s| s == p),
+            "ci/setup installs {p} for the demo"
+        );
+        assert!(
+            all.iter().any(|s| s == p),
+            "ci/setup --tests leaves {p} out"
+        );
     }
-    for p in ["libopenmpi-dev", "libhdf5-openmpi-dev", "libmetis-dev", "fonts-dejavu-core"] {
+    for p in [
+        "libopenmpi-dev",
+        "libhdf5-openmpi-dev",
+        "libmetis-dev",
+        "fonts-dejavu-core",
+    ] {
         assert!(solver.iter().any(|s| s == p), "the solver needs {p}");
     }
-    assert!(solver.iter().all(|p| all.contains(p)), "the tests need the solver too");
+    assert!(
+        solver.iter().all(|p| all.contains(p)),
+        "the tests need the solver too"
+    );
     let demo = setup_calls("ci/demo");
-    assert!(!demo.is_empty() && demo.iter().all(|l| !l.contains("--tests")), "{demo:?}");
+    assert!(
+        !demo.is_empty() && demo.iter().all(|l| !l.contains("--tests")),
+        "{demo:?}"
+    );
     let test = setup_calls("ci/test");
-    assert!(!test.is_empty() && test.iter().all(|l| l.contains("--tests")), "{test:?}");
+    assert!(
+        !test.is_empty() && test.iter().all(|l| l.contains("--tests")),
+        "{test:?}"
+    );
 }

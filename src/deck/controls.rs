@@ -170,6 +170,18 @@ pub(super) fn parse_control(block: &Block, deck: &mut Deck) -> InputResult<bool>
             let c = cards.next("the card with Random-Noise, Seed")?;
             let amp = c.real(1, "Random-Noise", 0.0)?;
             let seed = c.int_opt(21, 20, "Seed")?.unwrap_or(0);
+            if amp != 0.0 {
+                // A noise on the node coordinates changes the solution and
+                // the engine does not add it: an unsupported keyword, by name.
+                deck.warnings.push(crate::model::Warning {
+                    loc: c.loc(),
+                    keyword: block.header.clone(),
+                    message: format!(
+                        "Random-Noise = {amp}: a random perturbation of the node coordinates is not computed"
+                    ),
+                });
+                return Ok(false);
+            }
             ctl.random = Some((amp, seed));
         }
         "SHFRA" => {

@@ -21,7 +21,7 @@ fn header_int(block: &Block, idx: usize, name: &str) -> InputResult<Option<i64>>
 }
 
 /// Returns false for a keyword the engine reader does not know.
-pub(super) fn parse_engine_block(block: &Block, eng: &mut Engine) -> InputResult<bool> {
+pub(crate) fn parse_engine_block(block: &Block, eng: &mut Engine) -> InputResult<bool> {
     let mut cards = Cards::new(block);
     let p1 = block.parts.get(1).map(String::as_str).unwrap_or("");
     match block.parts[0].as_str() {

@@ -12,7 +12,7 @@ use crate::model::Warning;
 /// Keywords read by no parser that change nothing in the solution, with why.
 /// (Output requests, memory sizing and the like; never anything that moves,
 /// loads, constrains or defines a material, property or element.)
-const SAFE_TO_SKIP: &[(&str, &str)] = &[
+pub const SAFE_TO_SKIP: &[(&str, &str)] = &[
     (
         "MEMORY",
         "memory sizing of the reference solver's starter; it changes nothing in the solution",

@@ -13,7 +13,7 @@ pub mod source;
 
 mod conditions;
 mod controls;
-mod engine;
+pub(crate) mod engine;
 mod id_index;
 mod interfaces;
 pub mod keyword_policy;
@@ -23,6 +23,7 @@ mod mesh;
 mod parts;
 mod resolve_sets;
 mod sets;
+pub mod supported;
 mod to_model;
 
 pub use controls::*;
@@ -221,7 +222,7 @@ fn parse_starter_block(block: &Block, deck: &mut Deck, opts: ReadOptions) -> Inp
 }
 
 /// Dispatches one starter block to its family's parser; false when none reads it.
-fn read_starter_block(block: &Block, deck: &mut Deck) -> InputResult<bool> {
+pub(crate) fn read_starter_block(block: &Block, deck: &mut Deck) -> InputResult<bool> {
     let p: Vec<&str> = block.parts.iter().map(String::as_str).collect();
     Ok(match p[0] {
         "BEGIN" => controls::parse_begin(block, deck).map(|_| true)?,

@@ -1,0 +1,204 @@
+//! What the Radioss reader and the engine do with each keyword: the table
+//! `crashsim keywords` prints and the README's "What is supported" section
+//! holds (generated; `tests/readme.rs` fails when the README is stale).
+//!
+//! Every row names headers that its test hands to the reader's dispatcher:
+//! each must be read by a family parser (never sent to the keyword policy
+//! as unsupported), so the table cannot claim what the reader does not
+//! read. Rows the engine refuses say so; the refusal itself is by name at
+//! `run` (`solver::run::prepare`, `element::blocks::registry`).
+
+use super::keyword_policy::SAFE_TO_SKIP;
+
+/// Which file of a deck a keyword belongs to.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum File {
+    Starter,
+    Engine,
+}
+
+/// One row: the keyword as a user writes it, headers that exercise it, and
+/// what crashsim does with it.
+pub struct Supported {
+    pub file: File,
+    pub keyword: &'static str,
+    /// Sample headers (as in a deck, ids included) the reader must read.
+    pub headers: &'static [&'static str],
+    pub what: &'static str,
+}
+
+const fn s(
+    keyword: &'static str,
+    headers: &'static [&'static str],
+    what: &'static str,
+) -> Supported {
+    Supported {
+        file: File::Starter,
+        keyword,
+        headers,
+        what,
+    }
+}
+
+const fn e(
+    keyword: &'static str,
+    headers: &'static [&'static str],
+    what: &'static str,
+) -> Supported {
+    Supported {
+        file: File::Engine,
+        keyword,
+        headers,
+        what,
+    }
+}
+
+/// The table, starter keywords first, in the order of a deck.
+pub const SUPPORTED: &[Supported] = &[
+    s("/BEGIN", &["/BEGIN"], "run name, input version, input and working units"),
+    s("/TITLE", &["/TITLE"], "the model's title"),
+    s("/NODE", &["/NODE"], "nodes (a node numbered 0 is left out with a warning)"),
+    s("/SHELL", &["/SHELL/1"], "4-node shells: Belytschko-Tsay, Ishell 1-4 (QBAT 12 and QEPH 24 refused)"),
+    s("/SH3N", &["/SH3N/1"], "3-node shells: the C0 triangle, Ish3n 1 and 2 (DKT18, DKT_S3 refused)"),
+    s("/BRICK", &["/BRICK/1"], "8-node bricks, Isolid 1 and 2 (others refused)"),
+    s("/TETRA4", &["/TETRA4/1"], "4-node tetrahedra (Itetra4 0, 1000)"),
+    s("/SPRING", &["/SPRING/1"], "springs of /PROP/TYPE4"),
+    s("/TRUSS, /BEAM", &["/TRUSS/1", "/BEAM/1"], "read; `run` refuses them (not computed yet)"),
+    s("/PART", &["/PART/1"], "parts: property, material, subset"),
+    s("/MAT/LAW1 (/MAT/ELAST)", &["/MAT/LAW1/1", "/MAT/ELAST/1"], "linear elastic"),
+    s(
+        "/MAT/LAW2 (/MAT/PLAS_JOHNS)",
+        &["/MAT/LAW2/1", "/MAT/PLAS_JOHNS/1"],
+        "Johnson-Cook elastic-plastic, strain-rate term (ICC, Fsmooth, Fcut), EPS_p_max and SIG_max0",
+    ),
+    s("/PROP/TYPE1 (/PROP/SHELL)", &["/PROP/TYPE1/1", "/PROP/SHELL/1"], "shell sections: Ishell, Ismstr, Ithick, Iplas, N, thickness, hourglass coefficients"),
+    s("/PROP/TYPE14 (/PROP/SOLID)", &["/PROP/TYPE14/1", "/PROP/SOLID/1"], "solid sections: Isolid, hourglass coefficients, dtmin"),
+    s("/PROP/TYPE4 (/PROP/SPRING)", &["/PROP/TYPE4/1", "/PROP/SPRING/1"], "axial springs: mass, stiffness, damping, function"),
+    s("/PROP/TYPE13 (/PROP/SPR_BEAM)", &["/PROP/TYPE13/1", "/PROP/SPR_BEAM/1"], "read; `run` refuses it (not computed yet)"),
+    s("/DEF_SHELL, /DEF_SOLID", &["/DEF_SHELL", "/DEF_SOLID"], "defaults for shell and solid sections"),
+    s("/FUNCT", &["/FUNCT/1"], "tabulated functions"),
+    s("/ADMAS", &["/ADMAS/0/1", "/ADMAS/1/1"], "added mass, types 0 (per node) and 1 (shared)"),
+    s("/GRNOD/NODE, /GRNOD/GRNOD, /GRNOD/PART", &["/GRNOD/NODE/1", "/GRNOD/GRNOD/1", "/GRNOD/PART/1"], "node groups"),
+    s("/GRSHEL/SHEL", &["/GRSHEL/SHEL/1"], "shell groups"),
+    s(
+        "/SURF/PART (/EXT, /ALL), /SURF/GRSHEL, /SURF/SEG",
+        &["/SURF/PART/1", "/SURF/PART/EXT/1", "/SURF/GRSHEL/1", "/SURF/SEG/1"],
+        "surfaces",
+    ),
+    s("/SUBSET", &["/SUBSET/1"], "subsets of parts"),
+    s("/BCS", &["/BCS/1"], "boundary conditions (a skew system refused)"),
+    s("/IMPVEL, /IMPDISP", &["/IMPVEL/1", "/IMPDISP/1"], "imposed velocities and displacements (skew, sensor, frame, cylindrical and rotations refused)"),
+    s("/INIVEL/TRA, /INIVEL/ROT", &["/INIVEL/TRA/1", "/INIVEL/ROT/1"], "initial velocities"),
+    s("/CLOAD, /GRAV", &["/CLOAD/1", "/GRAV/1"], "concentrated loads and gravity (skew and sensor refused)"),
+    s("/RWALL/PLANE", &["/RWALL/PLANE/1"], "rigid walls: fixed, moving with their node, or free with their own mass; friction"),
+    s("/RBODY", &["/RBODY/1"], "rigid bodies (sensor, skew, IKREM and surface refused)"),
+    s("/SECT", &["/SECT/1"], "read; its forces are not written yet (an output request: it changes nothing in the solution)"),
+    s("/INTER/TYPE2", &["/INTER/TYPE2/1"], "tied interfaces, Spotflag 5 (other Spotflags, Level, Idel2, rupture refused by field)"),
+    s("/INTER/TYPE3, /INTER/TYPE5", &["/INTER/TYPE3/1", "/INTER/TYPE5/1"], "surface-to-surface and node-to-surface contact"),
+    s("/INTER/TYPE7", &["/INTER/TYPE7/1"], "general contact: every card of the reference (Istf, Igap, Inacti, friction, VISs, Idel, IBC)"),
+    s("/INTER/TYPE11", &["/INTER/TYPE11/1"], "read; `run` refuses it (not computed yet)"),
+    s("/TH/*", &["/TH/NODE/1", "/TH/PART/1"], "time-history requests: the run file's /th tables (nodes, parts, interfaces, rigid walls, global energies)"),
+    s("/ANIM/*", &["/ANIM/VECT/DISP"], "animation requests: states at /ANIM/DT in the run file"),
+    s("/ANALY, /SPMD, /IOFLAG, /SHFRA/V4, /SHFRA/V5", &["/ANALY", "/SPMD", "/IOFLAG", "/SHFRA/V4"], "read; they change nothing in the solution (N2D3D other than 0 refused)"),
+    s("/RANDOM", &["/RANDOM"], "Random-Noise 0 only: a noise that would move the nodes is an unsupported keyword"),
+    e("/RUN", &["/RUN/NAME/1"], "end time"),
+    e("/DT", &["/DT", "/DT/NODA/CST"], "time step scale and minimum; /DT/... controls"),
+    e("/PRINT", &["/PRINT/-100/55"], "listing period"),
+    e("/ANIM/DT, /ANIM/*", &["/ANIM/DT", "/ANIM/ELEM/VONM"], "state period of the run file"),
+    e("/TFILE", &["/TFILE/4"], "time-history period (0: every cycle)"),
+    e("/RFILE", &["/RFILE/1", "/RFILE/OFF"], "restart file period"),
+    e("/STOP", &["/STOP"], "Emax energy-error stop, NTH/NANIM checks"),
+    e("/PARITH, /MON, /VERS, /PROC, /TITLE", &["/PARITH/ON", "/MON/ON", "/VERS/2019", "/PROC/1", "/TITLE"], "read; results are the same on any number of ranks and threads anyway"),
+];
+
+/// The table as Markdown, with the keywords skipped because they change
+/// nothing in the solution (the keyword policy's list) at the end.
+pub fn markdown() -> String {
+    let mut out =
+        String::from("| File | Keyword | What crashsim does with it |\n| --- | --- | --- |\n");
+    for r in SUPPORTED {
+        let file = match r.file {
+            File::Starter => "starter",
+            File::Engine => "engine",
+        };
+        out += &format!("| {file} | {} | {} |\n", r.keyword, r.what);
+    }
+    for (k, why) in SAFE_TO_SKIP {
+        out += &format!("| any | /{k} | skipped with a warning: {why} |\n");
+    }
+    out += "\nEvery other keyword is unsupported: `check` lists it, `run` stops on it by name \
+            (exit 2) unless `--skip-unsupported`.\n";
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::deck::source::Block;
+    use crate::model::Loc;
+
+    fn block(header: &str) -> Block {
+        Block {
+            header: header.to_string(),
+            parts: header
+                .trim_start_matches('/')
+                .split('/')
+                .map(|p| p.trim().to_uppercase())
+                .collect(),
+            loc: Loc {
+                file: "table".into(),
+                line: 1,
+            },
+            lines: Vec::new(),
+        }
+    }
+
+    /// Every header of the table is read by a family parser: with no cards
+    /// it may fail for a missing card, but never as a keyword (or variant)
+    /// nobody reads.
+    #[test]
+    fn every_keyword_in_the_table_is_read() {
+        for r in SUPPORTED {
+            for h in r.headers {
+                let b = block(h);
+                let read = match r.file {
+                    File::Starter => crate::deck::read_starter_block(&b, &mut Default::default()),
+                    File::Engine => {
+                        crate::deck::engine::parse_engine_block(&b, &mut Default::default())
+                    }
+                };
+                match read {
+                    Ok(true) => {}
+                    Ok(false) => panic!("{h}: the table lists it, the reader does not read it"),
+                    Err(e) => assert!(
+                        !e.variant_not_read,
+                        "{h}: a variant the reader does not read"
+                    ),
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn keywords_nobody_reads_are_not_in_the_table() {
+        for h in [
+            "/MAT/LAW36/1",
+            "/INTER/TYPE19/1",
+            "/PROP/TYPE8/1",
+            "/RWALL/CYL/1",
+        ] {
+            assert!(
+                !matches!(
+                    crate::deck::read_starter_block(&block(h), &mut Default::default()),
+                    Ok(true)
+                ),
+                "{h} is read: add it to the table"
+            );
+        }
+        let md = markdown();
+        assert!(
+            md.contains("| starter | /INTER/TYPE7 |") && md.contains("| any | /MEMORY |"),
+            "{md}"
+        );
+    }
+}
