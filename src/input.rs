@@ -144,3 +144,9 @@ mod tests {
         assert_eq!(first.nodes.x, moved.nodes.x);
     }
 }
+
+/// What the readers do with each keyword, as a Markdown table (`crashsim
+/// keywords`, the README's "What is supported").
+pub fn supported_keywords() -> String {
+    crate::deck::supported::markdown()
+}

@@ -267,7 +267,7 @@ fn main() -> ExitCode {
             view,
         } => plot(&file, &out, &what, state, &view),
         Command::Keywords => {
-            print!("{}", crashsim::deck::supported::markdown());
+            print!("{}", crashsim::input::supported_keywords());
             ExitCode::SUCCESS
         }
         Command::Run {
