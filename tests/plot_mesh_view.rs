@@ -37,6 +37,19 @@ fn run_demo_tube() -> PathBuf {
         &[],
     );
     ok(&out, "the demo tube for 1 ms on 2 ranks");
+    // Threads per rank default to the cores over the ranks on this node
+    // (2 ranks on 2 cores: 1 each), and the header says so.
+    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let listing = std::fs::read_to_string(dir.join("demo_tube.out")).unwrap();
+    let want = format!(
+        "2 rank(s), {} thread(s) per rank ({cores} core(s) / 2 rank(s) on this node",
+        (cores / 2).max(1)
+    );
+    assert!(
+        listing.contains(&want),
+        "header lacks '{want}':\n{}",
+        &listing[..300.min(listing.len())]
+    );
     dir
 }
 
