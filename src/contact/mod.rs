@@ -13,6 +13,7 @@
 //! node's contact force summed in a fixed global order. It never names an
 //! interface type.
 
+pub mod edge_geometry;
 pub mod exchange;
 pub mod friction;
 pub mod gap;
