@@ -96,7 +96,7 @@ pub const SUPPORTED: &[Supported] = &[
     s("/INTER/TYPE2", &["/INTER/TYPE2/1"], "tied interfaces, Spotflag 5 (other Spotflags, Level, Idel2, rupture refused by field)"),
     s("/INTER/TYPE3, /INTER/TYPE5", &["/INTER/TYPE3/1", "/INTER/TYPE5/1"], "surface-to-surface and node-to-surface contact"),
     s("/INTER/TYPE7", &["/INTER/TYPE7/1"], "general contact: every card of the reference (Istf, Igap, Inacti, friction, VISs, Idel, IBC)"),
-    s("/INTER/TYPE11", &["/INTER/TYPE11/1"], "read; `run` refuses it (not computed yet)"),
+    s("/INTER/TYPE11", &["/INTER/TYPE11/1"], "the card is read (its /LINE sides are not: /LINE is unsupported); `run` refuses it (not computed yet)"),
     s("/TH/*", &["/TH/NODE/1", "/TH/PART/1"], "time-history requests: the run file's /th tables (nodes, parts, interfaces, rigid walls, global energies)"),
     s("/ANIM/*", &["/ANIM/VECT/DISP"], "animation requests: states at /ANIM/DT in the run file"),
     s("/ANALY, /SPMD, /IOFLAG, /SHFRA/V4, /SHFRA/V5", &["/ANALY", "/SPMD", "/IOFLAG", "/SHFRA/V4"], "read; they change nothing in the solution (N2D3D other than 0 refused)"),
