@@ -7,6 +7,19 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 /// Opens an HDF5 file written by crashsim, with a clear error otherwise.
+/// A state group's `time` and `cycle` attributes (NaN and 0 when absent).
+pub fn state_time_cycle(g: &hdf5::Group) -> (f64, u64) {
+    let t = g
+        .attr("time")
+        .and_then(|a| a.read_scalar::<f64>())
+        .unwrap_or(f64::NAN);
+    let c = g
+        .attr("cycle")
+        .and_then(|a| a.read_scalar::<u64>())
+        .unwrap_or(0);
+    (t, c)
+}
+
 pub fn open(path: &Path) -> Result<(File, String), String> {
     if !path.is_file() {
         return Err(format!(
@@ -130,14 +143,7 @@ pub fn report(path: &Path) -> Result<String, String> {
         names.sort();
         for n in names {
             if let Ok(st) = g.group(&n) {
-                let t = st
-                    .attr("time")
-                    .and_then(|a| a.read_scalar::<f64>())
-                    .unwrap_or(f64::NAN);
-                let c = st
-                    .attr("cycle")
-                    .and_then(|a| a.read_scalar::<u64>())
-                    .unwrap_or(0);
+                let (t, c) = state_time_cycle(&st);
                 states.push((n, t, c));
             }
         }

@@ -126,14 +126,7 @@ pub fn render(
             (a.min(fc.value), b.max(fc.value))
         });
     let canvas = rasterise(&x, &faces, view, lo, hi);
-    let time = g
-        .attr("time")
-        .and_then(|a| a.read_scalar::<f64>())
-        .unwrap_or(f64::NAN);
-    let cycle = g
-        .attr("cycle")
-        .and_then(|a| a.read_scalar::<u64>())
-        .unwrap_or(0);
+    let (time, cycle) = super::info::state_time_cycle(&g);
     let (um, ul, ut) = (
         attr(&f, "units_mass"),
         attr(&f, "units_length"),
@@ -153,7 +146,7 @@ pub fn render(
         lo,
         hi,
         faces: faces.len(),
-        mesh_pixels: canvas.covered.iter().filter(|&&c| c).count(),
+        mesh_pixels: canvas.covered_count(),
         bar: BAR,
         size: SIZE,
     };
@@ -352,7 +345,7 @@ fn draw(out: &Path, c: &Canvas, title: &str, mv: &MeshView) -> Result<(), String
     let root = BitMapBackend::new(out, mv.size).into_drawing_area();
     root.fill(&WHITE).map_err(|x| e(&x))?;
     for (i, px) in c.rgb.iter().enumerate() {
-        if c.covered[i] {
+        if c.is_covered(i) {
             let (x, y) = ((i % c.width) as i32, (i / c.width) as i32);
             root.draw_pixel((x, y), &RGBColor(px[0], px[1], px[2]))
                 .map_err(|x| e(&x))?;

@@ -106,6 +106,9 @@ fn global(shape: &[usize], v: &[f64], name: &str) -> Vec<f64> {
 
 /// Draws `what` from `input` into `out` (PNG).
 pub fn plot(input: &Path, out: &Path, what: &What) -> Result<(), String> {
+    if let What::Mesh(field) = what {
+        return super::mesh_view::render(input, out, *field, None, Default::default()).map(|_| ());
+    }
     let (f, fmt) = open(input)?;
     if fmt != super::runfile::FORMAT {
         return Err(format!(
@@ -130,10 +133,8 @@ pub fn plot(input: &Path, out: &Path, what: &What) -> Result<(), String> {
     let deck = attr(&f, "deck");
     let mut panels = Vec::new();
     match what {
-        What::Mesh(field) => {
-            return super::mesh_view::render(input, out, *field, None, Default::default())
-                .map(|_| ());
-        }
+        // Drawn before the time histories are read (`plot` opens with it).
+        What::Mesh(_) => unreachable!("the mesh view returns at the top of plot"),
         What::Energies => {
             let (gs, gv) = read(&f, "global", input)?;
             let mut curves = Vec::new();

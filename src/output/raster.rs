@@ -8,9 +8,8 @@ pub struct Canvas {
     pub width: usize,
     pub height: usize,
     pub rgb: Vec<[u8; 3]>,
+    /// Depth of the nearest polygon at each pixel; −∞ where none covers it.
     depth: Vec<f64>,
-    /// Which pixels a polygon covered.
-    pub covered: Vec<bool>,
 }
 
 /// A vertex on the screen: pixel x (right), pixel y (down), depth (nearer = larger).
@@ -23,8 +22,19 @@ impl Canvas {
             height,
             rgb: vec![background; width * height],
             depth: vec![f64::NEG_INFINITY; width * height],
-            covered: vec![false; width * height],
         }
+    }
+
+    /// Whether a polygon covers pixel `i` (row-major).
+    pub fn is_covered(&self, i: usize) -> bool {
+        self.depth[i] > f64::NEG_INFINITY
+    }
+
+    /// How many pixels polygons cover.
+    pub fn covered_count(&self) -> usize {
+        (0..self.depth.len())
+            .filter(|&i| self.is_covered(i))
+            .count()
     }
 
     /// Fills the convex polygon `p` with `fill`; pixels within `edge_px` of
@@ -46,24 +56,8 @@ impl Canvas {
         if area.abs() < 1e-12 {
             return;
         }
-        let xs = t.map(|q| q[0]);
-        let ys = t.map(|q| q[1]);
-        let x0 = (xs
-            .iter()
-            .cloned()
-            .fold(f64::INFINITY, f64::min)
-            .floor()
-            .max(0.0)) as usize;
-        let y0 = (ys
-            .iter()
-            .cloned()
-            .fold(f64::INFINITY, f64::min)
-            .floor()
-            .max(0.0)) as usize;
-        let x1 = xs.iter().cloned().fold(f64::NEG_INFINITY, f64::max).ceil();
-        let y1 = ys.iter().cloned().fold(f64::NEG_INFINITY, f64::max).ceil();
-        let x1 = (x1.max(0.0) as usize).min(self.width);
-        let y1 = (y1.max(0.0) as usize).min(self.height);
+        let (x0, x1) = pixel_span(t.map(|q| q[0]), self.width);
+        let (y0, y1) = pixel_span(t.map(|q| q[1]), self.height);
         for y in y0..y1 {
             for x in x0..x1 {
                 let c = [x as f64 + 0.5, y as f64 + 0.5, 0.0];
@@ -80,7 +74,6 @@ impl Canvas {
                     continue;
                 }
                 self.depth[i] = z;
-                self.covered[i] = true;
                 self.rgb[i] = match edge {
                     Some((colour, px)) if distance_to_outline(c, outline) < px => colour,
                     _ => fill,
@@ -88,6 +81,23 @@ impl Canvas {
             }
         }
     }
+}
+
+/// The pixels [first, end) that the coordinates `v` span, within 0..n.
+fn pixel_span(v: [f64; 3], n: usize) -> (usize, usize) {
+    let lo = v
+        .iter()
+        .cloned()
+        .fold(f64::INFINITY, f64::min)
+        .floor()
+        .max(0.0);
+    let hi = v
+        .iter()
+        .cloned()
+        .fold(f64::NEG_INFINITY, f64::max)
+        .ceil()
+        .max(0.0);
+    ((lo as usize).min(n), (hi as usize).min(n))
 }
 
 /// Twice the signed area of the triangle a, b, c (x and y only).
@@ -162,7 +172,7 @@ mod tests {
         assert_eq!(c.rgb[3 * 20 + 3], [0, 0, 255]);
         assert_eq!(c.rgb[18 * 20 + 18], [255; 3]);
         // 10 x 10 pixels each, 7 x 7 of them shared: 151 covered.
-        assert_eq!(c.covered.iter().filter(|&&v| v).count(), 151);
+        assert_eq!(c.covered_count(), 151);
     }
 
     #[test]
