@@ -13,6 +13,9 @@ pub struct InterfaceSummary {
     pub title: String,
     pub secondary_nodes: usize,
     pub main_segments: usize,
+    /// Edge-to-edge interfaces (TYPE11): the edges of each side.
+    pub secondary_edges: usize,
+    pub main_edges: usize,
 }
 
 #[derive(Serialize)]
@@ -111,6 +114,8 @@ impl Summary {
                     title: i.card.title.clone(),
                     secondary_nodes: i.secondary_nodes.len(),
                     main_segments: i.main_segments.len(),
+                    secondary_edges: i.secondary_edges.len(),
+                    main_edges: i.main_edges.len(),
                 })
                 .collect(),
             rigid_walls: model.rigid_walls.len(),
@@ -188,10 +193,15 @@ impl Summary {
             let _ = writeln!(s, "{k:<18}{v:>10}");
         }
         for i in &self.interfaces {
+            let (sec, n_sec, main, n_main) = if i.secondary_edges + i.main_edges > 0 {
+                ("edges", i.secondary_edges, "edges   ", i.main_edges)
+            } else {
+                ("nodes", i.secondary_nodes, "segments", i.main_segments)
+            };
             let _ = writeln!(
                 s,
-                "  interface {:>8}  TYPE{:<3} secondary nodes {:>8}  main segments {:>8}  {}",
-                i.id, i.type_, i.secondary_nodes, i.main_segments, i.title
+                "  interface {:>8}  TYPE{:<3} secondary {sec} {n_sec:>8}  main {main} {n_main:>8}  {}",
+                i.id, i.type_, i.title
             );
         }
         let _ = writeln!(

@@ -1211,3 +1211,108 @@ fn deck_is_a_directory() {
         },
     );
 }
+
+// ---------------------------------------------------------------------------
+// /LINE (edge-to-edge sides)
+// ---------------------------------------------------------------------------
+
+/// /INTER/TYPE11 with line_IDs and line_IDm (format 2020+, other fields default).
+fn inter_type11(id: u64, line_s: u64, line_m: u64) -> Vec<String> {
+    vec![
+        format!("/INTER/TYPE11/{id}"),
+        s("edges"),
+        i10(line_s) + &i10(line_m) + &i10(0) + &i10(0) + &i10(0) + &i10(0) + &i10(0) + &i10(0),
+        r20(0) + &r20(0) + &r20(0) + &r20(0) + &i10(0) + &i10(0),
+        r20(0) + &r20(0) + &r20(0) + &r20(0) + &r20(0),
+        i10("000") + &" ".repeat(20) + &i10(0) + &r20(0) + &r20(0) + &r20(0),
+        i10(0),
+    ]
+}
+
+#[test]
+fn line_segment_with_unknown_node() {
+    let c = Case::new("line-node");
+    let mut d = base_deck();
+    let at = before_end(&mut d, &[s("/LINE/SEG/3"), s("edge"), i10(1) + &i10(1) + &i10(99)]);
+    assert_error(
+        &c.check(&d),
+        Expect {
+            file: DECK,
+            line: at + 2,
+            keyword: "/LINE/SEG/3",
+            field: "node_ID2",
+            phrases: &["node 99 is not defined"],
+        },
+    );
+}
+
+#[test]
+fn line_segment_with_one_node_twice() {
+    let c = Case::new("line-same");
+    let mut d = base_deck();
+    let at = before_end(&mut d, &[s("/LINE/SEG/3"), s("edge"), i10(1) + &i10(2) + &i10(2)]);
+    assert_error(
+        &c.check(&d),
+        Expect {
+            file: DECK,
+            line: at + 2,
+            keyword: "/LINE/SEG/3",
+            field: "node_ID2",
+            phrases: &["two nodes are the same", "expected two different nodes"],
+        },
+    );
+}
+
+#[test]
+fn line_of_an_unknown_surface() {
+    let c = Case::new("line-surf");
+    let mut d = base_deck();
+    let at = before_end(&mut d, &[s("/LINE/EDGE/3"), s("edges"), i10(8)]);
+    assert_error(
+        &c.check(&d),
+        Expect {
+            file: DECK,
+            line: at + 2,
+            keyword: "/LINE/EDGE/3",
+            field: "surf_ID",
+            phrases: &["surface 8 is not defined"],
+        },
+    );
+}
+
+#[test]
+fn edge_interface_naming_an_unknown_line() {
+    let c = Case::new("t11-line");
+    let mut d = base_deck();
+    let mut extra = vec![s("/LINE/SEG/3"), s("edge"), i10(1) + &i10(1) + &i10(2)];
+    extra.extend(inter_type11(4, 3, 7));
+    let at = before_end(&mut d, &extra);
+    assert_error(
+        &c.check(&d),
+        Expect {
+            file: DECK,
+            line: at + 5,
+            keyword: "/INTER/TYPE11/4",
+            field: "line_IDm",
+            phrases: &["line 7 is not defined"],
+        },
+    );
+}
+
+#[test]
+fn surface_edges_resolve_to_the_free_edges() {
+    // /LINE/EDGE of the one-shell surface: its four edges; /LINE/SURF too.
+    let c = Case::new("line-ok");
+    let mut d = base_deck();
+    let mut extra = surf_part(5, 1);
+    extra.extend([s("/LINE/EDGE/3"), s("edges"), i10(5)]);
+    extra.extend(inter_type11(4, 3, 0));
+    before_end(&mut d, &extra);
+    let p = c.write_lines(DECK, &d);
+    let out = c.run(&["check", p.to_str().unwrap(), "--json"]);
+    let v: serde_json::Value = serde_json::from_str(&assert_ok(&out)).expect("JSON");
+    let i = &v["interfaces"][0];
+    assert_eq!((i["type"].as_u64(), i["secondary_edges"].as_u64(), i["main_edges"].as_u64()), (Some(11), Some(4), Some(4)), "{v}");
+    let text = assert_ok(&c.check(&d));
+    assert!(text.contains("TYPE11  secondary edges        4  main edges           4"), "{text}");
+}

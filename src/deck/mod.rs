@@ -17,6 +17,7 @@ pub(crate) mod engine;
 mod id_index;
 mod interfaces;
 pub mod keyword_policy;
+mod lines;
 mod list_end;
 mod materials;
 mod mesh;
@@ -27,6 +28,7 @@ pub mod supported;
 mod to_model;
 
 pub use controls::*;
+pub use lines::{LineCard, LineDef, LineSegmentCard};
 pub use mesh::*;
 pub use parts::*;
 pub use sets::*;
@@ -63,6 +65,7 @@ pub struct Deck {
     pub node_groups: Vec<NodeGroupCard>,
     pub shell_groups: Vec<ShellGroupCard>,
     pub surfaces: Vec<SurfaceCard>,
+    pub lines: Vec<LineCard>,
     pub subsets: Vec<SubsetCard>,
     pub bcs: Vec<BoundarySpec>,
     pub imposed_velocities: Vec<ImposedMotionSpec>,
@@ -246,6 +249,7 @@ pub(crate) fn read_starter_block(block: &Block, deck: &mut Deck) -> InputResult<
         "FUNCT" => parts::parse_function(block, deck).map(|_| true)?,
         "ADMAS" => parts::parse_admas(block, deck)?,
         "GRNOD" | "GRSHEL" | "SURF" | "SUBSET" => sets::parse_set(block, deck)?,
+        "LINE" => lines::parse_line(block, deck)?,
         "BCS" | "IMPVEL" | "IMPDISP" | "INIVEL" | "CLOAD" | "GRAV" | "RWALL" | "RBODY" | "SECT" => {
             conditions::parse_condition(block, deck)?
         }

@@ -218,7 +218,7 @@ pub(super) fn parse_set(block: &Block, deck: &mut Deck) -> InputResult<bool> {
 /// Ten 10-column ids a line until the block ends (or a line of text ends
 /// the list: [`list_end`]); blank and 0 fields are skipped. Also gives where
 /// each line's items start.
-fn id_list(
+pub(super) fn id_list(
     cards: &mut Cards,
     name: &str,
     warnings: &mut Vec<Warning>,

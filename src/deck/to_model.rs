@@ -107,7 +107,8 @@ fn build(deck: &Deck) -> Result<Model, InputError> {
     let conditions = read_conditions(deck, &refs, nodes.len())?;
     refs.check_spring_functions(&properties)?;
     let rigid_walls = read_rigid_walls(deck, &refs, &nodes, &node_index, &mut warnings)?;
-    let interfaces = read_interfaces(deck, &refs, &surfaces, &mut warnings)?;
+    let lines = super::lines::resolve_lines(&deck.lines, &surfaces, &refs.surf_index, &ctx)?;
+    let interfaces = read_interfaces(deck, &refs, &surfaces, &lines)?;
 
     // Masses.
     let mut model = Model {
@@ -491,18 +492,31 @@ fn read_rigid_walls(
     Ok(rigid_walls)
 }
 
-/// Contact interfaces with their sides resolved to nodes and segments.
+/// One side of an interface resolved: its nodes, segments and edges.
+#[derive(Clone, Default)]
+struct ResolvedSide {
+    nodes: Vec<u32>,
+    segments: Vec<[u32; 4]>,
+    edges: Vec<[u32; 2]>,
+}
+
+/// Contact interfaces with their sides resolved to nodes, segments and edges.
 fn read_interfaces(
     deck: &Deck,
     refs: &Refs,
     surfaces: &[Surface],
-    warnings: &mut Vec<Warning>,
+    lines: &[Line],
 ) -> Result<Vec<Interface>, InputError> {
     let mut interfaces = Vec::new();
     IdIndex::build(
         "interface",
         deck.interfaces.iter().map(|i| (i.id, i.loc.clone())),
         "/INTER",
+    )?;
+    let line_index = IdIndex::build(
+        "line",
+        deck.lines.iter().map(|l| (l.id, l.loc.clone())),
+        "/LINE",
     )?;
     for c in &deck.interfaces {
         let kw = format!("/INTER/TYPE{}/{}", c.type_number(), c.id);
@@ -511,35 +525,66 @@ fn read_interfaces(
         } else {
             &c.ids_loc
         };
-        let side =
-            |s: Side, field: &str| -> Result<Option<(Vec<u32>, Vec<[u32; 4]>)>, InputError> {
-                Ok(match s {
-                    Side::NodeGroup(g) => Some((refs.group(g, loc, &kw, field)?, Vec::new())),
-                    Side::Surface(sid) => {
-                        let s = &surfaces[refs.surf_index.resolve(sid, loc, &kw, field)? as usize];
-                        Some((s.nodes(), s.segments.clone()))
-                    }
-                    Side::Line(_) | Side::SameAsOther | Side::None => None,
-                })
-            };
+        let side = |s: Side, field: &str| -> Result<Option<ResolvedSide>, InputError> {
+            Ok(match s {
+                Side::NodeGroup(g) => Some(ResolvedSide {
+                    nodes: refs.group(g, loc, &kw, field)?,
+                    ..Default::default()
+                }),
+                Side::Surface(sid) => {
+                    let s = &surfaces[refs.surf_index.resolve(sid, loc, &kw, field)? as usize];
+                    Some(ResolvedSide {
+                        nodes: s.nodes(),
+                        segments: s.segments.clone(),
+                        ..Default::default()
+                    })
+                }
+                Side::Line(lid) => {
+                    let l = &lines[line_index.resolve(lid, loc, &kw, field)? as usize];
+                    let mut nodes: Vec<u32> = l.edges.iter().flatten().copied().collect();
+                    nodes.sort_unstable();
+                    nodes.dedup();
+                    Some(ResolvedSide {
+                        nodes,
+                        edges: l.edges.clone(),
+                        ..Default::default()
+                    })
+                }
+                Side::SameAsOther | Side::None => None,
+            })
+        };
         let (sec_field, main_field) = c.side_fields();
         let main = side(c.main_side(), main_field)?;
         let sec = side(c.secondary_side(), sec_field)?;
-        if matches!(c.main_side(), Side::Line(_)) || matches!(c.secondary_side(), Side::Line(_)) {
-            warnings.push(Warning { loc: c.loc.clone(), keyword: kw.clone(), message: "edge lines (/LINE) are not read yet: this interface has no edges and will not act".into() });
-        }
-        let (main_nodes, main_segments) = main.clone().unwrap_or_default();
-        let (secondary_nodes, secondary_segments) = match (sec, c.secondary_side()) {
-            (Some(s), _) => s,
-            // Self-contact: the secondary nodes are the main surface's nodes.
-            (None, Side::SameAsOther) => (main_nodes.clone(), Vec::new()),
-            (None, _) => (Vec::new(), Vec::new()),
+        // Self-contact: the side given twice (TYPE7 grnd_IDs = 0: the main
+        // surface's nodes; TYPE11 line_IDm = 0: the secondary line's edges).
+        let (main, sec) = match (main, sec) {
+            (Some(m), Some(s)) => (m, s),
+            (Some(m), None) if c.secondary_side() == Side::SameAsOther => {
+                let s = ResolvedSide {
+                    nodes: m.nodes.clone(),
+                    edges: m.edges.clone(),
+                    ..Default::default()
+                };
+                (m, s)
+            }
+            (None, Some(s)) if c.main_side() == Side::SameAsOther => {
+                let m = ResolvedSide {
+                    nodes: s.nodes.clone(),
+                    edges: s.edges.clone(),
+                    ..Default::default()
+                };
+                (m, s)
+            }
+            (m, s) => (m.unwrap_or_default(), s.unwrap_or_default()),
         };
         interfaces.push(Interface {
             card: c.clone(),
-            secondary_nodes,
-            main_segments,
-            secondary_segments,
+            secondary_nodes: sec.nodes,
+            main_segments: main.segments,
+            secondary_segments: sec.segments,
+            secondary_edges: sec.edges,
+            main_edges: main.edges,
         });
     }
     Ok(interfaces)

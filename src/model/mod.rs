@@ -144,6 +144,14 @@ impl Surface {
     }
 }
 
+/// A /LINE: 2-node segments (edges) of dense node indices, each once.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct Line {
+    pub id: Id,
+    pub title: String,
+    pub edges: Vec<[u32; 2]>,
+}
+
 /// An interface with its sides resolved.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct Interface {
@@ -154,6 +162,12 @@ pub struct Interface {
     pub main_segments: Vec<[u32; 4]>,
     /// Secondary segments, for interfaces that have them (TYPE3).
     pub secondary_segments: Vec<[u32; 4]>,
+    /// Secondary and main edges, for edge-to-edge interfaces (TYPE11); in
+    /// self-contact both sides hold the same edges.
+    #[serde(default)]
+    pub secondary_edges: Vec<[u32; 2]>,
+    #[serde(default)]
+    pub main_edges: Vec<[u32; 2]>,
 }
 
 /// A condition that applies to a node group.
