@@ -218,7 +218,7 @@ fn main() -> ExitCode {
                             "id": i.card.id,
                             "type": i.card.type_number(),
                             "secondary_ranks": ranks_of(&mut i.secondary_nodes.iter().copied()),
-                            "main_ranks": ranks_of(&mut i.main_segments.iter().flatten().copied()),
+                            "main_ranks": ranks_of(&mut i.main_segments.iter().flatten().chain(i.main_edges.iter().flatten()).copied()),
                         })
                     })
                     .collect();

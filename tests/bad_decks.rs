@@ -1233,7 +1233,10 @@ fn inter_type11(id: u64, line_s: u64, line_m: u64) -> Vec<String> {
 fn line_segment_with_unknown_node() {
     let c = Case::new("line-node");
     let mut d = base_deck();
-    let at = before_end(&mut d, &[s("/LINE/SEG/3"), s("edge"), i10(1) + &i10(1) + &i10(99)]);
+    let at = before_end(
+        &mut d,
+        &[s("/LINE/SEG/3"), s("edge"), i10(1) + &i10(1) + &i10(99)],
+    );
     assert_error(
         &c.check(&d),
         Expect {
@@ -1250,7 +1253,10 @@ fn line_segment_with_unknown_node() {
 fn line_segment_with_one_node_twice() {
     let c = Case::new("line-same");
     let mut d = base_deck();
-    let at = before_end(&mut d, &[s("/LINE/SEG/3"), s("edge"), i10(1) + &i10(2) + &i10(2)]);
+    let at = before_end(
+        &mut d,
+        &[s("/LINE/SEG/3"), s("edge"), i10(1) + &i10(2) + &i10(2)],
+    );
     assert_error(
         &c.check(&d),
         Expect {
@@ -1312,7 +1318,18 @@ fn surface_edges_resolve_to_the_free_edges() {
     let out = c.run(&["check", p.to_str().unwrap(), "--json"]);
     let v: serde_json::Value = serde_json::from_str(&assert_ok(&out)).expect("JSON");
     let i = &v["interfaces"][0];
-    assert_eq!((i["type"].as_u64(), i["secondary_edges"].as_u64(), i["main_edges"].as_u64()), (Some(11), Some(4), Some(4)), "{v}");
+    assert_eq!(
+        (
+            i["type"].as_u64(),
+            i["secondary_edges"].as_u64(),
+            i["main_edges"].as_u64()
+        ),
+        (Some(11), Some(4), Some(4)),
+        "{v}"
+    );
     let text = assert_ok(&c.check(&d));
-    assert!(text.contains("TYPE11  secondary edges        4  main edges           4"), "{text}");
+    assert!(
+        text.contains("TYPE11  secondary edges        4  main edges           4"),
+        "{text}"
+    );
 }

@@ -14,6 +14,8 @@
 //! interface type.
 
 pub mod edge_geometry;
+mod edge_setup;
+mod element_data;
 pub mod exchange;
 pub mod friction;
 pub mod gap;
@@ -214,8 +216,16 @@ impl ContactSystem {
                 it.passes
                     .iter()
                     .map(|p| {
-                        let mine: Vec<u32> = (0..p.sec.len() as u32)
-                            .filter(|&k| owned[p.sec[k as usize] as usize])
+                        // A node's pairs are computed by its owner; an
+                        // edge's by the lowest rank holding both its nodes.
+                        let mine: Vec<u32> = (0..p.n_sec() as u32)
+                            .filter(|&k| {
+                                if p.is_edge_pass() {
+                                    setup.owner_of(&p.sec_side(k as usize)) == Some(sd.rank)
+                                } else {
+                                    owned[p.sec[k as usize] as usize]
+                                }
+                            })
                             .collect();
                         let nodes = mine
                             .iter()
@@ -231,7 +241,7 @@ impl ContactSystem {
                                     .map(|m| p.elements_of_segment(m).len() as u32)
                                     .collect(),
                                 sec_alive: if rule.nodes {
-                                    (0..p.sec.len())
+                                    (0..p.n_sec())
                                         .map(|k| p.elements_of_secondary(k).len() as u32)
                                         .collect()
                                 } else {
@@ -239,7 +249,7 @@ impl ContactSystem {
                                 },
                                 seg_off: vec![false; p.segs.len()],
                                 sec_off: if rule.nodes {
-                                    vec![false; p.sec.len()]
+                                    vec![false; p.n_sec()]
                                 } else {
                                     Vec::new()
                                 },
@@ -276,7 +286,7 @@ impl ContactSystem {
                             .push((ii as u32, pi as u32, m as u32, false));
                     }
                 }
-                for k in 0..p.sec.len() {
+                for k in 0..p.n_sec() {
                     for &e in p.elements_of_secondary(k) {
                         idel_index
                             .entry(e)
@@ -329,6 +339,21 @@ impl ContactSystem {
     /// Ghost nodes this rank currently receives.
     pub fn ghost_count(&self) -> usize {
         self.plan.ghost_count()
+    }
+
+    /// A secondary entity for messages: "node ID" or "edge ID1-ID2".
+    fn secondary_name(node_ids: &[u64], p: &setup::Pass, k: usize) -> String {
+        let side = p.sec_side(k);
+        let ids: Vec<String> = side
+            .nodes()
+            .iter()
+            .map(|&c| node_ids[c as usize].to_string())
+            .collect();
+        if p.is_edge_pass() {
+            format!("edge {}", ids.join("-"))
+        } else {
+            format!("node {}", ids[0])
+        }
     }
 
     /// Secondary nodes this rank owns (all passes, all interfaces).
@@ -578,7 +603,9 @@ impl ContactSystem {
                 for (p, r) in it.passes.iter().zip(runs) {
                     diag = diag.max(p.max_diag);
                     for &k in &r.mine {
-                        b.include(self.cx[p.sec[k as usize] as usize]);
+                        for &c in p.sec_side(k as usize).nodes() {
+                            b.include(self.cx[c as usize]);
+                        }
                     }
                 }
                 if b.is_empty() {
@@ -626,43 +653,11 @@ impl ContactSystem {
                         _ => Aabb::EMPTY,
                     })
                     .collect();
-                let pts: Vec<V3> = run
-                    .mine
-                    .iter()
-                    .map(|&k| self.cx[p.sec[k as usize] as usize])
-                    .collect();
-                let method = search::choose(&boxes);
-                let raw = search::candidates(&pts, it.max_gap + it.margin, &boxes, method);
-                // Exclusions.
-                let x0 = &self.setup.x0;
-                let mut cand = Candidates {
-                    ptr: vec![0],
-                    segs: Vec::with_capacity(raw.segs.len()),
+                let cand = if p.is_edge_pass() {
+                    self.edge_candidates(it, p, run, &boxes)
+                } else {
+                    self.node_candidates(it, p, run, &boxes)
                 };
-                for (j, &k) in run.mine.iter().enumerate() {
-                    let s = p.sec[k as usize];
-                    if run.sec_off(k) {
-                        // Removed by Idel: no candidates.
-                        cand.ptr.push(cand.segs.len());
-                        continue;
-                    }
-                    for &m in &raw.segs[raw.ptr[j]..raw.ptr[j + 1]] {
-                        let seg = &p.segs[m as usize];
-                        if seg.contains(&s) {
-                            continue;
-                        }
-                        if it.ty().removes_initially_close() {
-                            let g = it.gap.gapmin;
-                            if seg.iter().any(|&c| {
-                                geo::norm(geo::sub(x0[c as usize], x0[s as usize])) < 2.0 * g
-                            }) {
-                                continue;
-                            }
-                        }
-                        cand.segs.push(m);
-                    }
-                    cand.ptr.push(cand.segs.len());
-                }
                 // Keep the memory of pairs that survive.
                 let old = &run.cand;
                 let mut state = Vec::with_capacity(cand.segs.len());
@@ -687,10 +682,122 @@ impl ContactSystem {
         }
     }
 
+    /// The candidates of a node pass: the main segments within gap +
+    /// margin of each owned secondary node, less those it is on (and, with
+    /// Irem_gap = 2, those with a node initially closer than 2·Gap).
+    fn node_candidates(
+        &self,
+        it: &setup::Interface,
+        p: &setup::Pass,
+        run: &PassRun,
+        boxes: &[Aabb],
+    ) -> Candidates {
+        let pts: Vec<V3> = run
+            .mine
+            .iter()
+            .map(|&k| self.cx[p.sec[k as usize] as usize])
+            .collect();
+        let method = search::choose(boxes);
+        let raw = search::candidates(&pts, it.max_gap + it.margin, boxes, method);
+        // Exclusions.
+        let x0 = &self.setup.x0;
+        let mut cand = Candidates {
+            ptr: vec![0],
+            segs: Vec::with_capacity(raw.segs.len()),
+        };
+        for (j, &k) in run.mine.iter().enumerate() {
+            let s = p.sec[k as usize];
+            if run.sec_off(k) {
+                // Removed by Idel: no candidates.
+                cand.ptr.push(cand.segs.len());
+                continue;
+            }
+            for &m in &raw.segs[raw.ptr[j]..raw.ptr[j + 1]] {
+                let seg = &p.segs[m as usize];
+                if seg.contains(&s) {
+                    continue;
+                }
+                if it.ty().removes_initially_close() {
+                    let g = it.gap.gapmin;
+                    if seg
+                        .iter()
+                        .any(|&c| geo::norm(geo::sub(x0[c as usize], x0[s as usize])) < 2.0 * g)
+                    {
+                        continue;
+                    }
+                }
+                cand.segs.push(m);
+            }
+            cand.ptr.push(cand.segs.len());
+        }
+        cand
+    }
+
+    /// The candidates of an edge pass: the main edges within gap + margin of
+    /// each owned secondary edge (the distance between the edges' closest
+    /// points, §8.4.5.2), less those that share a node with it; in
+    /// self-contact one orientation of each pair (the one whose main edge's
+    /// first node has the larger id, as the reference engine keeps).
+    fn edge_candidates(
+        &self,
+        it: &setup::Interface,
+        p: &setup::Pass,
+        run: &PassRun,
+        boxes: &[Aabb],
+    ) -> Candidates {
+        let reach = it.max_gap + it.margin;
+        let ends = |k: u32| p.sec_edges[k as usize].map(|c| self.cx[c as usize]);
+        let mut half_len = 0.0f64;
+        let mids: Vec<V3> = run
+            .mine
+            .iter()
+            .map(|&k| {
+                let [a, b] = ends(k);
+                half_len = half_len.max(0.5 * geo::norm(geo::sub(b, a)));
+                geo::scale(geo::add(a, b), 0.5)
+            })
+            .collect();
+        // Midpoints within reach + half the longest edge hold every pair
+        // within reach; the exact distance then decides, so the lists do
+        // not depend on which rank holds the edge.
+        let raw = search::candidates(&mids, reach + half_len, boxes, search::choose(boxes));
+        let mut cand = Candidates {
+            ptr: vec![0],
+            segs: Vec::with_capacity(raw.segs.len()),
+        };
+        for (j, &k) in run.mine.iter().enumerate() {
+            let se = p.sec_edges[k as usize];
+            let [s1, s2] = ends(k);
+            if !run.sec_off(k) {
+                for &m in &raw.segs[raw.ptr[j]..raw.ptr[j + 1]] {
+                    let me = &p.segs[m as usize];
+                    if me[..2].iter().any(|c| se.contains(c)) {
+                        continue;
+                    }
+                    if p.self_contact
+                        && self.node_ids[me[0] as usize] < self.node_ids[se[0] as usize]
+                    {
+                        continue;
+                    }
+                    let (m1, m2) = (self.cx[me[0] as usize], self.cx[me[1] as usize]);
+                    if edge_geometry::closest_points_of_edges(s1, s2, m1, m2).dist <= reach {
+                        cand.segs.push(m);
+                    }
+                }
+            }
+            cand.ptr.push(cand.segs.len());
+        }
+        cand
+    }
+
     /// Inacti / Fpenmax at the first sort: decide for every pair found inside its gap.
     fn initial_penetrations(&mut self) {
         for (ii, it) in self.setup.interfaces.iter().enumerate() {
             for (pi, p) in it.passes.iter().enumerate() {
+                if p.is_edge_pass() {
+                    // TYPE11 computes Inacti 0 only (its type refuses the others).
+                    continue;
+                }
                 let run = &mut self.runs[ii][pi];
                 for j in 0..run.mine.len() {
                     let k = run.mine[j] as usize;

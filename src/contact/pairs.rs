@@ -39,6 +39,8 @@ struct PassView<'a> {
     mass: &'a [f64],
     /// Global node index of each cnode.
     nodes_g: &'a [u32],
+    /// Initial nodal mass of each cnode.
+    cnode_mass: &'a [f64],
     /// IBC bits to release on an impacting secondary node.
     ibc: u8,
     dt: f64,
@@ -86,6 +88,7 @@ impl ContactSystem {
                     local: &self.local,
                     mass,
                     nodes_g: &self.setup.nodes,
+                    cnode_mass: &self.setup.mass,
                     ibc,
                     dt,
                 };
@@ -217,8 +220,8 @@ fn node_pairs<T: InterfaceType>(
     out
 }
 
-/// Pair (secondary node k, segment m) through the type's kernel, its
-/// contributions added to `out`; false when the node leaves the interface.
+/// Pair (secondary entity k, main entity m) through the type's kernel, its
+/// contributions added to `out`; false when the entity leaves the interface.
 fn one_pair<T: InterfaceType>(
     ty: &T,
     v: &PassView,
@@ -238,15 +241,33 @@ fn one_pair<T: InterfaceType>(
     ) else {
         return true;
     };
-    let s = v.p.sec[k];
+    let sec = v.p.sec_side(k);
+    let s = sec.nodes[0];
+    let (xs_side, vs_side) = if sec.count == 1 {
+        ([v.cx[s as usize]; 4], [v.cv[s as usize]; 4])
+    } else {
+        // An edge's owner holds both its nodes.
+        let (Some(x), Some(u)) = (
+            seg_values(&sec.nodes, v.avail, v.cx),
+            seg_values(&sec.nodes, v.avail, v.cv),
+        ) else {
+            return true;
+        };
+        (x, u)
+    };
     let c = PairContext {
         it: v.it,
         p: v.p,
         k,
         m,
-        xs: v.cx[s as usize],
-        vs: v.cv[s as usize],
+        xs: xs_side[0],
+        vs: vs_side[0],
         ms: v.mass[v.local[s as usize] as usize],
+        xs_side: &xs_side,
+        vs_side: &vs_side,
+        sec,
+        main: Side::segment(seg),
+        cnode_mass: v.cnode_mass,
         xm: &xm,
         vm: &vm,
         dt: v.dt,
@@ -256,12 +277,14 @@ fn one_pair<T: InterfaceType>(
         PairOutcome::NodeOff => return false,
         PairOutcome::Force(f) => f,
     };
-    let nodes = PairNodes {
-        sec: Side::node(s),
-        main: Side::segment(seg),
+    let nodes = PairNodes { sec, main: c.main };
+    let key = SumKey::pair(v.ii, v.pi, v.p.sec_key(k, v.nodes_g), m);
+    let vs = if sec.count == 1 {
+        c.vs
+    } else {
+        geo::interpolate(&f.sec_shape, &vs_side)
     };
-    let key = SumKey::pair(v.ii, v.pi, v.nodes_g[s as usize], m);
-    let vrel = geo::sub(c.vs, geo::interpolate(&f.shape, &vm));
+    let vrel = geo::sub(vs, geo::interpolate(&f.shape, &vm));
     emit(out, key, &nodes, &f, v.ibc, vrel);
     if let Some(d) = ty.kinematic_step(&f) {
         if d < out.step.map_or(f64::INFINITY, |b| b.0) {

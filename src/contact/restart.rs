@@ -86,8 +86,8 @@ pub struct ContactExport {
     pub x_sort: Vec<f64>,
 }
 
-/// A secondary node's record key: the first word of its pairs' sum key,
-/// `interface << 40 | pass << 32 | global node`.
+/// A secondary entity's record key: the first word of its pairs' sum key,
+/// `interface << 40 | pass << 32 | global node` (an edge: its index in the pass).
 fn key(ii: usize, pi: usize, global: u32) -> u64 {
     SumKey::pair(ii, pi, global, 0).to_words()[0]
 }
@@ -109,7 +109,7 @@ impl ContactSystem {
                     it.type_number,
                     it.passes
                         .iter()
-                        .map(|p| (p.sec.len() as u64, p.segs.len() as u64))
+                        .map(|p| (p.n_sec() as u64, p.segs.len() as u64))
                         .collect(),
                 )
             })
@@ -174,7 +174,7 @@ impl ContactSystem {
                         state,
                         walk_pair: run.walk_pair[j],
                     };
-                    let g = self.setup.nodes[p.sec[k as usize] as usize];
+                    let g = p.sec_key(k as usize, &self.setup.nodes);
                     records.push((
                         key(ii, pi, g),
                         bincode::serialize(&rec).map_err(|e| e.to_string())?,
@@ -267,17 +267,17 @@ impl ContactSystem {
                 let mut nodes = Vec::with_capacity(run.mine.len());
                 let mut walk_pair = Vec::with_capacity(run.mine.len());
                 for &k in &run.mine {
-                    let g = self.setup.nodes[p.sec[k as usize] as usize];
-                    let id = self.node_ids[p.sec[k as usize] as usize];
+                    let g = p.sec_key(k as usize, &self.setup.nodes);
+                    let id = ContactSystem::secondary_name(&self.node_ids, p, k as usize);
                     let rec = by_key.get(&key(ii, pi, g)).ok_or_else(|| {
                         format!(
-                            "no contact state for secondary node {id} of /INTER/TYPE{}/{}: expected a restart file of this deck",
+                            "no contact state for secondary {id} of /INTER/TYPE{}/{}: expected a restart file of this deck",
                             it.type_number, it.id
                         )
                     })?;
                     let rec: SecRecord = bincode::deserialize(rec).map_err(|e| {
                         bad(&format!(
-                            "secondary node {id} of /INTER/TYPE{}/{}: {e}",
+                            "secondary {id} of /INTER/TYPE{}/{}: {e}",
                             it.type_number, it.id
                         ))
                     })?;
@@ -290,7 +290,7 @@ impl ContactSystem {
                         || !rec.node.gap0.iter().all(|e| seg_ok(e.0))
                     {
                         return Err(bad(&format!(
-                            "secondary node {id} of /INTER/TYPE{}/{}: segments out of range",
+                            "secondary {id} of /INTER/TYPE{}/{}: segments out of range",
                             it.type_number, it.id
                         )));
                     }

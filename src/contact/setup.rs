@@ -12,16 +12,14 @@ use super::interfaces::{
 };
 use super::stiffness;
 use crate::model::{geometry as mgeo, Model};
-use crate::model::{ElementKind, InterfaceKind, MaterialSpec};
+use crate::model::{ElementKind, InterfaceKind};
 use std::collections::HashMap;
+
+use super::element_data::{bulk, element_volume, node_elements};
 
 pub use super::interfaces::layout::{
     closest_segment, ContactSetup, IdelRule, Interface, Pass, NONE,
 };
-
-fn bulk(m: &MaterialSpec) -> f64 {
-    m.e / (3.0 * (1.0 - 2.0 * m.nu))
-}
 
 /// What lies under a face: (kind index, element index), shells first.
 struct FaceIndex {
@@ -73,25 +71,6 @@ fn face_elements(m: &Model) -> HashMap<[u32; 4], Vec<(u8, u32)>> {
     map
 }
 
-/// Every element (any kind) attached to each of `nodes` (global node indices).
-fn node_elements(m: &Model, nodes: &[u32]) -> HashMap<u32, Vec<(u8, u32)>> {
-    let mut out: HashMap<u32, Vec<(u8, u32)>> = nodes.iter().map(|&n| (n, Vec::new())).collect();
-    for (ki, set) in m.elements.iter().enumerate() {
-        for e in 0..set.len() {
-            let ns = set.nodes_of(e);
-            for (i, q) in ns.iter().enumerate() {
-                if ns[..i].contains(q) {
-                    continue;
-                }
-                if let Some(v) = out.get_mut(q) {
-                    v.push((ki as u8, e as u32));
-                }
-            }
-        }
-    }
-    out
-}
-
 impl FaceIndex {
     fn build(m: &Model) -> FaceIndex {
         let mut map = HashMap::new();
@@ -114,17 +93,6 @@ impl FaceIndex {
             }
         }
         FaceIndex { map }
-    }
-}
-
-fn element_volume(m: &Model, ki: usize, e: usize) -> f64 {
-    let set = &m.elements[ki];
-    let n = set.nodes_of(e);
-    let x = |i: usize| m.nodes.x[n[i] as usize];
-    match set.kind {
-        ElementKind::Brick8 => mgeo::hexa_volume([x(0), x(1), x(2), x(3), x(4), x(5), x(6), x(7)]),
-        ElementKind::Tetra4 => mgeo::tetra_volume([x(0), x(1), x(2), x(3)]).abs(),
-        _ => 0.0,
     }
 }
 
@@ -254,6 +222,8 @@ struct Sizes {
     n_edges: usize,
     gs_max: f64,
     gm_max: f64,
+    /// Edge-to-edge passes: the default Gapmin of their edges (0 otherwise).
+    edge_gapmin: f64,
 }
 
 /// Builds the contact set-up; `holders[g]` lists the ranks holding global node g.
@@ -281,6 +251,8 @@ pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<ContactSetup, String> {
         all.extend(i.secondary_nodes.iter().copied());
         all.extend(i.main_segments.iter().flatten().copied());
         all.extend(i.secondary_segments.iter().flatten().copied());
+        all.extend(i.secondary_edges.iter().flatten().copied());
+        all.extend(i.main_edges.iter().flatten().copied());
     }
     all.sort_unstable();
     all.dedup();
@@ -300,12 +272,14 @@ pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<ContactSetup, String> {
         hs.extend_from_slice(&holders[g as usize]);
         holders_ptr.push(hs.len() as u32);
     }
+    let mass = all.iter().map(|&g| m.nodal_mass[g as usize]).collect();
     Ok(ContactSetup {
         interfaces,
         nodes: all,
         x0,
         holders_ptr,
         holders: hs,
+        mass,
     })
 }
 
@@ -332,12 +306,26 @@ fn build_interface(
         n_edges: 0,
         gs_max: 0.0,
         gm_max: 0.0,
+        edge_gapmin: 0.0,
     };
     let mut passes = Vec::new();
     for sides in ty.passes(i) {
-        passes.push(build_pass(
-            m, surfaces, ty, &common, &sides, &mut sizes, &kw,
-        )?);
+        passes.push(
+            if sides.sec_edges.is_empty() && sides.main_edges.is_empty() {
+                build_pass(m, surfaces, ty, &common, &sides, &mut sizes, &kw)?
+            } else {
+                let cnode = |g: u32| surfaces.cn(g);
+                let (pass, e) =
+                    super::edge_setup::build_edge_pass(m, &cnode, ty.igap(), &sides, &kw)?;
+                sizes.l_sum += e.l_sum;
+                sizes.n_edges += e.n_edges;
+                sizes.l_min = sizes.l_min.min(e.l_min);
+                sizes.gs_max = sizes.gs_max.max(e.gs_max);
+                sizes.gm_max = sizes.gm_max.max(e.gm_max);
+                sizes.edge_gapmin = e.gapmin;
+                pass
+            },
+        );
     }
     let l_min = if sizes.l_min.is_finite() {
         sizes.l_min
@@ -356,6 +344,7 @@ fn build_interface(
             thick_sum: sizes.thick_sum,
             thick_min: sizes.thick_min,
             l_min,
+            edge_gapmin: sizes.edge_gapmin,
         },
     );
     let max_gap = gap_rule.max_gap(sizes.gs_max, sizes.gm_max);
@@ -468,6 +457,8 @@ fn build_pass(
         seg_area,
         seg_elem,
         sec: sec_c,
+        sec_edges: Vec::new(),
+        self_contact: false,
         sec_k,
         sec_gap,
         sec_lmin,

@@ -107,11 +107,7 @@ pub fn resolve_lines(
     surf_index: &IdIndex,
     ctx: &SetContext,
 ) -> Result<Vec<Line>, InputError> {
-    IdIndex::build(
-        "line",
-        cards.iter().map(|c| (c.id, c.loc.clone())),
-        "/LINE",
-    )?;
+    IdIndex::build("line", cards.iter().map(|c| (c.id, c.loc.clone())), "/LINE")?;
     let mut out = Vec::with_capacity(cards.len());
     for c in cards {
         let kw = c.keyword();
@@ -161,7 +157,10 @@ fn explicit_edges(
                 s.loc.clone(),
                 kw,
                 "node_ID2",
-                format!("{}: the segment's two nodes are the same; expected two different nodes", s.nodes[1]),
+                format!(
+                    "{}: the segment's two nodes are the same; expected two different nodes",
+                    s.nodes[1]
+                ),
             ));
         }
         edges.push([a, b]);
@@ -211,13 +210,18 @@ pub fn segment_edges(segments: &[[u32; 4]], free_only: bool) -> Vec<[u32; 2]> {
     for e in &all {
         *count.entry(sorted(*e)).or_default() += 1;
     }
-    all.into_iter().filter(|e| count[&sorted(*e)] == 1).collect()
+    all.into_iter()
+        .filter(|e| count[&sorted(*e)] == 1)
+        .collect()
 }
 
 /// Each edge once (whichever direction), in the order of first appearance.
 fn unique_edges(edges: Vec<[u32; 2]>) -> Vec<[u32; 2]> {
     let mut seen = std::collections::HashSet::with_capacity(edges.len());
-    edges.into_iter().filter(|e| seen.insert(sorted(*e))).collect()
+    edges
+        .into_iter()
+        .filter(|e| seen.insert(sorted(*e)))
+        .collect()
 }
 
 fn sorted(e: [u32; 2]) -> [u32; 2] {

@@ -4,7 +4,7 @@
 //! against main segments, with their gaps, stiffnesses and neighbour tables),
 //! Idel rules, and the contact-node table.
 
-use super::{InterfaceType, TypeOptions};
+use super::{InterfaceType, Side, TypeOptions};
 use crate::contact::friction::FrictionLaw;
 use crate::contact::gap::GapRule;
 use crate::contact::geometry::{self as geo, V3};
@@ -12,10 +12,13 @@ use serde::{Deserialize, Serialize};
 
 pub const NONE: u32 = u32::MAX;
 
-/// One pass: secondary nodes against main segments.
+/// One pass: secondary nodes against main segments, or (edge-to-edge)
+/// secondary edges against main edges.
 #[derive(Clone, Debug, Default, Serialize, Deserialize)]
 pub struct Pass {
-    /// Main segments as cnodes (a triangle repeats its third node).
+    /// Main entities as cnodes: segments (a triangle repeats its third node)
+    /// or, in an edge-to-edge pass, edges (the second node repeated, see
+    /// `Side::segment`).
     pub segs: Vec<[u32; 4]>,
     /// Main segment stiffness (scale factor included, see `Interface::istf`).
     pub seg_k: Vec<f64>,
@@ -27,8 +30,17 @@ pub struct Pass {
     pub seg_area: Vec<f64>,
     /// The element under each main segment: (kind index, element index).
     pub seg_elem: Vec<(u8, u32)>,
-    /// Secondary nodes (cnodes, ascending).
+    /// Secondary nodes (cnodes, ascending); empty in an edge-to-edge pass.
     pub sec: Vec<u32>,
+    /// Edge-to-edge passes: the secondary edges as cnodes (then `sec_k`,
+    /// `sec_gap` and `sec_lmin` are indexed by edge).
+    #[serde(default)]
+    pub sec_edges: Vec<[u32; 2]>,
+    /// Both sides hold the same edges (self-contact): of the two
+    /// orientations of a pair only the one whose main edge's first node has
+    /// the larger node id is a candidate.
+    #[serde(default)]
+    pub self_contact: bool,
     /// Secondary node stiffness Ks (card eq. (6)/(7)), TYPE3 own-surface stiffness.
     pub sec_k: Vec<f64>,
     /// Secondary gap g_s (half the largest connected shell thickness) and smallest connected edge.
@@ -59,6 +71,36 @@ pub struct Pass {
 }
 
 impl Pass {
+    /// Number of secondary entities (nodes or edges).
+    pub fn n_sec(&self) -> usize {
+        if self.sec_edges.is_empty() {
+            self.sec.len()
+        } else {
+            self.sec_edges.len()
+        }
+    }
+    /// The pass pairs edges with edges.
+    pub fn is_edge_pass(&self) -> bool {
+        !self.sec_edges.is_empty()
+    }
+    /// Secondary entity k's nodes.
+    pub fn sec_side(&self, k: usize) -> Side {
+        if self.sec_edges.is_empty() {
+            Side::node(self.sec[k])
+        } else {
+            Side::edge(self.sec_edges[k])
+        }
+    }
+    /// Secondary entity k as its pairs' sum key and restart record name it:
+    /// a node's global node index, an edge's index in the pass (both the
+    /// same on every rank).
+    pub fn sec_key(&self, k: usize, nodes_g: &[u32]) -> u32 {
+        if self.sec_edges.is_empty() {
+            nodes_g[self.sec[k] as usize]
+        } else {
+            k as u32
+        }
+    }
     /// Segments around main cnode `c` (empty when `c` is on no segment).
     pub fn segments_around(&self, c: u32) -> &[u32] {
         match self.node_segs_key.binary_search(&c) {
@@ -174,6 +216,10 @@ pub struct ContactSetup {
     /// Ranks holding each cnode (CSR), ascending.
     pub holders_ptr: Vec<u32>,
     pub holders: Vec<u32>,
+    /// Initial nodal mass of each cnode (elements and /ADMAS), for the
+    /// dampers of edge pairs, whose main nodes may be ghosts.
+    #[serde(default)]
+    pub mass: Vec<f64>,
 }
 
 impl ContactSetup {
@@ -183,6 +229,16 @@ impl ContactSetup {
     pub fn holders_of(&self, c: u32) -> &[u32] {
         &self.holders
             [self.holders_ptr[c as usize] as usize..self.holders_ptr[c as usize + 1] as usize]
+    }
+    /// The rank that computes the pairs of a secondary side: the lowest rank
+    /// holding all its nodes (for a node, its owner). A side on one element
+    /// always has one: the element's rank holds all its nodes.
+    pub fn owner_of(&self, side: &Side) -> Option<u32> {
+        let (first, rest) = side.nodes().split_first()?;
+        self.holders_of(*first)
+            .iter()
+            .copied()
+            .find(|r| rest.iter().all(|&c| self.holders_of(c).contains(r)))
     }
     pub fn cnode_of(&self, global: u32) -> Option<u32> {
         self.nodes.binary_search(&global).ok().map(|i| i as u32)

@@ -10,11 +10,12 @@
 //! (the runtime, `contact/mod.rs` and `contact/pairs.rs`) dispatches through
 //! the trait and never names a type.
 //!
-//! Adding a type (say TYPE11): one file here implementing [`InterfaceType`]
-//! on the type's own options struct, and one line in `registry!`
-//! (`11 => type11::Type11`). The runtime lays out node-to-segment pairs
-//! today (`contact::pairs`, `setup::Pass`); the first type of another
-//! [`CandidateKind`] also teaches it that kind's sides once.
+//! Adding a type: one file here implementing [`InterfaceType`] on the
+//! type's own options struct, and one line in `registry!`
+//! (`11 => type11::Type11`). The runtime lays out node-to-segment pairs and
+//! edge-to-edge pairs (`contact::pairs`, `setup::Pass`, `contact::edge_setup`);
+//! the first type of another [`CandidateKind`] also teaches it that kind's
+//! sides once.
 //!
 //! Restart: a type's pair memory lives in the records `contact::restart`
 //! writes for every type (`NodeState`, the candidates' `PairState`, the walk
@@ -86,12 +87,25 @@ impl Side {
             count: 1,
         }
     }
-    /// A main segment (a triangle repeats its third node: 3 nodes).
-    pub fn segment(seg: &[u32; 4]) -> Side {
+    /// An edge (2 nodes; the second repeats itself).
+    pub fn edge(e: [u32; 2]) -> Side {
         Side {
-            nodes: *seg,
-            count: if seg[3] == seg[2] { 3 } else { 4 },
+            nodes: [e[0], e[1], e[1], e[1]],
+            count: 2,
         }
+    }
+    /// A main entity as `Pass::segs` stores it: a quadrilateral, a triangle
+    /// (its third node repeated: 3 nodes) or an edge (its second node
+    /// repeated: 2 nodes).
+    pub fn segment(seg: &[u32; 4]) -> Side {
+        let count = if seg[3] != seg[2] {
+            4
+        } else if seg[2] != seg[1] {
+            3
+        } else {
+            2
+        };
+        Side { nodes: *seg, count }
     }
     pub fn nodes(&self) -> &[u32] {
         &self.nodes[..self.count as usize]
@@ -183,28 +197,48 @@ pub struct SurfaceSizes {
     pub thick_min: f64,
     /// Smallest edge (0 when there is none).
     pub l_min: f64,
+    /// Edge-to-edge interfaces: the default Gapmin of their edges (0 otherwise).
+    pub edge_gapmin: f64,
 }
 
 /// One pass's sides on the model: secondary nodes (global, ascending), the
 /// segments whose element stiffness the secondary nodes take (TYPE3's own
-/// surface; `None`: from the nodes' elements), and the main segments.
+/// surface; `None`: from the nodes' elements), and the main segments; or,
+/// for an edge-to-edge pass, the secondary and main edges.
 pub struct PassSides<'a> {
     pub sec: Vec<u32>,
     pub own: Option<&'a [[u32; 4]]>,
     pub main: &'a [[u32; 4]],
+    /// Edge-to-edge passes (empty otherwise): global node indices.
+    pub sec_edges: &'a [[u32; 2]],
+    pub main_edges: &'a [[u32; 2]],
+    /// Both sides are the same edges (self-contact): each pair of edges is
+    /// computed once.
+    pub self_contact: bool,
 }
 
-/// One measured node–segment pair, as the kernel sees it.
+/// One measured pair, as the kernel sees it.
 pub struct PairContext<'a> {
     pub it: &'a Interface,
     pub p: &'a Pass,
-    /// Secondary node (index into `p.sec`) and main segment (index into `p.segs`).
+    /// Secondary entity (index into `p.sec` or `p.sec_edges`) and main
+    /// entity (index into `p.segs`).
     pub k: usize,
     pub m: u32,
+    /// The secondary side's first node: position, velocity, nodal mass.
     pub xs: V3,
     pub vs: V3,
-    /// Nodal mass of the secondary node.
     pub ms: f64,
+    /// Every node of the secondary side (a node repeats itself, an edge its
+    /// second node: see [`Side`]).
+    pub xs_side: &'a [V3; SIDE_NODES],
+    pub vs_side: &'a [V3; SIDE_NODES],
+    /// The pair's two sides as cnodes.
+    pub sec: Side,
+    pub main: Side,
+    /// Initial nodal mass of every contact node (the same on every rank,
+    /// for the dampers of pairs whose main nodes may be ghosts).
+    pub cnode_mass: &'a [f64],
     pub xm: &'a [V3; 4],
     pub vm: &'a [V3; 4],
     pub dt: f64,
@@ -252,7 +286,16 @@ pub trait InterfaceType: Sync {
             sec: i.secondary_nodes.clone(),
             own: None,
             main: &i.main_segments,
+            sec_edges: &[],
+            main_edges: &[],
+            self_contact: false,
         }]
+    }
+
+    /// Igap as the card gives it (0 when the type has no gap flag): the
+    /// edge set-up's default Gapmin depends on it.
+    fn igap(&self) -> i64 {
+        0
     }
 
     /// Its gap rule (constant, variable, default from the surface sizes).
@@ -395,6 +438,7 @@ registry! {
     3 => type3::Type3,
     5 => type5::Type5,
     7 => type7::Type7,
+    11 => type11::Type11,
 }
 
 #[cfg(test)]
@@ -438,11 +482,12 @@ mod tests {
 
     #[test]
     fn every_registered_number_resolves_to_its_type_and_candidate_kind() {
-        assert_eq!(TypeOptions::NUMBERS, &[3, 5, 7]);
+        assert_eq!(TypeOptions::NUMBERS, &[3, 5, 7, 11]);
         let expect = [
             (3, CandidateKind::NodeToSegment, CandidateSearch::Walk),
             (5, CandidateKind::NodeToSegment, CandidateSearch::Walk),
             (7, CandidateKind::NodeToSegment, CandidateSearch::Sort),
+            (11, CandidateKind::EdgeToEdge, CandidateSearch::Sort),
         ];
         for (n, kind, search) in expect {
             let t = TypeOptions::by_number(n).unwrap_or_else(|| panic!("TYPE{n} registered"));
@@ -463,10 +508,12 @@ mod tests {
             TypeOptions::by_number(7),
             Some(TypeOptions::Type7(_))
         ));
-        // TYPE2 is the tied interface (contact::tied), not a registered type;
-        // TYPE11 is read from the deck but not computed yet.
+        assert!(matches!(
+            TypeOptions::by_number(11),
+            Some(TypeOptions::Type11(_))
+        ));
+        // TYPE2 is the tied interface (contact::tied), not a registered type.
         assert!(TypeOptions::by_number(2).is_none());
-        assert!(TypeOptions::by_number(11).is_none());
     }
 
     #[test]
@@ -474,5 +521,7 @@ mod tests {
         assert_eq!(Side::node(9).nodes(), &[9]);
         assert_eq!(Side::segment(&[1, 2, 3, 3]).nodes(), &[1, 2, 3]);
         assert_eq!(Side::segment(&[1, 2, 3, 4]).nodes(), &[1, 2, 3, 4]);
+        assert_eq!(Side::segment(&[1, 2, 2, 2]).nodes(), &[1, 2]);
+        assert_eq!(Side::edge([5, 6]), Side::segment(&[5, 6, 6, 6]));
     }
 }

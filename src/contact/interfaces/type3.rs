@@ -73,11 +73,17 @@ impl InterfaceType for Type3 {
                 sec: nodes_of(&i.secondary_segments),
                 own: Some(&i.secondary_segments),
                 main: &i.main_segments,
+                sec_edges: &[],
+                main_edges: &[],
+                self_contact: false,
             },
             PassSides {
                 sec: nodes_of(&i.main_segments),
                 own: Some(&i.main_segments),
                 main: &i.secondary_segments,
+                sec_edges: &[],
+                main_edges: &[],
+                self_contact: false,
             },
         ]
     }

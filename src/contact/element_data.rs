@@ -1,0 +1,39 @@
+//! What contact set-up reads from the elements under its nodes, segments
+//! and edges: bulk moduli, element volumes, the elements around a node.
+
+use crate::model::{geometry as mgeo, ElementKind, MaterialSpec, Model};
+use std::collections::HashMap;
+
+pub(super) fn bulk(m: &MaterialSpec) -> f64 {
+    m.e / (3.0 * (1.0 - 2.0 * m.nu))
+}
+
+/// Every element (any kind) attached to each of `nodes` (global node indices).
+pub(super) fn node_elements(m: &Model, nodes: &[u32]) -> HashMap<u32, Vec<(u8, u32)>> {
+    let mut out: HashMap<u32, Vec<(u8, u32)>> = nodes.iter().map(|&n| (n, Vec::new())).collect();
+    for (ki, set) in m.elements.iter().enumerate() {
+        for e in 0..set.len() {
+            let ns = set.nodes_of(e);
+            for (i, q) in ns.iter().enumerate() {
+                if ns[..i].contains(q) {
+                    continue;
+                }
+                if let Some(v) = out.get_mut(q) {
+                    v.push((ki as u8, e as u32));
+                }
+            }
+        }
+    }
+    out
+}
+
+pub(super) fn element_volume(m: &Model, ki: usize, e: usize) -> f64 {
+    let set = &m.elements[ki];
+    let n = set.nodes_of(e);
+    let x = |i: usize| m.nodes.x[n[i] as usize];
+    match set.kind {
+        ElementKind::Brick8 => mgeo::hexa_volume([x(0), x(1), x(2), x(3), x(4), x(5), x(6), x(7)]),
+        ElementKind::Tetra4 => mgeo::tetra_volume([x(0), x(1), x(2), x(3)]).abs(),
+        _ => 0.0,
+    }
+}

@@ -1,0 +1,226 @@
+//! Edge-to-edge contact (/INTER/TYPE11) on the crossing-plates decks of
+//! decks/make_edge.py: two shell plates whose edges cross, no node of
+//! either ever near the other's surface.
+//!
+//! - TYPE11 stops the pushed plate where the edge pair's force balances the
+//!   load: its edge rests inside the sum of the two edges' gaps (half a
+//!   thickness each, Igap = 1) at the penetration p that solves
+//!   ½·K·g'·p/(g' − p) = load (g' = 0.9·g; K the two edges' stiffnesses
+//!   E·t in series), and the interface's normal force is the load;
+//! - self-contact on both plates' edges gives the same answer (each pair once);
+//! - node-to-surface contact (TYPE7) alone lets the edges pass through, the
+//!   case TYPE11 exists for (Theory Manual §8.4.2.1);
+//! - the final state is byte-identical on 1, 2 and 4 ranks, with partitions
+//!   that put the two edges of the crossing pair on different ranks, and on
+//!   1 and 2 threads; a restart on another rank count continues it exactly.
+
+mod common;
+#[path = "contact_common/mod.rs"]
+mod contact_common;
+use contact_common::*;
+
+const E: f64 = 210.0;
+const T: f64 = 1.0;
+const LOAD: f64 = 10.0;
+
+/// The pair stiffness (Istf 5: the edges' E·t in series, Stfac 1), the
+/// pair gap (Igap 1: the sum of the half thicknesses) and the law's gap.
+fn law() -> (f64, f64, f64) {
+    let k = (E * T) * (E * T) / (E * T + E * T);
+    let g = 0.5 * T + 0.5 * T;
+    (k, g, 0.9 * g)
+}
+
+fn edge_force(p: f64) -> f64 {
+    let (k, _, gl) = law();
+    0.5 * k * gl * p / (gl - p)
+}
+
+/// The crossing pair's secondary edge is A's bottom middle edge, nodes 2, 3.
+fn edge_height(r: &Run) -> f64 {
+    let s = r.final_state();
+    0.5 * (s[&2][2] + s[&3][2])
+}
+
+#[test]
+fn crossing_edges_stop_where_the_edge_force_balances_the_load() {
+    let r = run(
+        &deck("edge_cross"),
+        &scratch("edge_cross_1"),
+        &RunArgs::default(),
+    );
+    assert!(r.listing.normal_termination());
+    let (_, g, gl) = law();
+    // B's top edge is fixed at z = 0: A's edge rests at distance d = g − p.
+    let d = edge_height(&r);
+    let p = g - d;
+    assert!(p > 0.0 && p < gl, "the edge rests inside the gap: d = {d}");
+    // The penetration where the law balances the load: p = load·g'/(½K·g' + load).
+    let (k, _, _) = law();
+    let p_expect = LOAD * gl / (0.5 * k * gl + LOAD);
+    assert!(
+        (p - p_expect).abs() < 0.01 * p_expect,
+        "p = {p}, expected {p_expect}"
+    );
+    // The interface's force is the load, and the law's force at the measured p.
+    let f = r.listing.last(1).normal[2];
+    assert!((f - LOAD).abs() < 0.01 * LOAD, "normal force {f}");
+    assert!(
+        (f - edge_force(p)).abs() < 0.01 * f,
+        "{f} against {}",
+        edge_force(p)
+    );
+    assert_eq!(r.listing.last(1).pairs, 1);
+    // A comes to rest.
+    let s = r.final_state();
+    assert!(s[&2][5].abs() < 0.01, "vz {}", s[&2][5]);
+}
+
+#[test]
+fn edge_self_contact_finds_the_crossing_pair_once() {
+    let one = run(
+        &deck("edge_cross"),
+        &scratch("edge_cross_ref"),
+        &RunArgs::default(),
+    );
+    let own = run(
+        &deck("edge_cross_self"),
+        &scratch("edge_cross_self"),
+        &RunArgs::default(),
+    );
+    assert_eq!(own.listing.last(1).pairs, 1);
+    let f = own.listing.last(1).normal[2];
+    assert!((f - LOAD).abs() < 0.01 * LOAD, "normal force {f}");
+    assert_eq!(edge_height(&own), edge_height(&one));
+}
+
+#[test]
+fn node_to_surface_contact_alone_lets_the_edges_pass_through() {
+    let r = run(
+        &deck("edge_cross_t7"),
+        &scratch("edge_cross_t7"),
+        &RunArgs::default(),
+    );
+    assert!(r.listing.normal_termination());
+    assert!(
+        r.listing.of(1).iter().all(|l| l.pairs == 0),
+        "TYPE7 found a pair"
+    );
+    let d = edge_height(&r);
+    assert!(
+        d < -3.0,
+        "A's edge went through B (below B's bottom at z = -3): {d}"
+    );
+}
+
+/// Ranks of the crossing pair's two shells (A's middle shell 2 and B's
+/// middle shell 102, elements 1 and 4 in deck order) under `crashsim
+/// partition --np N`.
+fn pair_ranks(np: u32) -> (u64, u64) {
+    let d = deck("edge_cross");
+    let v = common::crashsim_json(&[
+        "partition",
+        d.to_str().unwrap(),
+        "--np",
+        &np.to_string(),
+        "--json",
+    ]);
+    let part = v["part"].as_array().expect("part");
+    (part[1].as_u64().unwrap(), part[4].as_u64().unwrap())
+}
+
+#[test]
+fn edge_contact_is_identical_on_1_2_4_ranks_and_1_2_threads_with_a_cut_pair() {
+    for np in [2, 4] {
+        let (a, b) = pair_ranks(np);
+        assert_ne!(
+            a, b,
+            "{np} ranks: the crossing edges must lie on different ranks"
+        );
+    }
+    let d = deck("edge_cross");
+    let one = run(&d, &scratch("edge_ranks_1"), &RunArgs::default());
+    let f = one.listing.last(1).normal[2];
+    assert!((f - LOAD).abs() < 0.01 * LOAD);
+    for np in [2, 4] {
+        let r = run(
+            &d,
+            &scratch(&format!("edge_ranks_{np}")),
+            &RunArgs {
+                ranks: np,
+                ..Default::default()
+            },
+        );
+        assert!(
+            r.final_state_bytes() == one.final_state_bytes(),
+            "{np} ranks differ from 1"
+        );
+    }
+    let dir = scratch("edge_threads_2");
+    let fs = dir.join("final_state.csv");
+    let out = common::run_env(
+        0,
+        &[
+            "run",
+            d.to_str().unwrap(),
+            "--out",
+            dir.to_str().unwrap(),
+            "--quiet",
+            "--threads",
+            "2",
+            "--final-state",
+            fs.to_str().unwrap(),
+        ],
+        &[],
+    );
+    ok(&out, "2 threads");
+    assert!(
+        std::fs::read(fs).unwrap() == one.final_state_bytes(),
+        "2 threads differ from 1"
+    );
+}
+
+#[test]
+fn an_edge_contact_run_restarted_on_another_rank_count_ends_identically() {
+    let d = deck("edge_cross");
+    let whole = run(&d, &scratch("edge_restart_whole"), &RunArgs::default());
+    // Stopped on 2 ranks mid-load (pairs active), restarted on 1.
+    let dir = scratch("edge_restart_stop");
+    let out = common::run_env(
+        2,
+        &[
+            "run",
+            d.to_str().unwrap(),
+            "--out",
+            dir.to_str().unwrap(),
+            "--quiet",
+            "--stop-after-cycle",
+            "1500",
+        ],
+        &[],
+    );
+    ok(&out, "run stopped at cycle 1500 on 2 ranks");
+    assert!(String::from_utf8_lossy(&out.stdout).contains("STOPPED AT CYCLE 1500"));
+    let rst = dir.join("edge_cross_rst.h5");
+    let fs = dir.join("final_state.csv");
+    let out = common::run_env(
+        0,
+        &[
+            "run",
+            d.to_str().unwrap(),
+            "--out",
+            dir.to_str().unwrap(),
+            "--quiet",
+            "--restart",
+            rst.to_str().unwrap(),
+            "--final-state",
+            fs.to_str().unwrap(),
+        ],
+        &[],
+    );
+    ok(&out, "restart on 1 rank");
+    assert!(
+        std::fs::read(fs).unwrap() == whole.final_state_bytes(),
+        "the restarted run differs"
+    );
+}
