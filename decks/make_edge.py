@@ -19,6 +19,9 @@ and then held, pushes A down; A's nodes move along z only.
 * edge_cross_self   the same with one self-contact TYPE11 on both plates'
                     free edges (line_IDm = 0).
 * edge_cross_t7     TYPE7 self-contact on both plates only: A passes through.
+* edge_cross_t19    TYPE19 between the two plates' surfaces (defaults): its
+                    two TYPE7s see nothing, its TYPE11 (all edges, constant
+                    gap = the default Gapmin = 1 mm) stops A as edge_cross does.
 """
 import os
 import sys
@@ -47,6 +50,23 @@ def inter11(iid, title, line_s, line_m, istf=0, igap=0, stfac=0.0, gapmin=0.0, v
             "#      IBC                        Inacti                VisS                VisF              Bumult",
             "000".rjust(10) + " " * 20 + i10(0) + r20(viss) + r20(0) + r20(0),
             "#" + " " * 89 + "  fric_ID", " " * 90 + i10(0)]
+
+
+def inter19(iid, title, surf_s, surf_m, iedge=0):
+    """/INTER/TYPE19 in the 2021 layout (src/deck/interfaces.rs read_type19), defaults."""
+    return [f"/INTER/TYPE19/{iid}", title,
+            "#  surf_IDs  surf_IDm      Istf      Ithe      Igap     Iedge      Ibag      Idel     Icurv",
+            i10(surf_s) + i10(surf_m) + i10(0) * 3 + i10(iedge) + i10(0) * 3,
+            "#          Fscalegap             Gap_max      Edge_scale_gap",
+            r20(0) * 3,
+            "#              Stmin               Stmax          %mesh_size               dtmin  Irem_gap   Irem_i2",
+            r20(0) * 4 + i10(0) * 2,
+            "#              Stfac                Fric              Gapmin              Tstart               Tstop",
+            r20(0) * 5,
+            "#      IBC                        Inacti                VisS                VisF              Bumult",
+            "000".rjust(10) + " " * 20 + i10(0) + r20(0) * 3,
+            "#    Ifric    Ifiltr               Xfreq     Iform   sens_ID                                fric_ID",
+            i10(0) * 2 + r20(0) + i10(0) * 2 + " " * 30 + i10(0)]
 
 
 def line(kind, lid, title, items):
@@ -98,7 +118,13 @@ def edge_cross_t7():
                 inter7(1, "node-to-surface self-contact", 0, 3, igap=1))
 
 
-MAKERS = dict(edge_cross=edge_cross, edge_cross_self=edge_cross_self, edge_cross_t7=edge_cross_t7)
+def edge_cross_t19():
+    return deck("edge_cross_t19", "TYPE19: node-to-surface both ways and edge-to-edge",
+                inter19(1, "general contact of the two plates", 1, 2))
+
+
+MAKERS = dict(edge_cross=edge_cross, edge_cross_self=edge_cross_self, edge_cross_t7=edge_cross_t7,
+              edge_cross_t19=edge_cross_t19)
 
 if __name__ == "__main__":
     out = sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(os.path.abspath(__file__))

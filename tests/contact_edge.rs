@@ -95,6 +95,39 @@ fn edge_self_contact_finds_the_crossing_pair_once() {
 }
 
 #[test]
+fn type19_is_type7_both_ways_and_type11_and_stops_the_edges_as_type11_does() {
+    let t11 = run(
+        &deck("edge_cross"),
+        &scratch("edge_cross_t11_ref"),
+        &RunArgs::default(),
+    );
+    let t19 = run(
+        &deck("edge_cross_t19"),
+        &scratch("edge_cross_t19"),
+        &RunArgs::default(),
+    );
+    // The card's id is the first TYPE7 (A's nodes on B); the second TYPE7
+    // (B's nodes on A) and the TYPE11 take the next ids.
+    let text = &t19.listing.text;
+    for (id, ty) in [(1, "TYPE7 "), (2, "TYPE7 "), (3, "TYPE11")] {
+        assert!(
+            text.contains(&format!("INTER        {id} {ty}")),
+            "interface {id} {ty}"
+        );
+    }
+    assert!(t19
+        .listing
+        .of(1)
+        .iter()
+        .chain(t19.listing.of(2).iter())
+        .all(|l| l.pairs == 0));
+    assert_eq!(t19.listing.last(3).pairs, 1);
+    // The default gap of the edge part (Igap 0: the default Gapmin, the mean
+    // thickness 1 mm) is the sum of the half thicknesses: the same run.
+    assert!(t19.final_state_bytes() == t11.final_state_bytes());
+}
+
+#[test]
 fn node_to_surface_contact_alone_lets_the_edges_pass_through() {
     let r = run(
         &deck("edge_cross_t7"),

@@ -9,6 +9,7 @@ use super::source::{Block, Line};
 use crate::model::{InputError, InputResult, Loc};
 
 /// Reads the cards of one block in order.
+#[derive(Clone)]
 pub struct Cards<'a> {
     pub block: &'a Block,
     pos: usize,

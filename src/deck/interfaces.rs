@@ -216,17 +216,41 @@ fn read_type5(cards: &mut Cards) -> InputResult<Type5> {
 // ---------------------------------------------------------------------------
 
 fn read_type7(cards: &mut Cards) -> InputResult<Type7> {
+    read_type7_card(cards, false)
+}
+
+/// The TYPE7 card, or (`type19`) the TYPE7 options of a /INTER/TYPE19 card,
+/// which has the same layout but for: surf_IDs, surf_IDm (either may be 0),
+/// Igap 4, Iedge in columns 51-60 of card 1, Edge_scale_gap where TYPE7
+/// has Fpenmax (card 2, no Itied, Ists), no Iadm, fct_IDF or AscaleF.
+fn read_type7_card(cards: &mut Cards, type19: bool) -> InputResult<Type7> {
     let c1 = cards
         .next("the card with grnd_IDs, surf_IDm, Istf, Ithe, Igap, Ibag, Idel, Icurv, Iadm")?;
     let grnod_ids = c1.id_opt(1, "grnd_IDs")?;
-    let surf_idm = c1.id(11, "surf_IDm")?;
+    let surf_idm = if type19 {
+        c1.id_opt(11, "surf_IDm")?
+    } else {
+        c1.id(11, "surf_IDm")?
+    };
     let istf = flag(&c1, 21, "Istf", &[0, 1, 2, 3, 4, 5, 1000], 1000)?;
     let ithe = flag(&c1, 31, "Ithe", &[0, 1], 0)?;
-    let igap = flag(&c1, 41, "Igap", &[0, 1, 2, 3, 1000], 1000)?;
+    let igap = if type19 {
+        // TYPE19 Igap 4: variable gap (2) for the nodes, constant for the edges.
+        match flag(&c1, 41, "Igap", &[0, 1, 2, 3, 4, 1000], 1000)? {
+            4 => 2,
+            g => g,
+        }
+    } else {
+        flag(&c1, 41, "Igap", &[0, 1, 2, 3, 1000], 1000)?
+    };
     let ibag = flag(&c1, 61, "Ibag", &[0, 1, 2, 1000], 1000)?;
     let idel = flag(&c1, 71, "Idel", &[-2, -1, 0, 1, 2, 1000], 1000)?;
     let icurv = flag(&c1, 81, "Icurv", &[0, 1, 2, 3], 0)?;
-    let iadm = flag(&c1, 91, "Iadm", &[0, 1, 2], 0)?;
+    let iadm = if type19 {
+        0
+    } else {
+        flag(&c1, 91, "Iadm", &[0, 1, 2], 0)?
+    };
     if iadm != 0 && icurv != 0 {
         return Err(c1.err(
             "Iadm",
@@ -237,9 +261,15 @@ fn read_type7(cards: &mut Cards) -> InputResult<Type7> {
     let c2 = cards.next("the card with Fscalegap, Gapmax, Fpenmax, Itied")?;
     let fscalegap = real_ge0(&c2, 1, "Fscalegap", 1.0, "the gap scale factor")?;
     let gapmax = real_ge0(&c2, 21, "Gapmax", EP30, "the maximum gap")?;
-    let fpenmax = real_ge0(&c2, 41, "Fpenmax", 0.0, "the maximum penetration fraction")?;
-    let itied = flag(&c2, 81, "Itied", &[0, 1, 2], 0)?;
-    let ists = flag(&c2, 91, "Ists", &[0, 1, 2], 0)?;
+    let (fpenmax, itied, ists) = if type19 {
+        (0.0, 0, 0)
+    } else {
+        (
+            real_ge0(&c2, 41, "Fpenmax", 0.0, "the maximum penetration fraction")?,
+            flag(&c2, 81, "Itied", &[0, 1, 2], 0)?,
+            flag(&c2, 91, "Ists", &[0, 1, 2], 0)?,
+        )
+    };
 
     let c3 = cards.next("the card with Stmin, Stmax, %mesh_size, dtmin, Irem_gap, Irem_i2")?;
     let stmin = real_ge0(&c3, 1, "Stmin", 0.0, "the minimum stiffness")?;
@@ -287,8 +317,14 @@ fn read_type7(cards: &mut Cards) -> InputResult<Type7> {
     let (ifiltr, xfreq) = filter(&c6)?;
     let iform = flag(&c6, 41, "Iform", &[0, 1, 2], 1)?;
     let sens_id = c6.id_opt(51, "sens_ID")?;
-    let fct_idf = c6.id_opt(61, "fct_IDF")?;
-    let ascalef = real_ge0(&c6, 71, "AscaleF", 1.0, "the abscissa scale factor")?;
+    let (fct_idf, ascalef) = if type19 {
+        (0, 1.0)
+    } else {
+        (
+            c6.id_opt(61, "fct_IDF")?,
+            real_ge0(&c6, 71, "AscaleF", 1.0, "the abscissa scale factor")?,
+        )
+    };
     let fric_id = c6.id_opt(91, "fric_ID")?;
     let fric = if fric_in == 0.0 && fct_idf != 0 {
         1.0
@@ -513,6 +549,40 @@ fn read_type11(cards: &mut Cards) -> InputResult<Type11> {
 // Dispatch and shared field readers
 // ---------------------------------------------------------------------------
 
+// ---------------------------------------------------------------------------
+// TYPE19
+// ---------------------------------------------------------------------------
+
+/// /INTER/TYPE19 (format 2021-2024): the TYPE7 options, plus Iedge and
+/// Edge_scale_gap for the edge-to-edge part.
+fn read_type19(cards: &mut Cards) -> InputResult<Type19> {
+    let mut peek = cards.clone();
+    let c1 =
+        peek.next("the card with surf_IDs, surf_IDm, Istf, Ithe, Igap, Iedge, Ibag, Idel, Icurv")?;
+    let c2 = peek.next("the card with Fscalegap, Gapmax, Edge_scale_gap")?;
+    let surf_ids = c1.id_opt(1, "surf_IDs")?;
+    let surf_idm = c1.id_opt(11, "surf_IDm")?;
+    if surf_ids == 0 && surf_idm == 0 {
+        return Err(c1.err(
+            "surf_IDs",
+            "surf_IDs and surf_IDm are both 0: expected at least one surface",
+        ));
+    }
+    let igap = flag(&c1, 41, "Igap", &[0, 1, 2, 3, 4, 1000], 1000)?;
+    let iedge = flag(&c1, 51, "Iedge", &[0, 1, 2], 2)?;
+    let edge_scale_gap = real_ge0(&c2, 41, "Edge_scale_gap", 0.0, "the edge gap scale factor")?;
+    let mut nodes = read_type7_card(cards, true)?;
+    nodes.irem_gap = if igap == 4 { 2 } else { nodes.irem_gap };
+    Ok(Type19 {
+        surf_ids,
+        surf_idm,
+        igap,
+        iedge,
+        edge_scale_gap,
+        nodes,
+    })
+}
+
 /// Reads one /INTER block. Returns false for an interface type this reader
 /// does not support (the caller warns, or fails with --strict).
 pub(super) fn parse_interface(block: &Block, deck: &mut Deck) -> InputResult<bool> {
@@ -523,6 +593,7 @@ pub(super) fn parse_interface(block: &Block, deck: &mut Deck) -> InputResult<boo
         "TYPE5" => 5,
         "TYPE7" => 7,
         "TYPE11" => 11,
+        "TYPE19" => 19,
         _ => return Ok(false),
     };
     let id = header_id(block, 2, "inter_ID")?;
@@ -534,7 +605,8 @@ pub(super) fn parse_interface(block: &Block, deck: &mut Deck) -> InputResult<boo
         3 => InterfaceKind::Type3(read_type3(&mut cards)?),
         5 => InterfaceKind::Type5(read_type5(&mut cards)?),
         7 => InterfaceKind::Type7(read_type7(&mut cards)?),
-        _ => InterfaceKind::Type11(read_type11(&mut cards)?),
+        11 => InterfaceKind::Type11(read_type11(&mut cards)?),
+        _ => InterfaceKind::Type19(read_type19(&mut cards)?),
     };
     let extra: Vec<_> = cards
         .remaining()

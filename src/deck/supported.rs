@@ -98,6 +98,7 @@ pub const SUPPORTED: &[Supported] = &[
     s("/INTER/TYPE3, /INTER/TYPE5", &["/INTER/TYPE3/1", "/INTER/TYPE5/1"], "surface-to-surface and node-to-surface contact"),
     s("/INTER/TYPE7", &["/INTER/TYPE7/1"], "general contact: every card of the reference (Istf, Igap, Inacti, friction, VISs, Idel, IBC)"),
     s("/INTER/TYPE11", &["/INTER/TYPE11/1"], "edge-to-edge contact between /LINE sides or in self-contact: Istf, Igap 0/1/3, Gapmin, Stfac, Coulomb friction (Iform 1, 2), VISs, Bumult (Idel, Inacti, IBC, dtmin, Irem_gap 2, sensor, heat and /FRICTION refused by name)"),
+    s("/INTER/TYPE19", &["/INTER/TYPE19/1"], "general contact, computed as Radioss does: TYPE7 node-to-surface both ways (one in self-contact) and TYPE11 between the surfaces' edges (Iedge 2 all, 1 free); Igap 0-4, Edge_scale_gap; the added interfaces take ids after the deck's largest"),
     s("/TH/*", &["/TH/NODE/1", "/TH/PART/1"], "time-history requests: the run file's /th tables (nodes, parts, interfaces, rigid walls, global energies)"),
     s("/ANIM/*", &["/ANIM/VECT/DISP"], "animation requests: states at /ANIM/DT in the run file"),
     s("/ANALY, /SPMD, /IOFLAG, /SHFRA/V4, /SHFRA/V5", &["/ANALY", "/SPMD", "/IOFLAG", "/SHFRA/V4"], "read; they change nothing in the solution (N2D3D other than 0 refused)"),

@@ -7,6 +7,7 @@
 use super::id_index::IdIndex;
 use super::resolve_sets::{node_groups, shell_groups, surfaces, SetContext};
 use super::{Deck, ElementCard, Elements};
+use crate::model::contact::Type19;
 use crate::model::*;
 
 /// Builds the model from a deck.
@@ -108,7 +109,7 @@ fn build(deck: &Deck) -> Result<Model, InputError> {
     refs.check_spring_functions(&properties)?;
     let rigid_walls = read_rigid_walls(deck, &refs, &nodes, &node_index, &mut warnings)?;
     let lines = super::lines::resolve_lines(&deck.lines, &surfaces, &refs.surf_index, &ctx)?;
-    let interfaces = read_interfaces(deck, &refs, &surfaces, &lines)?;
+    let interfaces = read_interfaces(deck, &refs, &surfaces, &lines, &mut warnings)?;
 
     // Masses.
     let mut model = Model {
@@ -506,8 +507,11 @@ fn read_interfaces(
     refs: &Refs,
     surfaces: &[Surface],
     lines: &[Line],
+    warnings: &mut Vec<Warning>,
 ) -> Result<Vec<Interface>, InputError> {
     let mut interfaces = Vec::new();
+    // Ids for the interfaces a TYPE19 card adds, after every id of the deck.
+    let mut next_id = deck.interfaces.iter().map(|i| i.id).max().unwrap_or(0) + 1;
     IdIndex::build(
         "interface",
         deck.interfaces.iter().map(|i| (i.id, i.loc.clone())),
@@ -525,6 +529,11 @@ fn read_interfaces(
         } else {
             &c.ids_loc
         };
+        if let InterfaceKind::Type19(t) = &c.kind {
+            let sides = Type19Sides::resolve(t, refs, surfaces, loc, &kw)?;
+            interfaces.extend(expand_type19(c, t, &sides, &mut next_id, warnings));
+            continue;
+        }
         let side = |s: Side, field: &str| -> Result<Option<ResolvedSide>, InputError> {
             Ok(match s {
                 Side::NodeGroup(g) => Some(ResolvedSide {
@@ -588,6 +597,108 @@ fn read_interfaces(
         });
     }
     Ok(interfaces)
+}
+
+/// The two surfaces of a /INTER/TYPE19 card.
+struct Type19Sides<'a> {
+    sec: &'a Surface,
+    main: &'a Surface,
+    same: bool,
+}
+
+impl<'a> Type19Sides<'a> {
+    fn resolve(
+        t: &Type19,
+        refs: &Refs,
+        surfaces: &'a [Surface],
+        loc: &Loc,
+        kw: &str,
+    ) -> Result<Type19Sides<'a>, InputError> {
+        let (s, m) = t.surfaces();
+        let field = |given: Id| if given == 0 { "surf_IDm" } else { "surf_IDs" };
+        let sec = &surfaces[refs.surf_index.resolve(s, loc, kw, field(t.surf_ids))? as usize];
+        let main = &surfaces[refs.surf_index.resolve(m, loc, kw, "surf_IDm")? as usize];
+        Ok(Type19Sides {
+            sec,
+            main,
+            same: s == m,
+        })
+    }
+}
+
+/// /INTER/TYPE19 as Radioss computes it (reference card /INTER/TYPE19):
+/// a TYPE7 with the secondary surface's nodes on the main surface (the
+/// card's id), a second TYPE7 the other way round when the surfaces differ,
+/// and a TYPE11 between the surfaces' edges (Iedge 2: all, 1: the free
+/// ones; the surface with itself when they are the same). The added
+/// interfaces take ids after the deck's largest; a surface with no edge of
+/// the kind asked leaves the edge part out, with a warning.
+fn expand_type19(
+    c: &InterfaceSpec,
+    t: &Type19,
+    sides: &Type19Sides,
+    next_id: &mut Id,
+    warnings: &mut Vec<Warning>,
+) -> Vec<Interface> {
+    let kw = format!("/INTER/TYPE19/{}", c.id);
+    let mut take_id = || {
+        let id = *next_id;
+        *next_id += 1;
+        id
+    };
+    let spec = |id: Id, what: &str, kind: InterfaceKind| InterfaceSpec {
+        id,
+        title: format!("{} ({kw}: {what})", c.title),
+        kind,
+        ..c.clone()
+    };
+    let node_part = |id: Id, what: &str, sec: &Surface, main: &Surface| Interface {
+        card: spec(id, what, InterfaceKind::Type7(t.node_part())),
+        secondary_nodes: sec.nodes(),
+        main_segments: main.segments.clone(),
+        secondary_segments: Vec::new(),
+        secondary_edges: Vec::new(),
+        main_edges: Vec::new(),
+    };
+    let mut out = vec![node_part(c.id, "nodes to surface", sides.sec, sides.main)];
+    if !sides.same {
+        let id = take_id();
+        out.push(node_part(
+            id,
+            "main surface nodes to secondary surface",
+            sides.main,
+            sides.sec,
+        ));
+    }
+    let free = t.iedge == 1;
+    let sec_edges = super::lines::segment_edges(&sides.sec.segments, free);
+    let main_edges = if sides.same {
+        sec_edges.clone()
+    } else {
+        super::lines::segment_edges(&sides.main.segments, free)
+    };
+    if sec_edges.is_empty() || main_edges.is_empty() {
+        warnings.push(Warning {
+            loc: c.loc.clone(),
+            keyword: kw.clone(),
+            message: "a surface has no free edge (Iedge = 1): the edge-to-edge part is left out"
+                .into(),
+        });
+        return out;
+    }
+    let id = take_id();
+    let mut edge_nodes: Vec<u32> = sec_edges.iter().flatten().copied().collect();
+    edge_nodes.sort_unstable();
+    edge_nodes.dedup();
+    out.push(Interface {
+        card: spec(id, "edge to edge", InterfaceKind::Type11(t.edge_part())),
+        secondary_nodes: edge_nodes,
+        main_segments: Vec::new(),
+        secondary_segments: Vec::new(),
+        secondary_edges: sec_edges,
+        main_edges,
+    });
+    out
 }
 
 /// /ADMAS: mass added to the nodes of a group (each, or shared).

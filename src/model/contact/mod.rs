@@ -4,12 +4,14 @@
 //! the type's options after default resolution. One file per interface type.
 
 mod type11;
+mod type19;
 mod type2;
 mod type3;
 mod type5;
 mod type7;
 
 pub use type11::*;
+pub use type19::*;
 pub use type2::*;
 pub use type3::*;
 pub use type5::*;
@@ -51,6 +53,7 @@ pub enum InterfaceKind {
     Type5(Type5),
     Type7(Type7),
     Type11(Type11),
+    Type19(Type19),
 }
 
 /// What one side of an interface references.
@@ -68,7 +71,7 @@ pub enum Side {
 }
 
 impl InterfaceSpec {
-    /// 2, 3, 5, 7 or 11.
+    /// 2, 3, 5, 7, 11 or 19.
     pub fn type_number(&self) -> u32 {
         match self.kind {
             InterfaceKind::Type2(_) => 2,
@@ -76,6 +79,7 @@ impl InterfaceSpec {
             InterfaceKind::Type5(_) => 5,
             InterfaceKind::Type7(_) => 7,
             InterfaceKind::Type11(_) => 11,
+            InterfaceKind::Type19(_) => 19,
         }
     }
 
@@ -87,6 +91,9 @@ impl InterfaceSpec {
             InterfaceKind::Type5(_) => "node to segment",
             InterfaceKind::Type7(_) => "general node to segment",
             InterfaceKind::Type11(_) => "edge to edge",
+            InterfaceKind::Type19(_) => {
+                "general contact: node to surface both ways and edge to edge"
+            }
         }
     }
 
@@ -106,6 +113,7 @@ impl InterfaceSpec {
                 }
             }
             InterfaceKind::Type11(t) => Side::Line(t.line_ids),
+            InterfaceKind::Type19(t) => Side::Surface(t.surfaces().0),
         }
     }
 
@@ -114,6 +122,7 @@ impl InterfaceSpec {
         match &self.kind {
             InterfaceKind::Type3(_) => ("surf_ID1", "surf_ID2"),
             InterfaceKind::Type11(_) => ("line_IDs", "line_IDm"),
+            InterfaceKind::Type19(_) => ("surf_IDs", "surf_IDm"),
             _ => ("grnd_IDs", "surf_IDm"),
         }
     }
@@ -132,6 +141,7 @@ impl InterfaceSpec {
                     Side::Line(t.line_idm)
                 }
             }
+            InterfaceKind::Type19(t) => Side::Surface(t.surfaces().1),
         }
     }
 }
