@@ -85,10 +85,13 @@ pub fn mesh_csr(model: &Model) -> (Vec<usize>, Vec<u32>) {
 }
 
 /// Element costs for the partitioner, with extra weight on elements that carry
-/// contact segments (their faces are an interface's main or secondary segments).
+/// contact segments (their faces are an interface's main or secondary
+/// segments) or contact edges (an edge-to-edge interface's edges: the shell
+/// that holds the edge, whose rank computes the edge's pairs).
 pub fn element_weights(model: &Model) -> Result<Vec<i32>, part::PartitionError> {
     let mut elems = Vec::with_capacity(model.n_elements());
     let mut face_owner: HashMap<[u32; 4], usize> = HashMap::new();
+    let mut edge_owner: HashMap<[u32; 2], usize> = HashMap::new();
     let mut offset = 0;
     for set in &model.elements {
         let k = match set.kind {
@@ -117,6 +120,10 @@ pub fn element_weights(model: &Model) -> Result<Vec<i32>, part::PartitionError> 
                 let mut key = [n[0], n[1], n[2], *n.get(3).unwrap_or(&n[2])];
                 key.sort_unstable();
                 face_owner.entry(key).or_insert(offset + e);
+                for k in 0..n.len() {
+                    let (a, b) = (n[k], n[(k + 1) % n.len()]);
+                    edge_owner.entry([a.min(b), a.max(b)]).or_insert(offset + e);
+                }
             }
         }
         offset += set.len();
@@ -127,6 +134,11 @@ pub fn element_weights(model: &Model) -> Result<Vec<i32>, part::PartitionError> 
             let mut key = *s;
             key.sort_unstable();
             if let Some(&e) = face_owner.get(&key) {
+                with_segments.push(e);
+            }
+        }
+        for ed in i.main_edges.iter().chain(&i.secondary_edges) {
+            if let Some(&e) = edge_owner.get(&[ed[0].min(ed[1]), ed[0].max(ed[1])]) {
                 with_segments.push(e);
             }
         }
@@ -256,4 +268,28 @@ pub fn split(model: &Model, owner: &[u32], nranks: usize) -> Vec<Subdomain> {
             }
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn elements_under_contact_edges_weigh_more_for_the_partitioner() {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("decks/edge_cross/edge_cross_0000.rad");
+        let mut m = crate::input::load(&path, &Default::default()).expect("deck");
+        let with = element_weights(&m).unwrap();
+        for i in m.interfaces.iter_mut() {
+            i.secondary_edges.clear();
+            i.main_edges.clear();
+        }
+        let without = element_weights(&m).unwrap();
+        // Every shell of both plates holds an edge of the TYPE11 (A's free
+        // edges, B's edges).
+        assert_eq!(with.len(), 6);
+        for (w, wo) in with.iter().zip(&without) {
+            assert_eq!(w - wo, part::DEFAULT_CONTACT_EXTRA);
+        }
+    }
 }
