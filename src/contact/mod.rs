@@ -356,6 +356,11 @@ impl ContactSystem {
         }
     }
 
+    /// Candidate pairs this rank holds from its last sort (sorting types).
+    pub fn candidate_count(&self) -> usize {
+        self.runs.iter().flatten().map(|r| r.cand.segs.len()).sum()
+    }
+
     /// Secondary nodes this rank owns (all passes, all interfaces).
     pub fn owned_secondary(&self) -> usize {
         self.runs.iter().flatten().map(|r| r.mine.len()).sum()

@@ -401,7 +401,10 @@ fn final_block(
     let e = energy::final_breakdown(cx, s);
     // Contact timers of rank 0 per secondary node-cycle (all ranks' secondary nodes).
     let contact_timing = (!s.contact.is_empty()).then(|| {
-        let mut nsec = [s.contact.owned_secondary() as f64];
+        let mut nsec = [
+            s.contact.owned_secondary() as f64,
+            s.contact.candidate_count() as f64,
+        ];
         cx.world.sum_f64(&mut nsec);
         let tm = s.contact.timers;
         let per = |sec: f64| 1e6 * sec / (s.cycle.max(1) as f64 * nsec[0].max(1.0));
@@ -411,6 +414,7 @@ fn final_block(
             per(tm.search_s),
             per(tm.force_s),
             per(tm.exchange_s),
+            nsec[1] as u64,
         )
     });
     let Some(l) = &mut report.listing else {
@@ -450,8 +454,8 @@ fn final_block(
     ));
     if let Some(c) = &contact_timing {
         l.line(&format!(
-            "     CONTACT                 : {} sorts, {} secondary nodes, {:.4} µs search + {:.4} µs forces + {:.4} µs exchange per secondary node-cycle (rank 0)",
-            c.0, c.1, c.2, c.3, c.4
+            "     CONTACT                 : {} sorts, {} secondary nodes, {:.4} µs search + {:.4} µs forces + {:.4} µs exchange per secondary node-cycle (rank 0); {} candidate pairs after the last sort",
+            c.0, c.1, c.2, c.3, c.4, c.5
         ));
     }
     let (elapsed, looped) = (times.elapsed, times.looped);
