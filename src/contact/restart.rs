@@ -40,7 +40,7 @@ use serde::{Deserialize, Serialize};
 use std::collections::HashMap;
 
 /// Layout of the contact sections; a file with another is refused.
-pub const LAYOUT: u32 = 1;
+pub const LAYOUT: u32 = 2;
 
 /// Interfaces as the restart file describes them: (id, type, per pass
 /// (secondary nodes, main segments)).

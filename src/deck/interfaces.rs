@@ -583,6 +583,101 @@ fn read_type19(cards: &mut Cards) -> InputResult<Type19> {
     })
 }
 
+// ---------------------------------------------------------------------------
+// TYPE25
+// ---------------------------------------------------------------------------
+
+/// /INTER/TYPE25 (formats 2021-2022; 2021 has no Tpressfit, read as 0).
+fn read_type25(cards: &mut Cards) -> InputResult<Type25> {
+    let c1 =
+        cards.next("the card with surf_ID1, surf_ID2, Istf, Ithe, Igap, Irem_i2, Idel, Iedge")?;
+    let surf_id1 = c1.id_opt(1, "surf_ID1")?;
+    let surf_id2 = c1.id_opt(11, "surf_ID2")?;
+    let istf = flag(&c1, 21, "Istf", &[0, 2, 3, 4, 5, 1000], 1000)?;
+    let ithe = flag(&c1, 31, "Ithe", &[0, 1], 0)?;
+    let igap = flag(&c1, 41, "Igap", &[0, 1, 2, 3, 5], 1)?;
+    let irem_i2 = flag(&c1, 51, "Irem_i2", &[0, 1, 3], 1)?;
+    let idel = flag(&c1, 71, "Idel", &[-2, -1, 0, 1, 2, 1000], 1000)?;
+    let iedge = flag(&c1, 81, "Iedge", &[0, 1, 11, 13, 22, 1000], 1000)?;
+    let c2 = cards.next("the card with grnd_IDs, Gap_scale, %mesh_size, Gap_max_s, Gap_max_m")?;
+    let grnd_ids = c2.id_opt(1, "grnd_IDs")?;
+    if surf_id1 == 0 && (surf_id2 == 0 || grnd_ids == 0) {
+        return Err(c1.err(
+            "surf_ID1",
+            "0: expected surf_ID1 (self-contact, or with surf_ID2), or grnd_IDs and surf_ID2 (nodes to surface)",
+        ));
+    }
+    let c3 = cards.next("the card with Stmin, Stmax, Igap0, Ishape, Edge_angle")?;
+    let stmin = real_ge0(&c3, 1, "Stmin", 0.0, "the minimum stiffness")?;
+    let stmax = real_ge0(&c3, 21, "Stmax", EP30, "the maximum stiffness")?;
+    let c4 = cards.next("the card with Stfac, Fric, Tpressfit, Tstart, Tstop")?;
+    let (tstart, tstop) = times(&c4)?;
+    let c5 = cards.next("the card with IBC, IVIS2, Inacti, VISs, Ithick, Pmax")?;
+    let ivis2 = flag(&c5, 21, "IVIS2", &[-1, 0, 1, 2, 3, 4, 5, 6], 1)?;
+    let inacti = match c5.int(31, "Inacti", 0)? {
+        6 => 5,
+        v @ (-1 | 0 | 1 | 3 | 5 | 1000) => {
+            if v == 0 {
+                1000
+            } else {
+                v
+            }
+        }
+        v => {
+            return Err(c5.err(
+                "Inacti",
+                format!("{v} in columns 31-40: expected 0, -1, 1, 3, 5 or 6"),
+            ))
+        }
+    };
+    let c6 = cards.next("the card with Ifric, Ifiltr, Xfreq, sens_ID, fric_ID")?;
+    let ifric = flag(&c6, 1, "Ifric", &[0, 1, 2, 3, 4], 0)?;
+    let (ifiltr, xfreq) = filter(&c6)?;
+    Ok(Type25 {
+        surf_id1,
+        surf_id2,
+        istf,
+        ithe,
+        igap,
+        irem_i2,
+        idel,
+        iedge,
+        grnd_ids,
+        gap_scale: real_ge0(&c2, 21, "Gap_scale", 1.0, "the gap scale factor")?,
+        mesh_size_pct: real_ge0(&c2, 41, "%mesh_size", 0.4, "the mesh size fraction")?,
+        gap_max_s: real_ge0(&c2, 61, "Gap_max_s", EP30, "the maximum secondary gap")?,
+        gap_max_m: real_ge0(&c2, 81, "Gap_max_m", EP30, "the maximum main gap")?,
+        stmin,
+        stmax: stmax.max(stmin),
+        igap0: flag(&c3, 41, "Igap0", &[0, 1, 1000], 1000)?,
+        ishape: flag(&c3, 51, "Ishape", &[0, 1, 2], 1)?,
+        edge_angle: real_ge0(&c3, 61, "Edge_angle", 135.0, "the edge angle")?,
+        stfac: real_ge0(&c4, 1, "Stfac", 1.0, "the stiffness factor")?,
+        fric: real_ge0(&c4, 21, "Fric", 0.0, "the friction coefficient")?,
+        tpressfit: real_ge0(&c4, 41, "Tpressfit", 0.0, "the press-fit time")?,
+        tstart,
+        tstop,
+        ibc: read_ibc(&c5)?,
+        ivis2,
+        inacti,
+        viss: real_ge0(
+            &c5,
+            41,
+            "VISs",
+            if ivis2 == 5 { 1.0 } else { 0.05 },
+            "the critical damping",
+        )?,
+        ithick: flag(&c5, 61, "Ithick", &[0, 1], 0)?,
+        pmax: real_ge0(&c5, 81, "Pmax", EP30, "the maximum pressure")?,
+        ifric,
+        ifiltr,
+        xfreq,
+        sens_id: c6.id_opt(51, "sens_ID")?,
+        fric_id: c6.id_opt(91, "fric_ID")?,
+        fric_coefs: friction_coefs(cards, ifric)?,
+    })
+}
+
 /// Reads one /INTER block. Returns false for an interface type this reader
 /// does not support (the caller warns, or fails with --strict).
 pub(super) fn parse_interface(block: &Block, deck: &mut Deck) -> InputResult<bool> {
@@ -594,6 +689,7 @@ pub(super) fn parse_interface(block: &Block, deck: &mut Deck) -> InputResult<boo
         "TYPE7" => 7,
         "TYPE11" => 11,
         "TYPE19" => 19,
+        "TYPE25" => 25,
         _ => return Ok(false),
     };
     let id = header_id(block, 2, "inter_ID")?;
@@ -606,7 +702,8 @@ pub(super) fn parse_interface(block: &Block, deck: &mut Deck) -> InputResult<boo
         5 => InterfaceKind::Type5(read_type5(&mut cards)?),
         7 => InterfaceKind::Type7(read_type7(&mut cards)?),
         11 => InterfaceKind::Type11(read_type11(&mut cards)?),
-        _ => InterfaceKind::Type19(read_type19(&mut cards)?),
+        19 => InterfaceKind::Type19(read_type19(&mut cards)?),
+        _ => InterfaceKind::Type25(read_type25(&mut cards)?),
     };
     let extra: Vec<_> = cards
         .remaining()

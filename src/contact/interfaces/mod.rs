@@ -158,6 +158,10 @@ pub struct PairState {
     pub tie: Option<([f64; 4], V3)>,
     /// Side of the segment (sign of the normal distance) at the last cycle in contact; 0 = none.
     pub side: i8,
+    /// Penetration-based types (TYPE25): the penetration at the impact
+    /// (the baseline only further penetration pushes against), and the
+    /// penetration and stiffness of the last cycle.
+    pub pen_memory: [f64; 3],
 }
 
 /// Per secondary node memory (owned secondary nodes of a pass).
@@ -439,6 +443,7 @@ registry! {
     5 => type5::Type5,
     7 => type7::Type7,
     11 => type11::Type11,
+    25 => type25::Type25,
 }
 
 #[cfg(test)]
@@ -482,12 +487,13 @@ mod tests {
 
     #[test]
     fn every_registered_number_resolves_to_its_type_and_candidate_kind() {
-        assert_eq!(TypeOptions::NUMBERS, &[3, 5, 7, 11]);
+        assert_eq!(TypeOptions::NUMBERS, &[3, 5, 7, 11, 25]);
         let expect = [
             (3, CandidateKind::NodeToSegment, CandidateSearch::Walk),
             (5, CandidateKind::NodeToSegment, CandidateSearch::Walk),
             (7, CandidateKind::NodeToSegment, CandidateSearch::Sort),
             (11, CandidateKind::EdgeToEdge, CandidateSearch::Sort),
+            (25, CandidateKind::NodeToSegment, CandidateSearch::Sort),
         ];
         for (n, kind, search) in expect {
             let t = TypeOptions::by_number(n).unwrap_or_else(|| panic!("TYPE{n} registered"));

@@ -6,6 +6,7 @@
 mod type11;
 mod type19;
 mod type2;
+mod type25;
 mod type3;
 mod type5;
 mod type7;
@@ -13,6 +14,7 @@ mod type7;
 pub use type11::*;
 pub use type19::*;
 pub use type2::*;
+pub use type25::*;
 pub use type3::*;
 pub use type5::*;
 pub use type7::*;
@@ -54,6 +56,7 @@ pub enum InterfaceKind {
     Type7(Type7),
     Type11(Type11),
     Type19(Type19),
+    Type25(Type25),
 }
 
 /// What one side of an interface references.
@@ -71,7 +74,7 @@ pub enum Side {
 }
 
 impl InterfaceSpec {
-    /// 2, 3, 5, 7, 11 or 19.
+    /// 2, 3, 5, 7, 11, 19 or 25.
     pub fn type_number(&self) -> u32 {
         match self.kind {
             InterfaceKind::Type2(_) => 2,
@@ -80,6 +83,7 @@ impl InterfaceSpec {
             InterfaceKind::Type7(_) => 7,
             InterfaceKind::Type11(_) => 11,
             InterfaceKind::Type19(_) => 19,
+            InterfaceKind::Type25(_) => 25,
         }
     }
 
@@ -94,6 +98,7 @@ impl InterfaceSpec {
             InterfaceKind::Type19(_) => {
                 "general contact: node to surface both ways and edge to edge"
             }
+            InterfaceKind::Type25(_) => "penalty node to surface without activation gap",
         }
     }
 
@@ -114,6 +119,15 @@ impl InterfaceSpec {
             }
             InterfaceKind::Type11(t) => Side::Line(t.line_ids),
             InterfaceKind::Type19(t) => Side::Surface(t.surfaces().0),
+            InterfaceKind::Type25(t) => {
+                if t.surf_id1 == 0 {
+                    Side::NodeGroup(t.grnd_ids)
+                } else if t.surf_id2 == 0 {
+                    Side::SameAsOther
+                } else {
+                    Side::Surface(t.surf_id1)
+                }
+            }
         }
     }
 
@@ -123,6 +137,9 @@ impl InterfaceSpec {
             InterfaceKind::Type3(_) => ("surf_ID1", "surf_ID2"),
             InterfaceKind::Type11(_) => ("line_IDs", "line_IDm"),
             InterfaceKind::Type19(_) => ("surf_IDs", "surf_IDm"),
+            InterfaceKind::Type25(t) if t.surf_id1 == 0 => ("grnd_IDs", "surf_ID2"),
+            InterfaceKind::Type25(t) if t.surf_id2 == 0 => ("surf_ID1", "surf_ID1"),
+            InterfaceKind::Type25(_) => ("surf_ID1", "surf_ID2"),
             _ => ("grnd_IDs", "surf_IDm"),
         }
     }
@@ -142,6 +159,11 @@ impl InterfaceSpec {
                 }
             }
             InterfaceKind::Type19(t) => Side::Surface(t.surfaces().1),
+            InterfaceKind::Type25(t) => Side::Surface(if t.surf_id2 == 0 {
+                t.surf_id1
+            } else {
+                t.surf_id2
+            }),
         }
     }
 }

@@ -1,0 +1,75 @@
+#!/usr/bin/env python3
+"""Writes the TYPE25 decks (tests/contact_type25.rs runs them).
+Units: kg, mm, ms (force kN, stress GPa). Steel bricks: E = 210, nu = 0.3.
+
+    python3 decks/make_type25.py [OUT_DIR [NAME ...]]
+
+* type25_block   a fixed steel block (2 x 2 bricks of 5 mm, 1 high) and a
+                 block of 3 x 3 bricks of 2.5 mm on it whose bottom face
+                 starts 0.1 mm inside the lower block (no node of the upper
+                 face over an edge of the lower mesh). The upper block is
+                 driven down at 0.01 mm/ms. TYPE25 with the upper block's 16
+                 bottom nodes on the lower block's surface (grnd_IDs,
+                 surf_ID2): the initial penetration is the pairs' baseline,
+                 so the force starts at zero and grows as 16 * K/2 * v * t,
+                 K = B A^2 / V of the 5 mm faces (Istf default: main side).
+"""
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from make_contact import (Box, header, law1, prop_solid, part, nodes_block, bricks_block,  # noqa: E402
+                          group, surf_part, bcs, funct, impvel, engine, write, i10, r20)
+
+P0 = 0.1        # mm: initial penetration
+V = 0.01        # mm/ms: downward speed of the upper block
+TEND = 0.3      # ms
+
+
+def inter25(iid, title, surf1, surf2, grnod, istf=0, fric=0.0, viss=0.0, inacti=0):
+    """/INTER/TYPE25 in the 2022 layout (src/deck/interfaces.rs read_type25)."""
+    return [f"/INTER/TYPE25/{iid}", title,
+            "#  surf_ID1  surf_ID2      Istf      Ithe      Igap   Irem_i2                Idel     Iedge",
+            i10(surf1) + i10(surf2) + i10(istf) + i10(0) * 3 + " " * 10 + i10(0) * 2,
+            "#  grnd_IDs                     Gap_scale          %mesh_size           Gap_max_s           Gap_max_m",
+            i10(grnod) + " " * 10 + r20(0) * 4,
+            "#              Stmin               Stmax     Igap0    Ishape          Edge_angle",
+            r20(0) * 2 + i10(0) * 2 + r20(0),
+            "#              Stfac                Fric           Tpressfit              Tstart               Tstop",
+            r20(0) + r20(fric) + r20(0) * 3,
+            "#      IBC               IVIS2    Inacti                VisS    Ithick                    Pmax",
+            "000".rjust(10) + " " * 10 + i10(0) + i10(inacti) + r20(viss) + i10(0) + " " * 10 + r20(0),
+            "#    Ifric    Ifiltr               Xfreq               sens_ID                              fric_ID",
+            i10(0) * 2 + r20(0) + " " * 10 + i10(0) + " " * 30 + i10(0)]
+
+
+def type25_block():
+    name = "type25_block"
+    lower = Box(1, 1, (0.0, 0.0, -5.0), (10.0, 10.0, 5.0), (2, 2, 1))
+    upper = Box(101, 101, (1.25, 1.25, -P0), (7.5, 7.5, 2.5), (3, 3, 1))
+    S = header(name, "TYPE25: a block pressed on a block it starts inside of", [
+        "The upper block's bottom face starts 0.1 mm inside the fixed lower block",
+        "and is driven down at 0.01 mm/ms (decks/make_type25.py)."])
+    S += law1(1, "steel") + prop_solid(1, "bricks")
+    S += part(1, "lower block", 1, 1) + part(2, "upper block", 1, 1)
+    S += nodes_block(lower.nodes() + upper.nodes())
+    S += bricks_block(1, lower.bricks()) + bricks_block(2, upper.bricks())
+    S += group(1, "lower block", [n[0] for n in lower.nodes()])
+    S += group(2, "upper block", [n[0] for n in upper.nodes()])
+    S += group(3, "upper block bottom", upper.face(2, 0))
+    S += bcs(1, "lower block fixed", "111 000", 1)
+    S += funct(1, "constant", [(0.0, 1.0), (100.0, 1.0)])
+    S += impvel(1, "upper block down", 1, "Z", 2, -V)
+    S += surf_part(1, "lower block", [1])
+    S += inter25(1, "upper bottom nodes on the lower block", 0, 1, 3)
+    S += ["/END"]
+    N = engine(name, TEND, -250, comments=[f"{TEND:g} ms at {V:g} mm/ms: {V * TEND:g} mm beyond the initial {P0:g} mm."])
+    return name, S, N
+
+
+MAKERS = dict(type25_block=type25_block)
+
+if __name__ == "__main__":
+    out = sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(os.path.abspath(__file__))
+    for nm in sys.argv[2:] or list(MAKERS):
+        write(out, *MAKERS[nm]())

@@ -1,0 +1,370 @@
+//! TYPE25 penalty contact without an activation gap, node to surface
+//! (reference card /INTER/TYPE25; the reference engine's law as gathered in
+//! docs/notes/type24_type25_research.md §2–3). Its edge-to-edge part
+//! (Iedge) is refused by name.
+//!
+//! - Gap: only the shells' half thicknesses, g = g_s + g_m (each times
+//!   Gap_scale, each at most Gap_max_s, Gap_max_m); a solid face has none.
+//!   A solid face is one-sided: a node behind it (over its inside, the
+//!   projection within the face) penetrates by its depth; a shell is
+//!   two-sided, its side taken at the impact.
+//! - Penetration as a baseline: the penetration found when a node first
+//!   touches a segment (at the start: the initial penetration) is stored,
+//!   and only further penetration p = p_raw − p_impact pushes; the baseline
+//!   is dropped when the node leaves.
+//! - No force jump: when the penetration grows more in a cycle than the
+//!   normal approach dp = max(0, dP/dt·Δt) explains (a node sliding onto a
+//!   segment), the stiffness becomes (K_old·p_old + K·dp)/p; otherwise it
+//!   keeps the last cycle's, so unloading follows the secant.
+//! - Force ½·K·p (EQ. 8.5.3.2/8.5.3.3: K = Stfac·E·t on shells, Stfac·B·A²/V
+//!   on solids; Istf combines it with the secondary node's stiffness);
+//!   damper VISs·√(2·½K·m*)·dP/dt with m* the harmonic mean of the node's
+//!   mass and the segment point's (IVIS2 1; 6: the node's; 4: none);
+//!   incremental Coulomb friction with the full K as tangential penalty.
+//! - Time step: no kinematic step (the penalty is constant); K + C/Δt per
+//!   pair enters the nodal step (EQ. 8.8.5.2).
+
+use super::layout::{Interface, Pass};
+use super::{
+    CandidateKind, CandidateSearch, CardCommon, InterfaceType, NodeState, PairContext, PairForce,
+    PairOutcome, PairState, SurfaceSizes, NODE_SHAPE,
+};
+use crate::contact::friction::{self, FrictionLaw};
+use crate::contact::gap::{GapRule, InitialPenetration};
+use crate::contact::geometry::{self as geo, V3};
+use crate::contact::stiffness;
+use crate::model::contact::EP30;
+use crate::model::{self, InterfaceKind};
+use serde::{Deserialize, Serialize};
+
+/// TYPE25's own options.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct Type25 {
+    pub istf: i64,
+    pub stmin: f64,
+    pub stmax: f64,
+    pub viss: f64,
+    pub ivis2: i64,
+    pub gap_scale: f64,
+    pub gap_max_s: f64,
+    pub gap_max_m: f64,
+}
+
+impl InterfaceType for Type25 {
+    fn type_number(&self) -> u32 {
+        25
+    }
+
+    fn unsupported(kind: &InterfaceKind) -> Option<&'static str> {
+        let InterfaceKind::Type25(t) = kind else {
+            return None;
+        };
+        let refused = [
+            (t.sens_id != 0, "an activation sensor (sens_ID)"),
+            (t.ithe != 0, "heat transfer (Ithe)"),
+            (t.fric_id != 0, "friction from /FRICTION (fric_ID)"),
+            (t.ifric != 0 || t.ifiltr != 0, "a friction law or filter (Ifric, Ifiltr)"),
+            (!matches!(t.iedge, 0 | 1000), "edge-to-edge contact (Iedge)"),
+            (!matches!(t.igap, 0 | 1), "a gap option other than the half thicknesses (Igap 2, 3, 5)"),
+            (t.igap0 == 1, "zero gap on free-edge shell nodes (Igap0 = 1)"),
+            (t.ishape == 2, "the rounded gap shape along free edges (Ishape = 2)"),
+            (!matches!(t.idel, 0 | 1000), "segment deletion with the elements (Idel)"),
+            (
+                !matches!(t.inacti, 0 | 5 | 1000),
+                "an initial-penetration treatment other than the baseline (Inacti -1, 1, 3)",
+            ),
+            (!matches!(t.ivis2, 1 | 4 | 6), "a damping form other than IVIS2 1, 4, 6"),
+            (t.ithick == 1, "a gap following the shell thickness (Ithick = 1)"),
+        ];
+        refused.into_iter().find(|r| r.0).map(|r| r.1)
+    }
+
+    fn candidate_kind(&self) -> CandidateKind {
+        CandidateKind::NodeToSegment
+    }
+
+    fn search(&self) -> CandidateSearch {
+        CandidateSearch::Sort
+    }
+
+    fn from_card(kind: &InterfaceKind) -> Option<(Self, CardCommon)> {
+        let InterfaceKind::Type25(t) = kind else {
+            return None;
+        };
+        let common = CardCommon {
+            stfac: t.stfac,
+            friction: FrictionLaw {
+                ifric: 0,
+                fric: t.fric,
+                iform: 2,
+                visf: 0.0,
+                ..FrictionLaw::none()
+            },
+            gap_card: 0.0,
+            tstart: t.tstart,
+            tstop: t.tstop,
+            ibc: t.ibc,
+            inacti: t.inacti,
+            idel: t.idel,
+        };
+        let own = Type25 {
+            istf: t.istf,
+            stmin: t.stmin,
+            stmax: t.stmax,
+            viss: t.viss,
+            ivis2: t.ivis2,
+            gap_scale: t.gap_scale,
+            gap_max_s: t.gap_max_s,
+            gap_max_m: t.gap_max_m,
+        };
+        Some((own, common))
+    }
+
+    /// Self-contact or nodes to surface: one pass. Two surfaces: each
+    /// surface's nodes on the other's segments.
+    fn passes<'a>(&self, i: &'a model::Interface) -> Vec<super::PassSides<'a>> {
+        let pass = |sec: Vec<u32>, main: &'a [[u32; 4]]| super::PassSides {
+            sec,
+            own: None,
+            main,
+            sec_edges: &[],
+            main_edges: &[],
+            self_contact: false,
+        };
+        if i.secondary_segments.is_empty() {
+            return vec![pass(i.secondary_nodes.clone(), &i.main_segments)];
+        }
+        let nodes = |segs: &[[u32; 4]]| {
+            let mut n: Vec<u32> = segs.iter().flatten().copied().collect();
+            n.sort_unstable();
+            n.dedup();
+            n
+        };
+        vec![
+            pass(nodes(&i.secondary_segments), &i.main_segments),
+            pass(nodes(&i.main_segments), &i.secondary_segments),
+        ]
+    }
+
+    /// For the search reach only (the kernel sums the capped half thicknesses).
+    fn gap_rule(&self, _common: &CardCommon, _sizes: &SurfaceSizes) -> GapRule {
+        GapRule {
+            igap: 2,
+            gapmin: 0.0,
+            fscalegap: self.gap_scale,
+            gapmax: (self.gap_max_s + self.gap_max_m).min(EP30),
+            mesh_size_pct: 0.4,
+        }
+    }
+
+    fn sorting_margin(&self) -> f64 {
+        0.2
+    }
+
+    /// Half the solid stiffness B·A²/V (EQ. 8.5.3.3), as the shell's 0.5·E·t:
+    /// segment stiffness is stored as the force stiffness ½·K.
+    fn solid_segment_stiffness(&self, bulk: f64, area: f64, volume: f64) -> f64 {
+        stiffness::brick_type3(bulk, area, volume)
+    }
+
+    /// The pair stiffness K (the force takes ½·K): the main segment's
+    /// Stfac·E·t or Stfac·B·A²/V, or (Istf 2-5) its mean, max, min or series
+    /// with the secondary node's (TYPE7's node stiffness), held in [Stmin, Stmax].
+    fn pair_stiffness(&self, it: &Interface, p: &Pass, k: usize, m: usize) -> f64 {
+        let km = 2.0 * it.stfac * p.seg_k[m];
+        let ks = it.stfac * p.sec_k[k];
+        let kn = match self.istf {
+            2 => 0.5 * (km + ks),
+            3 => km.max(ks),
+            4 => km.min(ks),
+            5 => stiffness::series(km, ks),
+            _ => return km,
+        };
+        self.stmin.max(self.stmax.min(kn))
+    }
+
+    #[inline]
+    fn pair(&self, c: &PairContext, _ns: &mut NodeState, st: &mut PairState) -> PairOutcome {
+        let (it, p, k, m) = (c.it, c.p, c.k, c.m as usize);
+        let shell = p.seg_elem[m].0 < 2;
+        let g = (self.gap_scale * p.sec_gap[k]).min(self.gap_max_s)
+            + (self.gap_scale * p.seg_gap[m]).min(self.gap_max_m);
+        let Some((p_raw, side, pr)) = penetration(c.xs, c.xm, p.is_tri(m), g, shell, st.side)
+        else {
+            *st = PairState::default();
+            return PairOutcome::Free;
+        };
+        let k_new = self.pair_stiffness(it, p, k, m);
+        if st.side == 0 {
+            // A new impact: its penetration is the baseline.
+            *st = PairState {
+                side,
+                pen_memory: [p_raw, 0.0, k_new],
+                ..PairState::default()
+            };
+        }
+        let pen = (p_raw - st.pen_memory[0]).max(0.0);
+        if pen == 0.0 {
+            st.pen_memory[1] = 0.0;
+            return PairOutcome::Free;
+        }
+        let mm: f64 = (0..4).map(|j| pr.shape[j] * c.cnode_mass[c.main.nodes[j] as usize]).sum();
+        let mass = match self.ivis2 {
+            6 => c.ms,
+            _ => c.ms * mm / (c.ms + mm).max(1e-30),
+        };
+        let law = Law {
+            k_new,
+            viss: if self.ivis2 == 4 { 0.0 } else { self.viss },
+            mass,
+            friction: &it.friction,
+            dt: c.dt,
+        };
+        PairOutcome::Force(law.force(c, &pr, pen, st))
+    }
+
+    /// None: the penalty stiffness is constant (the nodal step sees it).
+    fn kinematic_step(&self, _f: &PairForce) -> Option<f64> {
+        None
+    }
+
+    /// The baseline takes any initial penetration: nothing to decide.
+    fn initial_penetration(
+        &self,
+        _it: &Interface,
+        _xs: V3,
+        _xm: &[V3; 4],
+        _tri: bool,
+        _g: f64,
+    ) -> (InitialPenetration, f64) {
+        (InitialPenetration::Keep, 0.0)
+    }
+}
+
+/// The raw penetration of node `xs` into the segment with gap `g`, the side
+/// it is on, and its projection; `None` when it is out of contact.
+/// `side0`: the side taken at the impact (0 = none yet); a solid face's is +1.
+fn penetration(
+    xs: V3,
+    xm: &[V3; 4],
+    tri: bool,
+    g: f64,
+    shell: bool,
+    side0: i8,
+) -> Option<(f64, i8, geo::Projection)> {
+    let mut pr = geo::project(xs, xm, tri);
+    let b = geo::dot(geo::sub(xs, pr.point), pr.normal);
+    let side = match (shell, side0) {
+        (false, _) => 1,
+        (true, 0) => {
+            if b >= 0.0 {
+                1
+            } else {
+                -1
+            }
+        }
+        (true, s) => s,
+    };
+    let bs = f64::from(side) * b;
+    let p_raw = if bs >= 0.0 {
+        g - pr.dist
+    } else {
+        // Behind the face (or past a shell's mid-plane): only over the face
+        // itself, where the closest point is the foot of the normal.
+        let over_face = geo::dot(pr.dir, pr.normal).abs() >= 1.0 - 1e-9;
+        if !over_face {
+            return None;
+        }
+        pr.dir = geo::scale(pr.normal, f64::from(side));
+        g + pr.dist
+    };
+    (p_raw > 0.0).then_some((p_raw, side, pr))
+}
+
+/// One pair's penalty law (see the module's comment).
+struct Law<'a> {
+    k_new: f64,
+    viss: f64,
+    /// The damper's mass.
+    mass: f64,
+    friction: &'a FrictionLaw,
+    dt: f64,
+}
+
+impl Law<'_> {
+    fn force(&self, c: &PairContext, pr: &geo::Projection, pen: f64, st: &mut PairState) -> PairForce {
+        let vc = geo::interpolate(&pr.shape, c.vm);
+        let vrel = geo::sub(c.vs, vc);
+        let dpdt = -geo::dot(vrel, pr.dir);
+        let dp = (dpdt * self.dt).max(0.0);
+        let [_, p_old, k_old] = st.pen_memory;
+        let k = if pen > p_old && dp < pen - p_old {
+            (k_old * p_old + self.k_new * dp) / pen
+        } else {
+            k_old
+        };
+        st.pen_memory[1] = pen;
+        st.pen_memory[2] = k;
+        let kf = 0.5 * k;
+        let damper = self.viss * (2.0 * kf * self.mass).sqrt();
+        let f_n = kf * pen + damper * dpdt;
+        let mut f_t = [0.0; 3];
+        if self.friction.active() && f_n != 0.0 {
+            let vt = friction::tangential(vrel, pr.dir);
+            f_t = friction::tangential_force(
+                self.friction,
+                self.friction.fric,
+                f_n.abs(),
+                vt,
+                pr.dir,
+                self.k_new,
+                self.mass,
+                self.dt,
+                &mut st.ft,
+            );
+        }
+        let kt = if self.dt > 0.0 {
+            self.k_new + damper / self.dt
+        } else {
+            self.k_new
+        };
+        PairForce {
+            fs: geo::add(geo::scale(pr.dir, f_n), f_t),
+            sec_shape: NODE_SHAPE,
+            shape: pr.shape,
+            kt,
+            dt_kin: f64::INFINITY,
+            f_n,
+            f_t,
+            pen,
+            dir: pr.dir,
+            point: pr.point,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn face() -> [V3; 4] {
+        [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 1.0, 0.0], [0.0, 1.0, 0.0]]
+    }
+
+    #[test]
+    fn a_solid_face_is_one_sided_and_a_shell_keeps_its_impact_side() {
+        let x = face();
+        // Solid face (no gap): in front, free; behind, the depth.
+        assert!(penetration([0.3, 0.4, 0.01], &x, false, 0.0, false, 0).is_none());
+        let (p, s, pr) = penetration([0.3, 0.4, -0.02], &x, false, 0.0, false, 0).unwrap();
+        assert!((p - 0.02).abs() < 1e-15 && s == 1 && pr.dir == [0.0, 0.0, 1.0]);
+        // Behind but beyond the face's edge: not over the face, free.
+        assert!(penetration([1.2, 0.4, -0.02], &x, false, 0.0, false, 0).is_none());
+        // Shell with gap 0.1 hit from below: side −1, pushed down.
+        let (p, s, pr) = penetration([0.3, 0.4, -0.07], &x, false, 0.1, true, 0).unwrap();
+        assert!((p - 0.03).abs() < 1e-15 && s == -1 && pr.dir[2] < 0.0);
+        // Past the mid-plane from below: still pushed down, by g + depth.
+        let (p, _, pr) = penetration([0.3, 0.4, 0.02], &x, false, 0.1, true, -1).unwrap();
+        assert!((p - 0.12).abs() < 1e-15 && pr.dir == [0.0, 0.0, -1.0]);
+    }
+}

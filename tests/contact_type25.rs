@@ -1,0 +1,160 @@
+//! TYPE25 penalty contact on decks/make_type25.py's type25_block: a block
+//! driven at a constant speed into a fixed block it starts 0.1 mm inside of.
+//!
+//! - The initial penetration is each pair's baseline: no force at the
+//!   start, then only the further penetration pushes, F = 16 · ½K · v · t
+//!   with K = B·A²/V of the lower block's 5 mm faces (Istf default: the main
+//!   side's; EQ. 8.5.3.3 times two, the force taking half), within 1% at
+//!   every printed cycle;
+//! - the final state is byte-identical on 1, 2 and 4 ranks with the
+//!   interface cut (secondary nodes and main segments on different ranks)
+//!   and on 1 and 2 threads; a run stopped on 2 ranks and restarted on 1
+//!   ends identically (the baselines travel in the restart file).
+
+mod common;
+#[path = "contact_common/mod.rs"]
+mod contact_common;
+use contact_common::*;
+
+const V: f64 = 0.01;
+const P0: f64 = 0.1;
+const NODES: f64 = 16.0;
+
+/// ½K of one pair: B·A²/V / 2 with B = E/(3(1 − 2ν)), A = 25 mm², V = 125 mm³.
+fn half_k() -> f64 {
+    let b = 210.0 / (3.0 * (1.0 - 2.0 * 0.3));
+    0.5 * b * 25.0 * 25.0 / 125.0
+}
+
+#[test]
+fn an_initial_penetration_is_the_baseline_only_further_penetration_pushes() {
+    let r = run(
+        &deck("type25_block"),
+        &scratch("type25_block_1"),
+        &RunArgs::default(),
+    );
+    assert!(r.listing.normal_termination());
+    let lines = r.listing.of(1);
+    assert!(lines.len() >= 5, "INTER lines: {}", lines.len());
+    for l in &lines {
+        let expect = NODES * half_k() * V * l.t;
+        let f = l.normal[2];
+        assert!(
+            (f - expect).abs() < 0.01 * expect,
+            "t = {}: force {f}, expected {expect}",
+            l.t
+        );
+        assert_eq!(l.pairs, 16);
+        // Without the baseline the whole penetration would push, 0.1 mm more:
+        // the force would be over 30 times this one.
+        assert!(f < 0.05 * NODES * half_k() * (P0 + V * l.t));
+    }
+}
+
+#[test]
+fn type25_is_identical_on_1_2_4_ranks_and_2_threads_with_a_cut_interface() {
+    let d = deck("type25_block");
+    for np in [2, 4] {
+        let v = common::crashsim_json(&[
+            "partition",
+            d.to_str().unwrap(),
+            "--np",
+            &np.to_string(),
+            "--json",
+        ]);
+        let i = &v["interfaces"][0];
+        let ranks = |k: &str| -> Vec<u64> {
+            i[k].as_array()
+                .unwrap()
+                .iter()
+                .map(|r| r.as_u64().unwrap())
+                .collect()
+        };
+        let (sec, main) = (ranks("secondary_ranks"), ranks("main_ranks"));
+        assert!(
+            sec.iter().any(|r| !main.contains(r)),
+            "{np} ranks: the interface is not cut: {sec:?} {main:?}"
+        );
+    }
+    let one = run(&d, &scratch("type25_ranks_1"), &RunArgs::default());
+    for np in [2, 4] {
+        let r = run(
+            &d,
+            &scratch(&format!("type25_ranks_{np}")),
+            &RunArgs {
+                ranks: np,
+                ..Default::default()
+            },
+        );
+        assert!(
+            r.final_state_bytes() == one.final_state_bytes(),
+            "{np} ranks differ from 1"
+        );
+    }
+    let dir = scratch("type25_threads_2");
+    let fs = dir.join("final_state.csv");
+    let out = common::run_env(
+        0,
+        &[
+            "run",
+            d.to_str().unwrap(),
+            "--out",
+            dir.to_str().unwrap(),
+            "--quiet",
+            "--threads",
+            "2",
+            "--final-state",
+            fs.to_str().unwrap(),
+        ],
+        &[],
+    );
+    ok(&out, "2 threads");
+    assert!(
+        std::fs::read(fs).unwrap() == one.final_state_bytes(),
+        "2 threads differ from 1"
+    );
+}
+
+#[test]
+fn a_type25_run_restarted_on_another_rank_count_ends_identically() {
+    let d = deck("type25_block");
+    let whole = run(&d, &scratch("type25_restart_whole"), &RunArgs::default());
+    let dir = scratch("type25_restart_stop");
+    let out = common::run_env(
+        2,
+        &[
+            "run",
+            d.to_str().unwrap(),
+            "--out",
+            dir.to_str().unwrap(),
+            "--quiet",
+            "--stop-after-cycle",
+            "1000",
+        ],
+        &[],
+    );
+    ok(&out, "run stopped at cycle 1000 on 2 ranks");
+    assert!(String::from_utf8_lossy(&out.stdout).contains("STOPPED AT CYCLE 1000"));
+    let fs = dir.join("final_state.csv");
+    let rst = dir.join("type25_block_rst.h5");
+    let out = common::run_env(
+        0,
+        &[
+            "run",
+            d.to_str().unwrap(),
+            "--out",
+            dir.to_str().unwrap(),
+            "--quiet",
+            "--restart",
+            rst.to_str().unwrap(),
+            "--final-state",
+            fs.to_str().unwrap(),
+        ],
+        &[],
+    );
+    ok(&out, "restart on 1 rank");
+    assert!(
+        std::fs::read(fs).unwrap() == whole.final_state_bytes(),
+        "the restarted run differs"
+    );
+}
