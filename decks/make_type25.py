@@ -13,6 +13,11 @@ Units: kg, mm, ms (force kN, stress GPa). Steel bricks: E = 210, nu = 0.3.
                  surf_ID2): the initial penetration is the pairs' baseline,
                  so the force starts at zero and grows as 16 * K/2 * v * t,
                  K = B A^2 / V of the 5 mm faces (Istf default: main side).
+* type25_mass    the same with the mass and time-step stiffness (IPSTIF = 1,
+                 Stfac_mdt = 0.2, DTstif = 1e-4 ms) and a standard stiffness
+                 made negligible (Stfac = 1e-6); 1 kg added on each node of
+                 the lower block's top, so each pair's reduced mass is the
+                 upper node's: F = sum over the nodes of 0.2 m_i / DTstif^2 / 2 * v * t.
 """
 import os
 import sys
@@ -26,25 +31,25 @@ V = 0.01        # mm/ms: downward speed of the upper block
 TEND = 0.3      # ms
 
 
-def inter25(iid, title, surf1, surf2, grnod, istf=0, fric=0.0, viss=0.0, inacti=0):
-    """/INTER/TYPE25 in the 2022 layout (src/deck/interfaces.rs read_type25)."""
+def inter25(iid, title, surf1, surf2, grnod, istf=0, fric=0.0, viss=0.0, inacti=0,
+            stfac=0.0, ipstif=0, stfac_mdt=0.0, dtstif=0.0):
+    """/INTER/TYPE25 in the 2023 layout (src/deck/interfaces.rs read_type25)."""
     return [f"/INTER/TYPE25/{iid}", title,
-            "#  surf_ID1  surf_ID2      Istf      Ithe      Igap   Irem_i2                Idel     Iedge",
-            i10(surf1) + i10(surf2) + i10(istf) + i10(0) * 3 + " " * 10 + i10(0) * 2,
+            "#  surf_ID1  surf_ID2      Istf      Ithe      Igap   Irem_i2                Idel     Iedge    IPSTIF",
+            i10(surf1) + i10(surf2) + i10(istf) + i10(0) * 3 + " " * 10 + i10(0) * 2 + i10(ipstif),
             "#  grnd_IDs                     Gap_scale          %mesh_size           Gap_max_s           Gap_max_m",
             i10(grnod) + " " * 10 + r20(0) * 4,
-            "#              Stmin               Stmax     Igap0    Ishape          Edge_angle",
-            r20(0) * 2 + i10(0) * 2 + r20(0),
+            "#              Stmin               Stmax     Igap0    Ishape          Edge_angle           Stfac_mdt",
+            r20(0) * 2 + i10(0) * 2 + r20(0) + r20(stfac_mdt),
             "#              Stfac                Fric           Tpressfit              Tstart               Tstop",
-            r20(0) + r20(fric) + r20(0) * 3,
+            r20(stfac) + r20(fric) + r20(0) * 3,
             "#      IBC               IVIS2    Inacti                VisS    Ithick                    Pmax",
             "000".rjust(10) + " " * 10 + i10(0) + i10(inacti) + r20(viss) + i10(0) + " " * 10 + r20(0),
-            "#    Ifric    Ifiltr               Xfreq               sens_ID                              fric_ID",
-            i10(0) * 2 + r20(0) + " " * 10 + i10(0) + " " * 30 + i10(0)]
+            "#    Ifric    Ifiltr               Xfreq               sens_ID              DTstif             fric_ID",
+            i10(0) * 2 + r20(0) + " " * 10 + i10(0) + r20(dtstif) + " " * 10 + i10(0)]
 
 
-def type25_block():
-    name = "type25_block"
+def type25_block(name="type25_block", mass_stiffness=False):
     lower = Box(1, 1, (0.0, 0.0, -5.0), (10.0, 10.0, 5.0), (2, 2, 1))
     upper = Box(101, 101, (1.25, 1.25, -P0), (7.5, 7.5, 2.5), (3, 3, 1))
     S = header(name, "TYPE25: a block pressed on a block it starts inside of", [
@@ -61,13 +66,23 @@ def type25_block():
     S += funct(1, "constant", [(0.0, 1.0), (100.0, 1.0)])
     S += impvel(1, "upper block down", 1, "Z", 2, -V)
     S += surf_part(1, "lower block", [1])
-    S += inter25(1, "upper bottom nodes on the lower block", 0, 1, 3)
+    if mass_stiffness:
+        S += group(4, "lower block top", lower.face(2, 1))
+        S += ["/ADMAS/0/1", "1 kg on each top node", "#               MASS            grnd_ID", r20(1.0) + i10(4)]
+        S += inter25(1, "upper bottom nodes on the lower block", 0, 1, 3, stfac=1e-6, ipstif=1,
+                     stfac_mdt=0.2, dtstif=1e-4)
+    else:
+        S += inter25(1, "upper bottom nodes on the lower block", 0, 1, 3)
     S += ["/END"]
     N = engine(name, TEND, -250, comments=[f"{TEND:g} ms at {V:g} mm/ms: {V * TEND:g} mm beyond the initial {P0:g} mm."])
     return name, S, N
 
 
-MAKERS = dict(type25_block=type25_block)
+def type25_mass():
+    return type25_block("type25_mass", mass_stiffness=True)
+
+
+MAKERS = dict(type25_block=type25_block, type25_mass=type25_mass)
 
 if __name__ == "__main__":
     out = sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(os.path.abspath(__file__))

@@ -51,6 +51,34 @@ fn an_initial_penetration_is_the_baseline_only_further_penetration_pushes() {
     }
 }
 
+/// IPSTIF = 1 (type25_mass): each pair's stiffness is Stfac_mdt·m*/DTstif²
+/// (the mass and time-step stiffness of LS-DYNA's SOFT = 1/2), m* the reduced
+/// mass of the upper node and the lower face's point, which the 1 kg added on
+/// each lower node makes the upper node's mass to 1e-4. The 16 upper nodes
+/// carry 4.5 brick masses (4 corners 1/8, 8 edges 2/8, 4 inner 4/8).
+#[test]
+fn the_mass_and_time_step_stiffness_pushes_with_stfac_mdt_m_over_dt_squared() {
+    let r = run(
+        &deck("type25_mass"),
+        &scratch("type25_mass"),
+        &RunArgs::default(),
+    );
+    assert!(r.listing.normal_termination());
+    let brick = 2.5f64.powi(3) * 7.85e-6;
+    let k_total = 0.2 * 4.5 * brick / (1e-4 * 1e-4);
+    let lines = r.listing.of(1);
+    assert!(lines.len() >= 5);
+    for l in &lines {
+        let expect = 0.5 * k_total * V * l.t;
+        let f = l.normal[2];
+        assert!(
+            (f - expect).abs() < 0.01 * expect,
+            "t = {}: force {f}, expected {expect}",
+            l.t
+        );
+    }
+}
+
 #[test]
 fn type25_is_identical_on_1_2_4_ranks_and_2_threads_with_a_cut_interface() {
     let d = deck("type25_block");

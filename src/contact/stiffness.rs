@@ -35,6 +35,18 @@ pub fn series(k1: f64, k2: f64) -> f64 {
     }
 }
 
+/// Stiffness from the masses and a time step (the TYPE24/25 IPSTIF option,
+/// LS-DYNA's SOFT = 1/2 contact stiffness): K = s·m1·m2/(m1 + m2)/Δt², the
+/// spring that two masses m1, m2 joined by it keep stable at step Δt for s
+/// small enough (seed 003: k = 0.5·SLSFAC·SFS·m1·m2/(m1+m2)/Δt_c², the 0.5
+/// being the force's half of K in the Radioss types). 0 when Δt or a mass is 0.
+pub fn mass_time_step(s: f64, m1: f64, m2: f64, dt: f64) -> f64 {
+    if dt <= 0.0 || m1 + m2 <= 0.0 {
+        return 0.0;
+    }
+    s * m1 * m2 / (m1 + m2) / (dt * dt)
+}
+
 /// TYPE7 stiffness of a node–segment pair from the Istf flag (card eq. (1)–(3)):
 /// - Istf = 1: K = Stfac (the card's stiffness value);
 /// - Istf = 2, 3, 4, 5: Kn = mean, max, min or series of Km and Ks, then
@@ -70,6 +82,17 @@ pub fn type7_energy(k0: f64, g: f64, p: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_mass_time_step_stiffness_keeps_two_masses_stable() {
+        // Two masses m1, m2 on a spring K oscillate at ω² = K/m*, m* the
+        // reduced mass: with K = s·m*/Δt², ω·Δt = √s (stable for s < 4).
+        let (m1, m2, dt) = (2.0, 6.0, 1e-3);
+        let k = mass_time_step(0.1, m1, m2, dt);
+        let m_red = m1 * m2 / (m1 + m2);
+        assert!(((k / m_red).sqrt() * dt - 0.1f64.sqrt()).abs() < 1e-12);
+        assert_eq!(mass_time_step(0.1, m1, m2, 0.0), 0.0);
+    }
 
     #[test]
     fn istf_options() {

@@ -675,6 +675,15 @@ fn read_type25(cards: &mut Cards) -> InputResult<Type25> {
         sens_id: c6.id_opt(51, "sens_ID")?,
         fric_id: c6.id_opt(91, "fric_ID")?,
         fric_coefs: friction_coefs(cards, ifric)?,
+        ipstif: flag(&c1, 91, "IPSTIF", &[0, 1], 0)?,
+        stfac_mdt: real_ge0(
+            &c3,
+            81,
+            "Stfac_mdt",
+            0.1,
+            "the mass and time-step stiffness factor",
+        )?,
+        dtstif: real_ge0(&c6, 61, "DTstif", 0.0, "the stiffness time step")?,
     })
 }
 

@@ -21,6 +21,10 @@
 //!   damper VISs·√(2·½K·m*)·dP/dt with m* the harmonic mean of the node's
 //!   mass and the segment point's (IVIS2 1; 6: the node's; 4: none);
 //!   incremental Coulomb friction with the full K as tangential penalty.
+//! - IPSTIF = 1 (format 2023): K is at least the mass and time-step
+//!   stiffness Stfac_mdt·m*/Δt² (`stiffness::mass_time_step`, m* the
+//!   harmonic mean of the node's mass and the segment point's, Δt = DTstif
+//!   or the run's step): the piece LS-DYNA's SOFT = 1/2 stiffness is made of.
 //! - Time step: no kinematic step (the penalty is constant); K + C/Δt per
 //!   pair enters the nodal step (EQ. 8.8.5.2).
 
@@ -48,6 +52,8 @@ pub struct Type25 {
     pub gap_scale: f64,
     pub gap_max_s: f64,
     pub gap_max_m: f64,
+    /// IPSTIF = 1: Stfac_mdt and DTstif (0: the run's step); None when off.
+    pub mass_stiffness: Option<(f64, f64)>,
 }
 
 impl InterfaceType for Type25 {
@@ -116,6 +122,7 @@ impl InterfaceType for Type25 {
             gap_scale: t.gap_scale,
             gap_max_s: t.gap_max_s,
             gap_max_m: t.gap_max_m,
+            mass_stiffness: (t.ipstif == 1).then_some((t.stfac_mdt, t.dtstif)),
         };
         Some((own, common))
     }
@@ -194,21 +201,32 @@ impl InterfaceType for Type25 {
             *st = PairState::default();
             return PairOutcome::Free;
         };
-        let k_new = self.pair_stiffness(it, p, k, m);
+        let mm: f64 = (0..4).map(|j| pr.shape[j] * c.cnode_mass[c.main.nodes[j] as usize]).sum();
+        let mut k_new = self.pair_stiffness(it, p, k, m);
+        let mut step_known = true;
+        if let Some((s, dt_s)) = self.mass_stiffness {
+            let dt_s = if dt_s > 0.0 { dt_s } else { c.dt };
+            // Before the first step (Δt = 0) it is not known yet.
+            step_known = dt_s > 0.0;
+            k_new = k_new.max(stiffness::mass_time_step(s, c.ms, mm, dt_s));
+        }
         if st.side == 0 {
-            // A new impact: its penetration is the baseline.
+            // A new impact: its penetration is the baseline, its stiffness
+            // the secant's start (taken at the first step when not known yet).
             *st = PairState {
                 side,
-                pen_memory: [p_raw, 0.0, k_new],
+                pen_memory: [p_raw, 0.0, if step_known { k_new } else { 0.0 }],
                 ..PairState::default()
             };
+        }
+        if st.pen_memory[2] == 0.0 && step_known {
+            st.pen_memory[2] = k_new;
         }
         let pen = (p_raw - st.pen_memory[0]).max(0.0);
         if pen == 0.0 {
             st.pen_memory[1] = 0.0;
             return PairOutcome::Free;
         }
-        let mm: f64 = (0..4).map(|j| pr.shape[j] * c.cnode_mass[c.main.nodes[j] as usize]).sum();
         let mass = match self.ivis2 {
             6 => c.ms,
             _ => c.ms * mm / (c.ms + mm).max(1e-30),

@@ -7,13 +7,15 @@ use serde::{Deserialize, Serialize};
 /// The only gap is the shells' half thickness; a solid face has none.
 ///
 /// Card 1: surf_ID1 (1-10), surf_ID2 (11-20), Istf (21-30), Ithe (31-40),
-/// Igap (41-50), Irem_i2 (51-60), Idel (71-80), Iedge (81-90).
+/// Igap (41-50), Irem_i2 (51-60), Idel (71-80), Iedge (81-90), IPSTIF (91-100, 2023).
 /// Card 2: grnd_IDs (1-10), Gap_scale (21-40), %mesh_size (41-60),
 /// Gap_max_s (61-80), Gap_max_m (81-100).
-/// Card 3: Stmin (1-20), Stmax (21-40), Igap0 (41-50), Ishape (51-60), Edge_angle (61-80).
+/// Card 3: Stmin (1-20), Stmax (21-40), Igap0 (41-50), Ishape (51-60), Edge_angle (61-80),
+/// Stfac_mdt (81-100, 2023).
 /// Card 4: Stfac (1-20), Fric (21-40), Tpressfit (41-60), Tstart (61-80), Tstop (81-100).
 /// Card 5: IBC (8, 9, 10), IVIS2 (21-30), Inacti (31-40), VISs (41-60), Ithick (61-70), Pmax (81-100).
-/// Card 6: Ifric (1-10), Ifiltr (11-20), Xfreq (21-40), sens_ID (51-60), fric_ID (91-100).
+/// Card 6: Ifric (1-10), Ifiltr (11-20), Xfreq (21-40), sens_ID (51-60),
+/// DTstif (61-80, 2023), fric_ID (91-100).
 /// Then C1-C5 (Ifric > 0), C6 (Ifric > 1).
 #[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
 pub struct Type25 {
@@ -77,4 +79,11 @@ pub struct Type25 {
     pub sens_id: Id,
     pub fric_id: Id,
     pub fric_coefs: Option<[f64; 6]>,
+    /// IPSTIF (2023): 0 standard stiffness; 1 the larger of it and the mass
+    /// and time-step stiffness Stfac_mdt·m*/DTstif².
+    pub ipstif: i64,
+    /// Stfac_mdt: 0 → 0.1 (with IPSTIF = 1).
+    pub stfac_mdt: f64,
+    /// DTstif: the time step of that stiffness; 0 = the run's current step.
+    pub dtstif: f64,
 }
