@@ -13,7 +13,9 @@ with TYPE11 edge-to-edge contact between every edge of the upper plate and
 every edge of the lower one (/LINE/SURF, constant gap 0.899 mm: each upper
 edge crosses lower edges 0.9 mm below it, 1 µm outside the gap, so every
 edge has candidates within the sorting reach whose pair kernel runs every
-cycle, as the TYPE7 deck's nodes sit in their Inacti = 5 gaps without force).
+cycle, as the TYPE7 deck's nodes sit in their Inacti = 5 gaps without force);
+or 25: TYPE25 with the upper plate's nodes on the lower plate (gap: the two
+half thicknesses, 1 mm, so each node starts 0.1 mm in, its baseline).
 ci/bench-contact runs it.
 """
 import os
@@ -56,7 +58,21 @@ L += ["/GRNOD/PART/2", "upper plate nodes", i10(2), "/SURF/PART/3", "lower plate
 # so the contact force grows from zero as the plate keeps coming down.
 L += ["/INIVEL/TRA/1", "upper plate down at 0.05 m/s", "#                 Vx                  Vy                  Vz   Gnod_id   Skew_id",
       r20(0) + r20(0) + r20(-0.05) + i10(2) + i10(0)]
-if kind == 11:
+if kind == 25:
+    L += ["/INTER/TYPE25/1", "plate on plate",
+          "#  surf_ID1  surf_ID2      Istf      Ithe      Igap   Irem_i2                Idel     Iedge",
+          i10(0) + i10(3) + i10(0) * 4 + " " * 10 + i10(0) * 2,
+          "#  grnd_IDs                     Gap_scale          %mesh_size           Gap_max_s           Gap_max_m",
+          i10(2) + " " * 10 + r20(0) * 4,
+          "#              Stmin               Stmax     Igap0    Ishape          Edge_angle",
+          r20(0) * 2 + i10(0) * 2 + r20(0),
+          "#              Stfac                Fric           Tpressfit              Tstart               Tstop",
+          r20(1.0) + r20(0.1) + r20(0) * 3,
+          "#      IBC               IVIS2    Inacti                VisS    Ithick                    Pmax",
+          "       000" + " " * 10 + i10(0) * 2 + r20(0) + i10(0) + " " * 10 + r20(0),
+          "#    Ifric    Ifiltr               Xfreq               sens_ID                              fric_ID",
+          i10(0) * 2 + r20(0) + " " * 10 + i10(0) + " " * 30 + i10(0)]
+elif kind == 11:
     L += ["/SURF/PART/4", "upper plate", i10(2), "/LINE/SURF/1", "upper edges", i10(4),
           "/LINE/SURF/2", "lower edges", i10(3)]
     L += ["/INTER/TYPE11/1", "edges on edges",
