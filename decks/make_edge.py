@@ -19,6 +19,12 @@ and then held, pushes A down; A's nodes move along z only.
 * edge_cross_self   the same with one self-contact TYPE11 on both plates'
                     free edges (line_IDm = 0).
 * edge_cross_t7     TYPE7 self-contact on both plates only: A passes through.
+* edge_cross_idel   edge_cross with B's middle shell (under the crossing)
+                    of LAW2 (a = 0.1 GPa, EPS_p_max = 0.002) and B's top
+                    nodes free along z: the shell yields under the load and
+                    is deleted; B's neighbour shells still hold its top edge.
+                    TYPE11 Idel = 2: the edge leaves with its only shell and
+                    A falls through; the tests rewrite Idel to 0 (A stays).
 * edge_cross_t19    TYPE19 between the two plates' surfaces (defaults): its
                     two TYPE7s see nothing, its TYPE11 (all edges, constant
                     gap = the default Gapmin = 1 mm) stops A as edge_cross does.
@@ -38,11 +44,11 @@ H = 3.0             # mm element size
 D0 = 1.0            # mm: initial distance between the edges (= the pair gap)
 
 
-def inter11(iid, title, line_s, line_m, istf=0, igap=0, stfac=0.0, gapmin=0.0, viss=0.0, fric=0.0):
+def inter11(iid, title, line_s, line_m, istf=0, igap=0, stfac=0.0, gapmin=0.0, viss=0.0, fric=0.0, idel=0):
     """/INTER/TYPE11 in the 2020 layout (src/deck/interfaces.rs read_type11)."""
     return [f"/INTER/TYPE11/{iid}", title,
             "# line_IDs  line_IDm      Istf      Ithe      Igap            Irem_gap      Idel",
-            i10(line_s) + i10(line_m) + i10(istf) + i10(0) + i10(igap) + " " * 10 + i10(0) + i10(0),
+            i10(line_s) + i10(line_m) + i10(istf) + i10(0) + i10(igap) + " " * 10 + i10(0) + i10(idel),
             "#              Stmin               Stmax          %mesh_size               dtmin     Iform   sens_ID",
             r20(0) + r20(0) + r20(0) + r20(0) + i10(0) + i10(0),
             "#              Stfac                Fric              Gapmin              Tstart               Tstop",
@@ -83,19 +89,30 @@ def plates():
     return a, b, shells_a, shells_b
 
 
-def deck(name, title, contact):
+def deck(name, title, contact, weak_middle=False):
     a, b, sa, sb = plates()
     S = header(name, title, [
         "Two crossing shell plates: A (part 1) pushed down on the fixed B (part 2);",
         "only their edges meet (decks/make_edge.py)."])
     S += law1(1, "steel") + prop_shell(1, "t = 1 mm", T) + part(1, "plate A", 1, 1) + part(2, "plate B", 1, 1)
-    S += nodes_block(a + b) + shells_block(1, sa) + shells_block(2, sb)
+    S += nodes_block(a + b) + shells_block(1, sa)
+    if weak_middle:
+        S += law2(2, "weak steel") + part(3, "B middle", 1, 2)
+        S += shells_block(2, [sb[0], sb[2]]) + shells_block(3, [sb[1]])
+    else:
+        S += shells_block(2, sb)
     S += group(1, "plate A", [n[0] for n in a]) + group(2, "plate B", [n[0] for n in b])
     S += group(3, "plate A top", [5, 6, 7, 8])
-    S += bcs(1, "A moves along z", "110 111", 1) + bcs(2, "B fixed", "111 111", 2)
+    S += bcs(1, "A moves along z", "110 111", 1)
+    if weak_middle:
+        S += group(4, "plate B bottom", [101, 102, 103, 104]) + group(5, "plate B top", [105, 106, 107, 108])
+        S += bcs(2, "B bottom fixed", "111 111", 4) + bcs(3, "B top moves along z", "110 111", 5)
+    else:
+        S += bcs(2, "B fixed", "111 111", 2)
     S += funct(1, "load ramp", [(0.0, 0.0), (RAMP, 1.0), (100.0, 1.0)])
     S += cload(1, "push A down", 1, "Z", 3, -LOAD / 4)
-    S += surf_part(1, "plate A", [1]) + surf_part(2, "plate B", [2]) + surf_part(3, "both", [1, 2])
+    S += surf_part(1, "plate A", [1]) + surf_part(2, "plate B", [2, 3] if weak_middle else [2])
+    S += surf_part(3, "both", [1, 2])
     S += contact + ["/END"]
     N = engine(name, TEND, -200, comments=[f"{RAMP:g} ms ramp to {LOAD:g} kN, held to {TEND:g} ms."])
     return name, S, N
@@ -105,6 +122,24 @@ def edge_cross():
     return deck("edge_cross", "TYPE11: crossing edges, secondary A, main B",
                 line("EDGE", 1, "A's free edges", [1]) + line("SURF", 2, "B's edges", [2]) +
                 inter11(1, "edges of A on edges of B", 1, 2, igap=1))
+
+
+def law2(mid, title):
+    """Johnson-Cook steel of low yield that fails at a plastic strain of 0.002."""
+    return [f"/MAT/PLAS_JOHNS/{mid}", title, "#              RHO_I", r20(7.85e-6),
+            "#                  E                  Nu     Iflag", r20(210.0) + r20(0.3) + i10(0),
+            "#                  a                   b                   n           EPS_p_max            SIG_max0",
+            r20(0.1) + r20(0.1) + r20(0.5) + r20(0.002) + r20(0),
+            "#                  c           EPS_DOT_0       ICC   Fsmooth               F_cut               Chard",
+            r20(0) + r20(0) + i10(1) + i10(0) + r20(0) + r20(0),
+            "#                  m              T_melt              rhoC_p                 T_r",
+            r20(0) * 4]
+
+
+def edge_cross_idel():
+    return deck("edge_cross_idel", "TYPE11 Idel: the edge under the crossing is deleted",
+                line("EDGE", 1, "A's free edges", [1]) + line("SURF", 2, "B's edges", [2]) +
+                inter11(1, "edges of A on edges of B", 1, 2, igap=1, idel=2), weak_middle=True)
 
 
 def edge_cross_self():
@@ -124,7 +159,7 @@ def edge_cross_t19():
 
 
 MAKERS = dict(edge_cross=edge_cross, edge_cross_self=edge_cross_self, edge_cross_t7=edge_cross_t7,
-              edge_cross_t19=edge_cross_t19)
+              edge_cross_t19=edge_cross_t19, edge_cross_idel=edge_cross_idel)
 
 if __name__ == "__main__":
     out = sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(os.path.abspath(__file__))

@@ -127,6 +127,44 @@ fn type19_is_type7_both_ways_and_type11_and_stops_the_edges_as_type11_does() {
     assert!(t19.final_state_bytes() == t11.final_state_bytes());
 }
 
+/// Idel on TYPE11 (edge_cross_idel): B's shell under the crossing yields and
+/// is deleted at about 0.12 ms while its neighbours still hold its top edge.
+/// With Idel = 2 the edge leaves with its only shell (the listing says so)
+/// and A falls through; with Idel = 0 the edge stays and A rests on it.
+#[test]
+fn an_edge_whose_shell_is_deleted_leaves_the_interface_with_idel() {
+    let with = run(
+        &deck("edge_cross_idel"),
+        &scratch("edge_idel_2"),
+        &RunArgs::default(),
+    );
+    assert!(with.listing.normal_termination());
+    assert!(
+        with.listing.text.contains("IDEL INTER        1 TYPE11")
+            && with.listing.text.contains("Idel = 2"),
+        "no Idel line in the listing"
+    );
+    assert!(
+        edge_height(&with) < -3.0,
+        "A fell through: {}",
+        edge_height(&with)
+    );
+    let dir = scratch("edge_idel_0_deck");
+    // Idel: columns 71-80 of the line below the "# line_IDs" comment.
+    let d = common::deck_variant("edge_cross_idel", &dir, |i, lines| {
+        (i >= 1 && lines[i - 1].starts_with("# line_IDs"))
+            .then(|| common::set_cols(lines[i], 70, 80, 0))
+    });
+    let without = run(&d, &scratch("edge_idel_0"), &RunArgs::default());
+    assert!(!without.listing.text.contains("IDEL INTER"));
+    let h = edge_height(&without);
+    assert!(
+        h > 0.5 && h < 1.0,
+        "A rests on B's edge inside the gap: {h}"
+    );
+    assert!((without.listing.last(1).normal[2] - LOAD).abs() < 0.02 * LOAD);
+}
+
 #[test]
 fn node_to_surface_contact_alone_lets_the_edges_pass_through() {
     let r = run(

@@ -9,6 +9,9 @@
 //! - an edge on shells takes the thickest of them (on equal thickness the
 //!   stiffer): k = E·t, gap t/2; an edge on solids only: k = B·V/L², gap 0
 //!   (the shell wins when both hold it). Stfac multiplies k in the kernel;
+//! - Idel (card /INTER/TYPE11): an edge leaves when all (Idel 1) or any
+//!   (Idel 2) of the elements holding it are deleted; -1, -2 remove main
+//!   edges only;
 //! - the default Gapmin is the mean over the two sides of
 //!   min(l_min/2, DX), DX being the mean (Igap 0) or smallest (Igap ≠ 0)
 //!   shell thickness of the side's edges, or l_min/10 when no edge lies on
@@ -16,7 +19,7 @@
 
 use super::element_data::{bulk, element_volume, node_elements};
 use super::geometry::{self as geo};
-use super::interfaces::layout::Pass;
+use super::interfaces::layout::{IdelRule, Pass};
 use super::interfaces::PassSides;
 use crate::model::{ElementKind, Model};
 use std::collections::HashMap;
@@ -103,6 +106,21 @@ fn edge_data(
     })
 }
 
+/// Idel: the elements of each edge (every element, of any kind, holding
+/// both its nodes), CSR: (ptr, elements).
+fn edge_elements(
+    ne: &HashMap<u32, Vec<(u8, u32)>>,
+    edges: &[[u32; 2]],
+) -> (Vec<u32>, Vec<(u8, u32)>) {
+    let mut ptr = vec![0u32];
+    let mut out = Vec::new();
+    for e in edges {
+        out.extend(ne[&e[0]].iter().filter(|el| ne[&e[1]].contains(el)));
+        ptr.push(out.len() as u32);
+    }
+    (ptr, out)
+}
+
 /// The default Gapmin of one side (see the module's comment).
 fn side_gap1(data: &[EdgeData], igap: i64) -> f64 {
     let l_min = data
@@ -146,6 +164,7 @@ pub(super) fn build_edge_pass(
     m: &Model,
     cnode: &dyn Fn(u32) -> u32,
     igap: i64,
+    idel: i64,
     sides: &PassSides,
     kw: &str,
 ) -> Result<(Pass, EdgeSizes), String> {
@@ -199,6 +218,12 @@ pub(super) fn build_edge_pass(
         sizes.gs_max = sizes.gs_max.max(d.gap);
     }
     sizes.gapmin = 0.5 * (side_gap1(&main, igap) + side_gap1(&sec, igap));
+    if let Some(rule) = IdelRule::of(idel) {
+        (pass.seg_elems_ptr, pass.seg_elems) = edge_elements(&ne, sides.main_edges);
+        if rule.nodes {
+            (pass.sec_elems_ptr, pass.sec_elems) = edge_elements(&ne, sides.sec_edges);
+        }
+    }
     Ok((pass, sizes))
 }
 

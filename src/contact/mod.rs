@@ -521,9 +521,13 @@ impl ContactSystem {
                 let (ii, pi, idx) = (ii as usize, pi as usize, idx as usize);
                 let rule = setup::IdelRule::of(self.setup.interfaces[ii].idel).expect("indexed");
                 let r = &mut self.runs[ii][pi].removal;
+                // A secondary node leaves when none of its elements lives;
+                // a secondary edge as a main entity does (Idel 1: all, 2: any).
+                let edge = self.setup.interfaces[ii].passes[pi].is_edge_pass();
                 if is_node {
                     r.sec_alive[idx] -= 1;
-                    if r.sec_alive[idx] == 0 && !r.sec_off[idx] {
+                    let gone = r.sec_alive[idx] == 0 || (edge && !rule.all);
+                    if gone && !r.sec_off[idx] {
                         r.sec_off[idx] = true;
                         counts[ii].1 += 1;
                         touched.push((ii, pi));

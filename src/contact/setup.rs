@@ -315,8 +315,14 @@ fn build_interface(
                 build_pass(m, surfaces, ty, &common, &sides, &mut sizes, &kw)?
             } else {
                 let cnode = |g: u32| surfaces.cn(g);
-                let (pass, e) =
-                    super::edge_setup::build_edge_pass(m, &cnode, ty.igap(), &sides, &kw)?;
+                let (pass, e) = super::edge_setup::build_edge_pass(
+                    m,
+                    &cnode,
+                    ty.igap(),
+                    common.idel,
+                    &sides,
+                    &kw,
+                )?;
                 sizes.l_sum += e.l_sum;
                 sizes.n_edges += e.n_edges;
                 sizes.l_min = sizes.l_min.min(e.l_min);

@@ -75,7 +75,6 @@ impl InterfaceType for Type11 {
             (t.ithe != 0, "heat transfer (Ithe)"),
             (t.fric_id != 0, "friction from /FRICTION (fric_ID)"),
             (t.irem_gap == 2, "removal of close neighbour lines (Irem_gap = 2)"),
-            (!matches!(t.idel, 0 | 1000), "line deletion with the elements (Idel)"),
             (
                 !matches!(t.inacti, 0 | 1000),
                 "an initial-penetration treatment (Inacti other than 0)",
