@@ -25,6 +25,11 @@ and then held, pushes A down; A's nodes move along z only.
                     is deleted; B's neighbour shells still hold its top edge.
                     TYPE11 Idel = 2: the edge leaves with its only shell and
                     A falls through; the tests rewrite Idel to 0 (A stays).
+* edge_cross_inacti edge_cross with A starting 0.95 mm above B (0.05 mm inside
+                    the gap), TYPE11 Inacti = 1: the secondary edge of the
+                    penetrated pair is switched off and A falls through; the
+                    tests rewrite Inacti to 2 (the main edge off for it: the
+                    same) and 0 (pushed out, then resting as in edge_cross).
 * edge_cross_t19    TYPE19 between the two plates' surfaces (defaults): its
                     two TYPE7s see nothing, its TYPE11 (all edges, constant
                     gap = the default Gapmin = 1 mm) stops A as edge_cross does.
@@ -44,7 +49,8 @@ H = 3.0             # mm element size
 D0 = 1.0            # mm: initial distance between the edges (= the pair gap)
 
 
-def inter11(iid, title, line_s, line_m, istf=0, igap=0, stfac=0.0, gapmin=0.0, viss=0.0, fric=0.0, idel=0):
+def inter11(iid, title, line_s, line_m, istf=0, igap=0, stfac=0.0, gapmin=0.0, viss=0.0, fric=0.0, idel=0,
+            inacti=0):
     """/INTER/TYPE11 in the 2020 layout (src/deck/interfaces.rs read_type11)."""
     return [f"/INTER/TYPE11/{iid}", title,
             "# line_IDs  line_IDm      Istf      Ithe      Igap            Irem_gap      Idel",
@@ -54,7 +60,7 @@ def inter11(iid, title, line_s, line_m, istf=0, igap=0, stfac=0.0, gapmin=0.0, v
             "#              Stfac                Fric              Gapmin              Tstart               Tstop",
             r20(stfac) + r20(fric) + r20(gapmin) + r20(0) + r20(0),
             "#      IBC                        Inacti                VisS                VisF              Bumult",
-            "000".rjust(10) + " " * 20 + i10(0) + r20(viss) + r20(0) + r20(0),
+            "000".rjust(10) + " " * 20 + i10(inacti) + r20(viss) + r20(0) + r20(0),
             "#" + " " * 89 + "  fric_ID", " " * 90 + i10(0)]
 
 
@@ -79,18 +85,18 @@ def line(kind, lid, title, items):
     return [f"/LINE/{kind}/{lid}", title, "".join(i10(v) for v in items)]
 
 
-def plates():
+def plates(d0=D0):
     """Nodes, shells and node groups of the two plates."""
     xs = [-4.5, -1.5, 1.5, 4.5]
-    a = [(1 + i + 4 * j, xs[i], 0.0, D0 + H * j) for j in range(2) for i in range(4)]
+    a = [(1 + i + 4 * j, xs[i], 0.0, d0 + H * j) for j in range(2) for i in range(4)]
     b = [(101 + i + 4 * j, 0.0, xs[i], -H + H * j) for j in range(2) for i in range(4)]
     shells_a = [(1 + i, [1 + i, 2 + i, 6 + i, 5 + i]) for i in range(3)]
     shells_b = [(101 + i, [101 + i, 102 + i, 106 + i, 105 + i]) for i in range(3)]
     return a, b, shells_a, shells_b
 
 
-def deck(name, title, contact, weak_middle=False):
-    a, b, sa, sb = plates()
+def deck(name, title, contact, weak_middle=False, d0=D0):
+    a, b, sa, sb = plates(d0)
     S = header(name, title, [
         "Two crossing shell plates: A (part 1) pushed down on the fixed B (part 2);",
         "only their edges meet (decks/make_edge.py)."])
@@ -142,6 +148,12 @@ def edge_cross_idel():
                 inter11(1, "edges of A on edges of B", 1, 2, igap=1, idel=2), weak_middle=True)
 
 
+def edge_cross_inacti():
+    return deck("edge_cross_inacti", "TYPE11 Inacti: the edges start 0.05 mm inside their gap",
+                line("EDGE", 1, "A's free edges", [1]) + line("SURF", 2, "B's edges", [2]) +
+                inter11(1, "edges of A on edges of B", 1, 2, igap=1, inacti=1), d0=0.95)
+
+
 def edge_cross_self():
     return deck("edge_cross_self", "TYPE11 self-contact: crossing edges",
                 line("EDGE", 1, "free edges of both plates", [3]) +
@@ -159,7 +171,8 @@ def edge_cross_t19():
 
 
 MAKERS = dict(edge_cross=edge_cross, edge_cross_self=edge_cross_self, edge_cross_t7=edge_cross_t7,
-              edge_cross_t19=edge_cross_t19, edge_cross_idel=edge_cross_idel)
+              edge_cross_t19=edge_cross_t19, edge_cross_idel=edge_cross_idel,
+              edge_cross_inacti=edge_cross_inacti)
 
 if __name__ == "__main__":
     out = sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(os.path.abspath(__file__))

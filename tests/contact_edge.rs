@@ -165,6 +165,35 @@ fn an_edge_whose_shell_is_deleted_leaves_the_interface_with_idel() {
     assert!((without.listing.last(1).normal[2] - LOAD).abs() < 0.02 * LOAD);
 }
 
+/// Inacti on TYPE11 (edge_cross_inacti: the crossing pair starts 0.05 mm
+/// inside its 1 mm gap): 1 switches the secondary edge off, 2 the main edge
+/// for it, and A falls through either way until its top edge (3 mm up)
+/// crosses B's top edge and rests there, where the law balances the load.
+/// (With 0 the pair pushes out with the energy stored in the initial
+/// penetration, which the energy check reports.)
+#[test]
+fn inacti_switches_an_initially_penetrated_edge_pair_off() {
+    for inacti in [1, 2] {
+        let dir = scratch(&format!("edge_inacti_{inacti}_deck"));
+        // Inacti: columns 31-40 of the line below the "#      IBC" comment.
+        let d = common::deck_variant("edge_cross_inacti", &dir, |i, lines| {
+            (i >= 1 && lines[i - 1].starts_with("#      IBC"))
+                .then(|| common::set_cols(lines[i], 30, 40, inacti))
+        });
+        let r = run(
+            &d,
+            &scratch(&format!("edge_inacti_{inacti}")),
+            &RunArgs::default(),
+        );
+        let h = edge_height(&r);
+        assert!(
+            h < -2.0,
+            "Inacti {inacti}: A's bottom edge falls through: {h}"
+        );
+        assert!((r.listing.last(1).normal[2] - LOAD).abs() < 0.02 * LOAD);
+    }
+}
+
 #[test]
 fn node_to_surface_contact_alone_lets_the_edges_pass_through() {
     let r = run(

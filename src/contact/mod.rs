@@ -804,7 +804,7 @@ impl ContactSystem {
         for (ii, it) in self.setup.interfaces.iter().enumerate() {
             for (pi, p) in it.passes.iter().enumerate() {
                 if p.is_edge_pass() {
-                    // TYPE11 computes Inacti 0 only (its type refuses the others).
+                    edge_initial_penetrations(it, p, &mut self.runs[ii][pi], &self.cx);
                     continue;
                 }
                 let run = &mut self.runs[ii][pi];
@@ -850,6 +850,29 @@ impl ContactSystem {
                 }
             }
         }
+    }
+}
+
+/// Inacti on an edge pass at the first sort (/INTER/TYPE11 Inacti): a pair
+/// of edges found inside its gap deactivates its secondary edge (1) or,
+/// for that edge, the main edge (2). Its type refuses the other values.
+fn edge_initial_penetrations(it: &setup::Interface, p: &setup::Pass, run: &mut PassRun, cx: &[V3]) {
+    for j in 0..run.mine.len() {
+        let k = run.mine[j] as usize;
+        let [s1, s2] = p.sec_edges[k].map(|c| cx[c as usize]);
+        for q in run.cand.ptr[j]..run.cand.ptr[j + 1] {
+            let m = run.cand.segs[q];
+            let seg = &p.segs[m as usize];
+            let (m1, m2) = (cx[seg[0] as usize], cx[seg[1] as usize]);
+            let g = it.pair_gap(p, k, m as usize);
+            let p0 = g - edge_geometry::closest_points_of_edges(s1, s2, m1, m2).dist;
+            match gap::initial_penetration(it.inacti, 0.0, p0, g) {
+                gap::InitialPenetration::DeactivateNode => run.nodes[j].off = true,
+                gap::InitialPenetration::DeactivateSegment => run.nodes[j].off_segs.push(m),
+                _ => {}
+            }
+        }
+        run.nodes[j].off_segs.sort_unstable();
     }
 }
 

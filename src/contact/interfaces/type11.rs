@@ -76,8 +76,8 @@ impl InterfaceType for Type11 {
             (t.fric_id != 0, "friction from /FRICTION (fric_ID)"),
             (t.irem_gap == 2, "removal of close neighbour lines (Irem_gap = 2)"),
             (
-                !matches!(t.inacti, 0 | 1000),
-                "an initial-penetration treatment (Inacti other than 0)",
+                !matches!(t.inacti, 0 | 1 | 2 | 1000),
+                "an initial-penetration treatment other than Inacti 0, 1, 2",
             ),
             (t.dtmin > 0.0, "a minimum interface time step (dtmin)"),
             (t.ibc.iter().any(|&b| b), "boundary-condition release at impact (IBC)"),
@@ -206,7 +206,8 @@ impl InterfaceType for Type11 {
         Some(f.dt_kin)
     }
 
-    /// Inacti 0 only (the others are refused): a penetrated pair is pushed out.
+    /// Not used: Inacti 1, 2 on edges are decided by the runtime's edge pass
+    /// (`contact::edge_initial_penetrations`); 0 pushes a penetrated pair out.
     fn initial_penetration(
         &self,
         _it: &Interface,
