@@ -141,7 +141,7 @@ fn an_edge_whose_shell_is_deleted_leaves_the_interface_with_idel() {
     assert!(with.listing.normal_termination());
     assert!(
         with.listing.text.contains("IDEL INTER        1 TYPE11")
-            && with.listing.text.contains("Idel = 2"),
+            && with.listing.text.contains("REMOVED      4 MAIN EDGES"),
         "no Idel line in the listing"
     );
     assert!(

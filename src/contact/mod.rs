@@ -61,8 +61,11 @@ pub struct Removed {
     pub inter_id: u64,
     pub type_number: u32,
     pub idel: i64,
+    /// Main segments (edges) and secondary nodes (edges) removed.
     pub segments: u64,
     pub nodes: u64,
+    /// The interface pairs edges: `segments` and `nodes` count edges.
+    pub edges: bool,
     /// Totals since the start.
     pub segments_total: u64,
     pub nodes_total: u64,
@@ -593,6 +596,7 @@ impl ContactSystem {
                 idel: it.idel,
                 segments: s,
                 nodes: n,
+                edges: it.passes.iter().any(|p| p.is_edge_pass()),
                 segments_total: tot.0,
                 nodes_total: tot.1,
             });

@@ -106,8 +106,13 @@ impl Report {
             return;
         }
         for r in s.contact.removed() {
+            let (main, sec) = if r.edges {
+                ("EDGES", "EDGES")
+            } else {
+                ("SEGMENTS", "NODES")
+            };
             self.line(&format!(
-                "     IDEL INTER {:>8} TYPE{:<2} CYCLE {:>8} TIME {:>12.5E}  REMOVED {:>6} MAIN SEGMENTS {:>6} SECONDARY NODES  (TOTAL {} SEGMENTS {} NODES, Idel = {})",
+                "     IDEL INTER {:>8} TYPE{:<2} CYCLE {:>8} TIME {:>12.5E}  REMOVED {:>6} MAIN {main} {:>6} SECONDARY {sec}  (TOTAL {} {main} {} {sec}, Idel = {})",
                 r.inter_id, r.type_number, s.cycle, s.t, r.segments, r.nodes, r.segments_total, r.nodes_total, r.idel
             ));
         }
