@@ -427,7 +427,31 @@ fn read_type7_card(cards: &mut Cards, type19: bool) -> InputResult<Type7> {
 // TYPE11
 // ---------------------------------------------------------------------------
 
-fn read_type11(cards: &mut Cards) -> InputResult<Type11> {
+/// Card 2 of the TYPE11 layouts from 2017: Stmin, Stmax, %mesh_size,
+/// dtmin, Iform, sens_ID.
+fn type11_card2(cards: &mut Cards) -> InputResult<(f64, f64, f64, f64, i64, crate::model::Id)> {
+    let c2 = cards.next("the card with Stmin, Stmax, %mesh_size, dtmin, Iform, sens_ID")?;
+    let stmin = real_ge0(&c2, 1, "Stmin", 0.0, "the minimum stiffness")?;
+    let stmax = real_ge0(&c2, 21, "Stmax", EP30, "the maximum stiffness")?;
+    if stmax < stmin {
+        return Err(c2.err(
+            "Stmax",
+            format!("{stmax} in columns 21-40 is below Stmin = {stmin}: expected Stmax >= Stmin"),
+        ));
+    }
+    let mesh_size_pct = real_ge0(&c2, 41, "%mesh_size", 0.4, "the mesh size fraction")?;
+    let dtmin = real_ge0(&c2, 61, "dtmin", 0.0, "the minimum time step")?;
+    let iform = flag(&c2, 81, "Iform", &[0, 1, 2], 1)?;
+    let sens_id = c2.id_opt(91, "sens_ID")?;
+    Ok((stmin, stmax, mesh_size_pct, dtmin, iform, sens_id))
+}
+
+/// /INTER/TYPE11. `old_layout`: a deck of version below 110 (/BEGIN
+/// invers), whose TYPE11 has three cards (line_IDs line_IDm Istf _ Igap
+/// Multimp _ Idel; Stfac Fric Gap Tstart Tstop; IBC Inacti VISs VISF
+/// Bumult): no Stmin card, no Ithe nor Irem_gap (their columns are blank
+/// or Multimp, ignored).
+fn read_type11(cards: &mut Cards, old_layout: bool) -> InputResult<Type11> {
     let c1 = cards.next("the card with line_IDs, line_IDm, Istf, Ithe, Igap, Irem_gap, Idel")?;
     let line_ids = c1.id(1, "line_IDs")?;
     let line_idm = c1.id_opt(11, "line_IDm")?;
@@ -447,19 +471,11 @@ fn read_type11(cards: &mut Cards) -> InputResult<Type11> {
     }
     let idel = flag(&c1, 71, "Idel", &[-2, -1, 0, 1, 2, 1000], 1000)?;
 
-    let c2 = cards.next("the card with Stmin, Stmax, %mesh_size, dtmin, Iform, sens_ID")?;
-    let stmin = real_ge0(&c2, 1, "Stmin", 0.0, "the minimum stiffness")?;
-    let stmax = real_ge0(&c2, 21, "Stmax", EP30, "the maximum stiffness")?;
-    if stmax < stmin {
-        return Err(c2.err(
-            "Stmax",
-            format!("{stmax} in columns 21-40 is below Stmin = {stmin}: expected Stmax >= Stmin"),
-        ));
-    }
-    let mesh_size_pct = real_ge0(&c2, 41, "%mesh_size", 0.4, "the mesh size fraction")?;
-    let dtmin = real_ge0(&c2, 61, "dtmin", 0.0, "the minimum time step")?;
-    let iform = flag(&c2, 81, "Iform", &[0, 1, 2], 1)?;
-    let sens_id = c2.id_opt(91, "sens_ID")?;
+    let (stmin, stmax, mesh_size_pct, dtmin, iform, sens_id) = if old_layout {
+        (0.0, EP30, 0.4, 0.0, 1, 0)
+    } else {
+        type11_card2(cards)?
+    };
 
     let c3 = cards.next("the card with Stfac, Fric, Gapmin, Tstart, Tstop")?;
     // A negative Stfac is the old way of giving the stiffness itself (Istf = 1).
@@ -710,7 +726,10 @@ pub(super) fn parse_interface(block: &Block, deck: &mut Deck) -> InputResult<boo
         3 => InterfaceKind::Type3(read_type3(&mut cards)?),
         5 => InterfaceKind::Type5(read_type5(&mut cards)?),
         7 => InterfaceKind::Type7(read_type7(&mut cards)?),
-        11 => InterfaceKind::Type11(read_type11(&mut cards)?),
+        11 => {
+            let invers = deck.begin.as_ref().map_or(0, |b| b.invers);
+            InterfaceKind::Type11(read_type11(&mut cards, invers > 0 && invers < 110)?)
+        }
         19 => InterfaceKind::Type19(read_type19(&mut cards)?),
         _ => InterfaceKind::Type25(read_type25(&mut cards)?),
     };
@@ -1237,5 +1256,39 @@ mod tests {
         let b = block("/INTER/TYPE24/1", &["t", "1 2"]);
         assert!(!parse_interface(&b, &mut deck).unwrap());
         assert!(deck.interfaces.is_empty());
+    }
+
+    /// The three-card TYPE11 of a version-100 deck (OpenRadioss QA
+    /// SUBMODEL_update_v_100_PLOAD): no Stmin card; Multimp ignored.
+    #[test]
+    fn type11_of_a_version_100_deck() {
+        let lines = [
+            "edge to edge",
+            "         1         1         0                   0         0                   0",
+            "                   1                   0                   0                   0                   0",
+            "       000                             0                   0                   0                   0",
+        ];
+        let mut deck = Deck {
+            begin: Some(crate::model::Begin {
+                run_name: "OLD".into(),
+                invers: 100,
+                irun: 0,
+                input_units: Default::default(),
+                work_units: Default::default(),
+                loc: Default::default(),
+            }),
+            ..Default::default()
+        };
+        assert!(parse_interface(&block("/INTER/TYPE11/1", &lines), &mut deck).unwrap());
+        let InterfaceKind::Type11(t) = &deck.interfaces[0].kind else {
+            panic!("a TYPE11")
+        };
+        assert_eq!(
+            (t.line_ids, t.line_idm, t.istf, t.igap, t.idel),
+            (1, 1, 5, 1000, 1000)
+        );
+        assert_eq!((t.stfac, t.stmax, t.viss, t.bumult), (1.0, EP30, 0.05, 0.2));
+        // The same lines in a current deck miss the IBC card.
+        assert!(parse("/INTER/TYPE11/1", &lines).is_err());
     }
 }
