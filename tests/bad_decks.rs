@@ -1333,3 +1333,34 @@ fn surface_edges_resolve_to_the_free_edges() {
         "{text}"
     );
 }
+
+#[test]
+fn node_group_of_a_surface_holds_its_nodes() {
+    let c = Case::new("grnod-surf");
+    let mut d = base_deck();
+    let mut extra = surf_part(5, 1);
+    extra.extend([s("/GRNOD/SURF/6"), s("surface nodes"), i10(5)]);
+    extra.extend(inter_type7(10, 6, 5));
+    before_end(&mut d, &extra);
+    let p = c.write_lines(DECK, &d);
+    let out = c.run(&["check", p.to_str().unwrap(), "--json"]);
+    let v: serde_json::Value = serde_json::from_str(&assert_ok(&out)).expect("JSON");
+    assert_eq!(v["interfaces"][0]["secondary_nodes"], 4, "{v}");
+}
+
+#[test]
+fn node_group_of_an_unknown_surface() {
+    let c = Case::new("grnod-surf-bad");
+    let mut d = base_deck();
+    let at = before_end(&mut d, &[s("/GRNOD/SURF/6"), s("surface nodes"), i10(5)]);
+    assert_error(
+        &c.check(&d),
+        Expect {
+            file: DECK,
+            line: at + 2,
+            keyword: "/GRNOD/SURF/6",
+            field: "surf_ID",
+            phrases: &["surface 5 is not defined"],
+        },
+    );
+}

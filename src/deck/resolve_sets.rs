@@ -17,6 +17,8 @@ pub struct SetContext<'a> {
     pub shells4: &'a IdIndex,
     /// Element sets in `Elements::KINDS` order.
     pub elements: &'a [ElementSet],
+    /// The resolved surfaces and their ids (/GRNOD/SURF), once known.
+    pub surfaces: Option<(&'a [Surface], &'a IdIndex)>,
 }
 
 /// Resolves every node group (in deck order).
@@ -108,6 +110,12 @@ fn resolve_group(
                         }
                     }
                 }
+            }
+            NodeGroupKind::Surf => {
+                let (surfaces, surf_index) =
+                    ctx.surfaces.expect("surfaces resolved before node groups");
+                let s = surf_index.resolve(id, loc, &kw, "surf_ID")? as usize;
+                target.extend(surfaces[s].nodes());
             }
             NodeGroupKind::Grnod => {
                 let g = index.resolve(id, loc, &kw, "grnd_ID")? as usize;

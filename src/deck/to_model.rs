@@ -82,10 +82,20 @@ fn build(deck: &Deck) -> Result<Model, InputError> {
         parts: &part_index,
         shells4: &shell4_index,
         elements: &elements,
+        surfaces: None,
     };
-    let node_groups = node_groups(&deck.node_groups, &ctx)?;
     let shell_groups = shell_groups(&deck.shell_groups, &ctx)?;
     let surfaces = surfaces(&deck.surfaces, &shell_groups, &deck.shell_groups, &ctx)?;
+    let surf_index = IdIndex::build(
+        "surface",
+        deck.surfaces.iter().map(|s| (s.id, s.loc.clone())),
+        "/SURF",
+    )?;
+    let ctx = SetContext {
+        surfaces: Some((&surfaces, &surf_index)),
+        ..ctx
+    };
+    let node_groups = node_groups(&deck.node_groups, &ctx)?;
     let refs = Refs {
         node_groups: &node_groups,
         grnod_index: IdIndex::build(
