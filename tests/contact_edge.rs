@@ -74,6 +74,12 @@ fn crossing_edges_stop_where_the_edge_force_balances_the_load() {
     // A comes to rest.
     let s = r.final_state();
     assert!(s[&2][5].abs() < 0.01, "vz {}", s[&2][5]);
+    // The run file's interface history has the pair's force and energy.
+    let h5 = r.dir.join("edge_cross.h5");
+    let got = common::python_check("interface_history.py", &[h5.as_os_str(), "1".as_ref()]);
+    let v: Vec<f64> = got.split_whitespace().map(|w| w.parse().unwrap()).collect();
+    assert_eq!((v[0], v[1]), (11.0, 1.0), "{got}");
+    assert!((v[2] - LOAD).abs() < 0.01 * LOAD && v[3] > 0.0, "{got}");
 }
 
 #[test]

@@ -57,6 +57,24 @@ fn an_initial_penetration_is_the_baseline_only_further_penetration_pushes() {
 /// each lower node makes the upper node's mass to 1e-4. The 16 upper nodes
 /// carry 4.5 brick masses (4 corners 1/8, 8 edges 2/8, 4 inner 4/8).
 #[test]
+fn the_run_file_keeps_the_type25_interface_history() {
+    let r = run(
+        &deck("type25_block"),
+        &scratch("type25_block_h5"),
+        &RunArgs::default(),
+    );
+    let h5 = r.dir.join("type25_block.h5");
+    let got = common::python_check("interface_history.py", &[h5.as_os_str(), "1".as_ref()]);
+    let v: Vec<f64> = got.split_whitespace().map(|w| w.parse().unwrap()).collect();
+    assert_eq!((v[0], v[1]), (25.0, 1.0), "{got}");
+    let last = r.listing.last(1);
+    assert!(
+        (v[2] - last.normal[2]).abs() < 1e-3 * last.normal[2],
+        "{got}"
+    );
+}
+
+#[test]
 fn the_mass_and_time_step_stiffness_pushes_with_stfac_mdt_m_over_dt_squared() {
     let r = run(
         &deck("type25_mass"),
