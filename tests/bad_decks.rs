@@ -1349,6 +1349,21 @@ fn node_group_of_a_surface_holds_its_nodes() {
 }
 
 #[test]
+fn node_group_of_a_shell_group_holds_its_shells_nodes() {
+    let c = Case::new("grnod-grshel");
+    let mut d = base_deck();
+    let mut extra = surf_part(5, 1);
+    extra.extend([s("/GRSHEL/SHEL/3"), s("shells"), i10(1)]);
+    extra.extend([s("/GRNOD/GRSHEL/6"), s("shell nodes"), i10(3)]);
+    extra.extend(inter_type7(10, 6, 5));
+    before_end(&mut d, &extra);
+    let p = c.write_lines(DECK, &d);
+    let out = c.run(&["check", p.to_str().unwrap(), "--json"]);
+    let v: serde_json::Value = serde_json::from_str(&assert_ok(&out)).expect("JSON");
+    assert_eq!(v["interfaces"][0]["secondary_nodes"], 4, "{v}");
+}
+
+#[test]
 fn node_group_of_an_unknown_surface() {
     let c = Case::new("grnod-surf-bad");
     let mut d = base_deck();

@@ -19,6 +19,8 @@ pub struct SetContext<'a> {
     pub elements: &'a [ElementSet],
     /// The resolved surfaces and their ids (/GRNOD/SURF), once known.
     pub surfaces: Option<(&'a [Surface], &'a IdIndex)>,
+    /// The resolved shell groups and their ids (/GRNOD/GRSHEL), once known.
+    pub shell_groups: Option<(&'a [ShellGroup], &'a IdIndex)>,
 }
 
 /// Resolves every node group (in deck order).
@@ -109,6 +111,16 @@ fn resolve_group(
                             );
                         }
                     }
+                }
+            }
+            NodeGroupKind::Grshel => {
+                let (groups, index) = ctx
+                    .shell_groups
+                    .expect("shell groups resolved before node groups");
+                let g = index.resolve(id, loc, &kw, "grshel_ID")? as usize;
+                let shells = &ctx.elements[0];
+                for &e in &groups[g].shells {
+                    target.extend(shells.nodes_of(e as usize).iter().copied());
                 }
             }
             NodeGroupKind::Surf => {

@@ -1,4 +1,4 @@
-//! Sets: /GRNOD/NODE, /GRNOD/GRNOD, /GRNOD/PART, /GRNOD/SURF, /GRSHEL/SHEL, /SURF/PART
+//! Sets: /GRNOD/NODE, /GRNOD/GRNOD, /GRNOD/PART, /GRNOD/SURF, /GRNOD/GRSHEL, /GRSHEL/SHEL, /SURF/PART
 //! (and /SURF/PART/EXT, /SURF/PART/ALL), /SURF/SEG, /SURF/GRSHEL, /SUBSET. Each is a title line then a list of ids,
 //! ten 10-column fields a line, until the next keyword (/SURF/SEG: one
 //! segment a line). Ids are resolved by `to_model`.
@@ -21,6 +21,8 @@ pub enum NodeGroupKind {
     Part,
     /// /GRNOD/SURF: every node of the surfaces' segments.
     Surf,
+    /// /GRNOD/GRSHEL: every node of the shells of the shell groups.
+    Grshel,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -107,11 +109,12 @@ pub(super) fn parse_set(block: &Block, deck: &mut Deck) -> InputResult<bool> {
     let p0 = block.parts[0].as_str();
     let p1 = block.parts.get(1).map(String::as_str).unwrap_or("");
     match (p0, p1) {
-        ("GRNOD", "NODE" | "GRNOD" | "PART" | "SURF") => {
+        ("GRNOD", "NODE" | "GRNOD" | "PART" | "SURF" | "GRSHEL") => {
             let kind = match p1 {
                 "NODE" => NodeGroupKind::Node,
                 "GRNOD" => NodeGroupKind::Grnod,
                 "SURF" => NodeGroupKind::Surf,
+                "GRSHEL" => NodeGroupKind::Grshel,
                 _ => NodeGroupKind::Part,
             };
             let id = header_id(block, 2, "grnd_ID")?;

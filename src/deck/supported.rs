@@ -78,7 +78,7 @@ pub const SUPPORTED: &[Supported] = &[
     s("/DEF_SHELL, /DEF_SOLID", &["/DEF_SHELL", "/DEF_SOLID"], "defaults for shell and solid sections"),
     s("/FUNCT", &["/FUNCT/1"], "tabulated functions"),
     s("/ADMAS", &["/ADMAS/0/1", "/ADMAS/1/1"], "added mass, types 0 (per node) and 1 (shared)"),
-    s("/GRNOD/NODE, /GRNOD/GRNOD, /GRNOD/PART, /GRNOD/SURF", &["/GRNOD/NODE/1", "/GRNOD/GRNOD/1", "/GRNOD/PART/1", "/GRNOD/SURF/1"], "node groups (of nodes, groups, parts' elements, surfaces' segments)"),
+    s("/GRNOD/NODE, /GRNOD/GRNOD, /GRNOD/PART, /GRNOD/SURF, /GRNOD/GRSHEL", &["/GRNOD/NODE/1", "/GRNOD/GRNOD/1", "/GRNOD/PART/1", "/GRNOD/SURF/1", "/GRNOD/GRSHEL/1"], "node groups (of nodes, groups, parts' elements, surfaces' segments, shell groups' shells)"),
     s("/GRSHEL/SHEL", &["/GRSHEL/SHEL/1"], "shell groups"),
     s(
         "/SURF/PART (/EXT, /ALL), /SURF/GRSHEL, /SURF/SEG",

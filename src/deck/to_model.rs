@@ -83,6 +83,7 @@ fn build(deck: &Deck) -> Result<Model, InputError> {
         shells4: &shell4_index,
         elements: &elements,
         surfaces: None,
+        shell_groups: None,
     };
     let shell_groups = shell_groups(&deck.shell_groups, &ctx)?;
     let surfaces = surfaces(&deck.surfaces, &shell_groups, &deck.shell_groups, &ctx)?;
@@ -91,8 +92,14 @@ fn build(deck: &Deck) -> Result<Model, InputError> {
         deck.surfaces.iter().map(|s| (s.id, s.loc.clone())),
         "/SURF",
     )?;
+    let grshel_index = IdIndex::build(
+        "shell group",
+        deck.shell_groups.iter().map(|g| (g.id, g.loc.clone())),
+        "/GRSHEL",
+    )?;
     let ctx = SetContext {
         surfaces: Some((&surfaces, &surf_index)),
+        shell_groups: Some((&shell_groups, &grshel_index)),
         ..ctx
     };
     let node_groups = node_groups(&deck.node_groups, &ctx)?;
