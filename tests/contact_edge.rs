@@ -131,6 +131,7 @@ fn type19_is_type7_both_ways_and_type11_and_stops_the_edges_as_type11_does() {
     // The default gap of the edge part (Igap 0: the default Gapmin, the mean
     // thickness 1 mm) is the sum of the half thicknesses: the same run.
     assert!(t19.final_state_bytes() == t11.final_state_bytes());
+    assert_same_final_state_on_2_ranks(&deck("edge_cross_t19"), "edge_cross_t19_2", &t19);
 }
 
 /// Idel on TYPE11 (edge_cross_idel): B's shell under the crossing yields and
