@@ -44,6 +44,9 @@ column (71-80 of the first card of each /INTER/TYPE7) for each variant.
 * idel_gap_t5   idel_gap with interface 1 a /INTER/TYPE5 (Gap 0.2, Idel 2 in
                 the written deck) and no interface 2: Idel = 2 lets the cube
                 through, Idel = 0 (no deletion) stops it.
+* idel_gap_t25  the same with interface 1 a /INTER/TYPE25 (the cube's nodes
+                on the plate; gap: the plate's half thickness): Idel = 2 lets
+                the cube through, Idel = 0 stops it.
 """
 import os
 import sys
@@ -86,7 +89,24 @@ def inter5(iid, title, sec, main, gap, idel):
             "       000" + " " * 10 + i10(0) + i10(0)]
 
 
-def deck(name, layers, type5=False):
+def inter25(iid, title, grnod, surf, idel):
+    """/INTER/TYPE25, nodes to surface (src/deck/interfaces.rs read_type25), defaults."""
+    return [f"/INTER/TYPE25/{iid}", title,
+            "#  surf_ID1  surf_ID2      Istf      Ithe      Igap   Irem_i2                Idel     Iedge",
+            i10(0) + i10(surf) + i10(0) * 4 + " " * 10 + i10(idel) + i10(0),
+            "#  grnd_IDs                     Gap_scale          %mesh_size           Gap_max_s           Gap_max_m",
+            i10(grnod) + " " * 10 + r20(0) * 4,
+            "#              Stmin               Stmax     Igap0    Ishape          Edge_angle",
+            r20(0) * 2 + i10(0) * 2 + r20(0),
+            "#              Stfac                Fric           Tpressfit              Tstart               Tstop",
+            r20(0) * 5,
+            "#      IBC               IVIS2    Inacti                VisS    Ithick                    Pmax",
+            "000".rjust(10) + " " * 10 + i10(0) * 2 + r20(0) + i10(0) + " " * 10 + r20(0),
+            "#    Ifric    Ifiltr               Xfreq               sens_ID                              fric_ID",
+            i10(0) * 2 + r20(0) + " " * 10 + i10(0) + " " * 30 + i10(0)]
+
+
+def deck(name, layers, type5=False, type25=False):
     nid = lambda i, j: 1 + i + (NX + 1) * j
     nodes = [(nid(i, j), H * i, H * j, 0.0) for j in range(NY + 1) for i in range(NX + 1)]
     steel, band, weak = [], [], []
@@ -143,11 +163,13 @@ def deck(name, layers, type5=False):
     S += group(7, "band middle line", [nid(BAND[1], j) for j in range(NY + 1)])
     S += impvel(2, f"band middle line driven at V/2 = {V / 2:g}", 1, "X", 7, V / 2)
     S += inivel(1, "cube", (V / 2, 0.0, VZ), 4)
-    if type5:
+    if type25:
+        S += inter25(1, "cube on the plate (TYPE25)", 4, 5, 2)
+    elif type5:
         S += inter5(1, "cube on the plate (TYPE5)", 4, 5, GAPMIN, 2)
     else:
         S += inter7(1, "cube on the plate", 4, 5, gapmin=GAPMIN, idel=2)
-    if not layers and not type5:
+    if not layers and not type5 and not type25:
         S += inter7(2, "plate nodes on the cube", 1, 6, gapmin=GAPMIN, idel=2)
     S += ["/END"]
     N = engine(name, TEND, -100, comments=[f"{TEND:g} ms: the cube has passed the plate's plane or been stopped."])
@@ -155,7 +177,8 @@ def deck(name, layers, type5=False):
 
 
 DECKS = {"idel_gap": lambda: deck("idel_gap", False), "idel_layers": lambda: deck("idel_layers", True),
-         "idel_gap_t5": lambda: deck("idel_gap_t5", False, True)}
+         "idel_gap_t5": lambda: deck("idel_gap_t5", False, True),
+         "idel_gap_t25": lambda: deck("idel_gap_t25", False, type25=True)}
 
 if __name__ == "__main__":
     out = sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(os.path.abspath(__file__))

@@ -30,7 +30,7 @@ const CUBE: [u64; 8] = [1001, 1002, 1003, 1004, 1005, 1006, 1007, 1008];
 /// The band's shells (columns 3 and 4 of the 8 x 4 plate).
 const BAND: [u64; 8] = [104, 105, 112, 113, 120, 121, 128, 129];
 
-/// decks/NAME with the Idel column (71-80) of every /INTER/TYPE7 and TYPE5 set to `idel`.
+/// decks/NAME with the Idel column (71-80) of every /INTER/TYPE7, TYPE5 and TYPE25 set to `idel`.
 fn variant(name: &str, idel: i64, dir: &Path) -> PathBuf {
     deck_variant(name, dir, |i, lines| {
         inter_line(i, lines, 3).then(|| set_cols(lines[i], 70, 80, idel))
@@ -285,4 +285,17 @@ fn type5_idel_2_removes_the_segments_idel_0_keeps_them() {
     assert!(r2b.final_state_bytes() == r2.final_state_bytes());
     let r0b = run_idel("idel_gap_t5", 0, "t5-0-np2", 2);
     assert!(r0b.final_state_bytes() == r0.final_state_bytes());
+}
+
+#[test]
+fn type25_idel_2_removes_the_segments_idel_0_keeps_them() {
+    let r0 = run_idel("idel_gap_t25", 0, "t25-0", 1);
+    band_deleted(&r0);
+    assert!(idel_lines(&r0.listing).is_empty());
+    stopped(&cube(&r0.final_state()), "TYPE25, Idel = 0");
+    let r2 = run_idel("idel_gap_t25", 2, "t25-2", 1);
+    assert_eq!(removed(&r2.listing, 1), (8, 0));
+    through(&cube(&r2.final_state()), "TYPE25, Idel = 2");
+    let r2b = run_idel("idel_gap_t25", 2, "t25-2-np2", 2);
+    assert!(r2b.final_state_bytes() == r2.final_state_bytes());
 }

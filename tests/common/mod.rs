@@ -202,7 +202,9 @@ pub fn deck_variant(
 /// and the title counted as in the decks: title, then comment/data pairs).
 pub fn inter_line(i: usize, lines: &[&str], k: usize) -> bool {
     i >= k
-        && (lines[i - k].starts_with("/INTER/TYPE7/") || lines[i - k].starts_with("/INTER/TYPE5/"))
+        && ["/INTER/TYPE7/", "/INTER/TYPE5/", "/INTER/TYPE25/"]
+            .iter()
+            .any(|t| lines[i - k].starts_with(t))
 }
 
 /// Replaces columns [a, b) (0-based) of a line by `v` right-aligned.

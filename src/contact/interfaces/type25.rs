@@ -25,6 +25,9 @@
 //!   stiffness Stfac_mdt·m*/Δt² (`stiffness::mass_time_step`, m* the
 //!   harmonic mean of the node's mass and the segment point's, Δt = DTstif
 //!   or the run's step): the piece LS-DYNA's SOFT = 1/2 stiffness is made of.
+//! - Idel as TYPE7's: a main segment leaves when all (±1) or any (±2) of
+//!   its elements are deleted, and (1, 2) a secondary node none of whose
+//!   elements lives.
 //! - Time step: no kinematic step (the penalty is constant); K + C/Δt per
 //!   pair enters the nodal step (EQ. 8.8.5.2).
 
@@ -74,7 +77,6 @@ impl InterfaceType for Type25 {
             (!matches!(t.igap, 0 | 1), "a gap option other than the half thicknesses (Igap 2, 3, 5)"),
             (t.igap0 == 1, "zero gap on free-edge shell nodes (Igap0 = 1)"),
             (t.ishape == 2, "the rounded gap shape along free edges (Ishape = 2)"),
-            (!matches!(t.idel, 0 | 1000), "segment deletion with the elements (Idel)"),
             (
                 !matches!(t.inacti, 0 | 5 | 1000),
                 "an initial-penetration treatment other than the baseline (Inacti -1, 1, 3)",
