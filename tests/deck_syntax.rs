@@ -450,12 +450,12 @@ fn bcs_trarot_short_forms_read_by_column() {
 
 #[test]
 fn a_dangling_id_names_the_unsupported_keyword_that_would_define_it() {
-    // OpenRadioss QA AMS_boxbeam: /INTER/TYPE7 names node group 5, which
-    // /GRNOD/GRSHEL/5 (not supported) defines.
+    // As OpenRadioss QA AMS_boxbeam did before /GRNOD/GRSHEL was read: a
+    // condition names node group 5, which /GRNOD/BOX/5 (not supported) defines.
     let c = Case::new("dangling");
     let deck = two_bricks(&[
-        "/GRNOD/GRSHEL/5",
-        "from shells",
+        "/GRNOD/BOX/5",
+        "from a box",
         &i10(1),
         "/BCS/1",
         "fix",
@@ -466,7 +466,7 @@ fn a_dangling_id_names_the_unsupported_keyword_that_would_define_it() {
     assert_eq!(e.field, "grnod_ID");
     assert!(
         e.message.contains("node group 5 is not defined")
-            && e.message.contains("/GRNOD/GRSHEL/5 at")
+            && e.message.contains("/GRNOD/BOX/5 at")
             && e.message.contains("not supported"),
         "{e}"
     );
