@@ -18,21 +18,31 @@ Units: kg, mm, ms (force kN, stress GPa). Steel bricks: E = 210, nu = 0.3.
                  made negligible (Stfac = 1e-6); 1 kg added on each node of
                  the lower block's top, so each pair's reduced mass is the
                  upper node's: F = sum over the nodes of 0.2 m_i / DTstif^2 / 2 * v * t.
+* type25_edge    a 1 mm shell plate standing on its free edge 0.3 mm over the
+                 fixed block, driven down at 1 mm/ms; its 4 edge nodes on the
+                 block, Igap0 = 1: they have no gap, so the force starts when
+                 they reach the face (0.3 ms) and is 4 * K/2 * v * (t - 0.3);
+                 with Igap0 = 0 (the tests rewrite it) their gap is 0.5 mm,
+                 they start inside it, and the force is 4 * K/2 * v * t.
 """
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from make_contact import (Box, header, law1, prop_solid, part, nodes_block, bricks_block,  # noqa: E402
-                          group, surf_part, bcs, funct, impvel, engine, write, i10, r20)
+from make_contact import (Box, header, law1, prop_solid, prop_shell, part, nodes_block,  # noqa: E402
+                          bricks_block, shells_block, group, surf_part, bcs, funct, impvel, engine,
+                          write, i10, r20)
 
 P0 = 0.1        # mm: initial penetration
+EDGE_D0 = 0.3   # mm: type25_edge's plate edge over the block
+EDGE_V = 1.0    # mm/ms
+EDGE_TEND = 0.5 # ms
 V = 0.01        # mm/ms: downward speed of the upper block
 TEND = 0.3      # ms
 
 
 def inter25(iid, title, surf1, surf2, grnod, istf=0, fric=0.0, viss=0.0, inacti=0,
-            stfac=0.0, ipstif=0, stfac_mdt=0.0, dtstif=0.0):
+            stfac=0.0, ipstif=0, stfac_mdt=0.0, dtstif=0.0, igap0=0):
     """/INTER/TYPE25 in the 2023 layout (src/deck/interfaces.rs read_type25)."""
     return [f"/INTER/TYPE25/{iid}", title,
             "#  surf_ID1  surf_ID2      Istf      Ithe      Igap   Irem_i2                Idel     Iedge    IPSTIF",
@@ -40,7 +50,7 @@ def inter25(iid, title, surf1, surf2, grnod, istf=0, fric=0.0, viss=0.0, inacti=
             "#  grnd_IDs                     Gap_scale          %mesh_size           Gap_max_s           Gap_max_m",
             i10(grnod) + " " * 10 + r20(0) * 4,
             "#              Stmin               Stmax     Igap0    Ishape          Edge_angle           Stfac_mdt",
-            r20(0) * 2 + i10(0) * 2 + r20(0) + r20(stfac_mdt),
+            r20(0) * 2 + i10(igap0) + i10(0) + r20(0) + r20(stfac_mdt),
             "#              Stfac                Fric           Tpressfit              Tstart               Tstop",
             r20(stfac) + r20(fric) + r20(0) * 3,
             "#      IBC               IVIS2    Inacti                VisS    Ithick                    Pmax",
@@ -78,11 +88,38 @@ def type25_block(name="type25_block", mass_stiffness=False):
     return name, S, N
 
 
+def type25_edge():
+    """A 1 mm shell plate standing on its free edge 0.3 mm over the block."""
+    name = "type25_edge"
+    lower = Box(1, 1, (0.0, 0.0, -5.0), (10.0, 10.0, 5.0), (2, 2, 1))
+    xs = [1.25, 3.75, 6.25, 8.75]
+    plate = [(201 + i + 4 * j, xs[i], 3.75, EDGE_D0 + 2.5 * j) for j in range(2) for i in range(4)]
+    shells = [(201 + i, [201 + i, 202 + i, 206 + i, 205 + i]) for i in range(3)]
+    S = header(name, "TYPE25: a shell plate's free edge pressed on a block", [
+        "A 1 mm shell plate stands on its free edge 0.3 mm over a fixed block and is driven",
+        "down at 1 mm/ms; TYPE25 Igap0 = 1: its edge nodes have no gap (decks/make_type25.py)."])
+    S += law1(1, "steel") + prop_solid(1, "bricks") + prop_shell(2, "plate", 1.0)
+    S += part(1, "block", 1, 1) + part(2, "plate", 2, 1)
+    S += nodes_block(lower.nodes() + plate)
+    S += bricks_block(1, lower.bricks()) + shells_block(2, shells)
+    S += group(1, "block", [n[0] for n in lower.nodes()])
+    S += group(2, "plate", [n[0] for n in plate])
+    S += group(3, "plate bottom edge", [201, 202, 203, 204])
+    S += bcs(1, "block fixed", "111 000", 1)
+    S += funct(1, "constant", [(0.0, 1.0), (100.0, 1.0)])
+    S += impvel(1, "plate down", 1, "Z", 2, -EDGE_V)
+    S += surf_part(1, "block", [1])
+    S += inter25(1, "plate edge nodes on the block", 0, 1, 3, igap0=1)
+    S += ["/END"]
+    N = engine(name, EDGE_TEND, -100, comments=[f"{EDGE_TEND:g} ms at {EDGE_V:g} mm/ms."])
+    return name, S, N
+
+
 def type25_mass():
     return type25_block("type25_mass", mass_stiffness=True)
 
 
-MAKERS = dict(type25_block=type25_block, type25_mass=type25_mass)
+MAKERS = dict(type25_block=type25_block, type25_mass=type25_mass, type25_edge=type25_edge)
 
 if __name__ == "__main__":
     out = sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(os.path.abspath(__file__))

@@ -56,6 +56,40 @@ fn an_initial_penetration_is_the_baseline_only_further_penetration_pushes() {
 /// mass of the upper node and the lower face's point, which the 1 kg added on
 /// each lower node makes the upper node's mass to 1e-4. The 16 upper nodes
 /// carry 4.5 brick masses (4 corners 1/8, 8 edges 2/8, 4 inner 4/8).
+/// Igap0 (type25_edge: a 1 mm plate's 4 free-edge nodes 0.3 mm over the
+/// block, driven down at 1 mm/ms). With Igap0 = 1 they have no gap: the force
+/// starts as they reach the face at 0.3 ms, 4·½K·v·(t − 0.3). With Igap0 = 0
+/// their gap is half the thickness, 0.5 mm, so they start inside it (the
+/// baseline) and the force is 4·½K·v·t. Within 1% plus one step's approach.
+#[test]
+fn igap0_takes_the_gap_off_free_shell_edges() {
+    let slack = 4.0 * half_k() * 1.0 * 1e-3;
+    for (igap0, onset) in [(1, 0.3), (0, 0.0)] {
+        let dir = scratch(&format!("type25_edge_{igap0}_deck"));
+        // Igap0: columns 41-50 of the line below the "#              Stmin" comment.
+        let d = common::deck_variant("type25_edge", &dir, |i, lines| {
+            (i >= 1 && lines[i - 1].starts_with("#              Stmin"))
+                .then(|| common::set_cols(lines[i], 40, 50, igap0))
+        });
+        let r = run(
+            &d,
+            &scratch(&format!("type25_edge_{igap0}")),
+            &RunArgs::default(),
+        );
+        let lines = r.listing.of(1);
+        assert!(lines.len() >= 4);
+        for l in &lines {
+            let expect = 4.0 * half_k() * 1.0 * (l.t - onset).max(0.0);
+            let f = l.normal[2];
+            assert!(
+                (f - expect).abs() < 0.01 * expect + slack,
+                "Igap0 {igap0}, t = {}: force {f}, expected {expect}",
+                l.t
+            );
+        }
+    }
+}
+
 #[test]
 fn the_run_file_keeps_the_type25_interface_history() {
     let r = run(

@@ -37,3 +37,28 @@ pub(super) fn element_volume(m: &Model, ki: usize, e: usize) -> f64 {
         _ => 0.0,
     }
 }
+
+/// The nodes on a free edge of the model's shells: an edge of a 4- or
+/// 3-node shell that no other shell shares.
+pub(super) fn free_shell_edge_nodes(m: &Model) -> std::collections::HashSet<u32> {
+    let mut count: HashMap<[u32; 2], u32> = HashMap::new();
+    for set in &m.elements {
+        if !matches!(set.kind, ElementKind::Shell4 | ElementKind::Shell3) {
+            continue;
+        }
+        for e in 0..set.len() {
+            let n = set.nodes_of(e);
+            for k in 0..n.len() {
+                let (a, b) = (n[k], n[(k + 1) % n.len()]);
+                if a != b {
+                    *count.entry([a.min(b), a.max(b)]).or_default() += 1;
+                }
+            }
+        }
+    }
+    count
+        .into_iter()
+        .filter(|&(_, c)| c == 1)
+        .flat_map(|(e, _)| e)
+        .collect()
+}

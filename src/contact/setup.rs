@@ -441,9 +441,15 @@ fn build_pass(
     let mut sec_k = Vec::new();
     let mut sec_gap = Vec::new();
     let mut sec_lmin = Vec::new();
+    let border = if ty.zero_gap_on_free_shell_edges() {
+        super::element_data::free_shell_edge_nodes(m)
+    } else {
+        std::collections::HashSet::new()
+    };
     for &n in sec {
         let (k, g, l) = nd[&n];
         sec_k.push(own_k.get(&n).copied().unwrap_or(k));
+        let g = if border.contains(&n) { 0.0 } else { g };
         sec_gap.push(g);
         sizes.gs_max = sizes.gs_max.max(g);
         sec_lmin.push(if l.is_finite() { l } else { 0.0 });

@@ -336,6 +336,12 @@ pub trait InterfaceType: Sync {
         0.0
     }
 
+    /// Igap0 = 1 (TYPE25): secondary nodes on a free edge of the shells take
+    /// no gap of their own.
+    fn zero_gap_on_free_shell_edges(&self) -> bool {
+        false
+    }
+
     /// Irem_gap = 2: the sort leaves out main segments with a node closer
     /// than 2·Gapmin to the secondary node in the initial configuration.
     fn removes_initially_close(&self) -> bool {

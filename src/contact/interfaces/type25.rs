@@ -4,7 +4,8 @@
 //! (Iedge) is refused by name.
 //!
 //! - Gap: only the shells' half thicknesses, g = g_s + g_m (each times
-//!   Gap_scale, each at most Gap_max_s, Gap_max_m); a solid face has none.
+//!   Gap_scale, each at most Gap_max_s, Gap_max_m); a solid face has none;
+//!   with Igap0 = 1 a secondary node on a free shell edge has none either.
 //!   A solid face is one-sided: a node behind it (over its inside, the
 //!   projection within the face) penetrates by its depth; a shell is
 //!   two-sided, its side taken at the impact.
@@ -57,6 +58,9 @@ pub struct Type25 {
     pub gap_max_m: f64,
     /// IPSTIF = 1: Stfac_mdt and DTstif (0: the run's step); None when off.
     pub mass_stiffness: Option<(f64, f64)>,
+    /// Igap0 = 1: secondary nodes on a free shell edge have no gap.
+    #[serde(default)]
+    pub igap0: bool,
 }
 
 impl InterfaceType for Type25 {
@@ -75,7 +79,6 @@ impl InterfaceType for Type25 {
             (t.ifric != 0 || t.ifiltr != 0, "a friction law or filter (Ifric, Ifiltr)"),
             (!matches!(t.iedge, 0 | 1000), "edge-to-edge contact (Iedge)"),
             (!matches!(t.igap, 0 | 1), "a gap option other than the half thicknesses (Igap 2, 3, 5)"),
-            (t.igap0 == 1, "zero gap on free-edge shell nodes (Igap0 = 1)"),
             (t.ishape == 2, "the rounded gap shape along free edges (Ishape = 2)"),
             (
                 !matches!(t.inacti, 0 | 5 | 1000),
@@ -125,6 +128,7 @@ impl InterfaceType for Type25 {
             gap_max_s: t.gap_max_s,
             gap_max_m: t.gap_max_m,
             mass_stiffness: (t.ipstif == 1).then_some((t.stfac_mdt, t.dtstif)),
+            igap0: t.igap0 == 1,
         };
         Some((own, common))
     }
@@ -168,6 +172,10 @@ impl InterfaceType for Type25 {
 
     fn sorting_margin(&self) -> f64 {
         0.2
+    }
+
+    fn zero_gap_on_free_shell_edges(&self) -> bool {
+        self.igap0
     }
 
     /// Half the solid stiffness B·A²/V (EQ. 8.5.3.3), as the shell's 0.5·E·t:
