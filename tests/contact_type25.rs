@@ -90,6 +90,29 @@ fn igap0_takes_the_gap_off_free_shell_edges() {
     }
 }
 
+/// A main surface with faces between two solids (/SURF/PART/ALL) is refused
+/// by name: the reference engine makes such a face a contact segment only
+/// once a solid is deleted, which is not computed.
+#[test]
+fn type25_refuses_inner_solid_faces_by_name() {
+    let dir = scratch("type25_all_faces");
+    let d = common::deck_variant("type25_block", &dir, |i, lines| {
+        (lines[i] == "/SURF/PART/1").then(|| "/SURF/PART/ALL/1".to_string())
+    });
+    let out = common::crashsim(&[
+        "run",
+        d.to_str().unwrap(),
+        "--out",
+        dir.join("out").to_str().unwrap(),
+    ]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("/INTER/TYPE25/1") && err.contains("a face between two solids"),
+        "{err}"
+    );
+}
+
 #[test]
 fn the_run_file_keeps_the_type25_interface_history() {
     let r = run(

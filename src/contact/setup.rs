@@ -389,6 +389,9 @@ fn build_pass(
     kw: &str,
 ) -> Result<Pass, String> {
     let main = sides.main;
+    if !ty.inner_solid_faces_as_segments() {
+        refuse_inner_solid_faces(m, main, kw)?;
+    }
     let mut segs = Vec::new();
     let mut seg_k = Vec::new();
     let mut seg_gap = Vec::new();
@@ -484,6 +487,32 @@ fn build_pass(
         pass.sec_start_seg = starter_closest_segments(m, surfaces.all, &pass);
     }
     Ok(pass)
+}
+
+/// A main segment that is a face of two solids (an inner face, as
+/// /SURF/PART/ALL gives) is refused by types that would make it a contact
+/// segment only once one of the solids is deleted.
+fn refuse_inner_solid_faces(m: &Model, main: &[[u32; 4]], kw: &str) -> Result<(), String> {
+    let solids = |k: u8| {
+        matches!(
+            ElementKind::ALL[k as usize],
+            ElementKind::Brick8 | ElementKind::Tetra4
+        )
+    };
+    let faces = face_elements(m);
+    for seg in main {
+        let n = faces
+            .get(&face_key(seg))
+            .map_or(0, |v| v.iter().filter(|e| solids(e.0)).count());
+        if n >= 2 {
+            let id = |c: u32| m.nodes.ids[c as usize];
+            return Err(format!(
+                "{kw}: main segment {} {} {} {} is a face between two solids (an inner face, e.g. of /SURF/PART/ALL): this type makes such a face a contact segment only once one of its solids is deleted, which is not computed yet; expected outer faces (/SURF/PART, /SURF/PART/EXT)",
+                id(seg[0]), id(seg[1]), id(seg[2]), id(seg[3])
+            ));
+        }
+    }
+    Ok(())
 }
 
 /// The segments around each main node, CSR over the nodes of `segs`

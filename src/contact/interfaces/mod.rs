@@ -336,6 +336,13 @@ pub trait InterfaceType: Sync {
         0.0
     }
 
+    /// Whether a face between two solids may be a main segment from the
+    /// start (TYPE7, 3, 5: yes; TYPE25 activates such faces only when a
+    /// solid is deleted, which is not computed: it refuses them).
+    fn inner_solid_faces_as_segments(&self) -> bool {
+        true
+    }
+
     /// Igap0 = 1 (TYPE25): secondary nodes on a free edge of the shells take
     /// no gap of their own.
     fn zero_gap_on_free_shell_edges(&self) -> bool {

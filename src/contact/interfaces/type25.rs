@@ -178,6 +178,13 @@ impl InterfaceType for Type25 {
         self.igap0
     }
 
+    /// The reference engine keeps a face between two solids out of contact
+    /// until one of them is deleted; that activation is not computed, so
+    /// such faces are refused.
+    fn inner_solid_faces_as_segments(&self) -> bool {
+        false
+    }
+
     /// Half the solid stiffness B·A²/V (EQ. 8.5.3.3), as the shell's 0.5·E·t:
     /// segment stiffness is stored as the force stiffness ½·K.
     fn solid_segment_stiffness(&self, bulk: f64, area: f64, volume: f64) -> f64 {
