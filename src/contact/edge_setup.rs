@@ -21,7 +21,7 @@ use super::element_data::{bulk, element_volume, node_elements};
 use super::geometry::{self as geo};
 use super::interfaces::layout::{IdelRule, Pass};
 use super::interfaces::PassSides;
-use crate::model::{ElementKind, Model};
+use crate::model::{distinct_nodes, ElementKind, Model};
 use std::collections::HashMap;
 
 /// What one edge takes from the element under it.
@@ -48,10 +48,7 @@ fn edge_data(
     let xb = m.nodes.x[e[1] as usize];
     let len = geo::norm(geo::sub(xb, xa));
     let mut best: Option<EdgeData> = None;
-    for &(ki, el) in &ne[&e[0]] {
-        if !ne[&e[1]].contains(&(ki, el)) {
-            continue;
-        }
+    for &(ki, el) in elements_holding(ne, e) {
         let set = &m.elements[ki as usize];
         let shell = matches!(set.kind, ElementKind::Shell4 | ElementKind::Shell3);
         let solid = matches!(set.kind, ElementKind::Brick8 | ElementKind::Tetra4);
@@ -106,6 +103,15 @@ fn edge_data(
     })
 }
 
+/// The elements (of any kind) holding both nodes of edge `e`, from the
+/// elements around each node.
+fn elements_holding(
+    ne: &HashMap<u32, Vec<(u8, u32)>>,
+    e: [u32; 2],
+) -> impl Iterator<Item = &(u8, u32)> {
+    ne[&e[0]].iter().filter(move |el| ne[&e[1]].contains(el))
+}
+
 /// Idel: the elements of each edge (every element, of any kind, holding
 /// both its nodes), CSR: (ptr, elements).
 fn edge_elements(
@@ -115,7 +121,7 @@ fn edge_elements(
     let mut ptr = vec![0u32];
     let mut out = Vec::new();
     for e in edges {
-        out.extend(ne[&e[0]].iter().filter(|el| ne[&e[1]].contains(el)));
+        out.extend(elements_holding(ne, *e));
         ptr.push(out.len() as u32);
     }
     (ptr, out)
@@ -168,15 +174,14 @@ pub(super) fn build_edge_pass(
     sides: &PassSides,
     kw: &str,
 ) -> Result<(Pass, EdgeSizes), String> {
-    let mut nodes: Vec<u32> = sides
-        .sec_edges
-        .iter()
-        .chain(sides.main_edges)
-        .flatten()
-        .copied()
-        .collect();
-    nodes.sort_unstable();
-    nodes.dedup();
+    let nodes = distinct_nodes(
+        sides
+            .sec_edges
+            .iter()
+            .chain(sides.main_edges)
+            .flatten()
+            .copied(),
+    );
     let ne = node_elements(m, &nodes);
     let data = |edges: &[[u32; 2]]| -> Result<Vec<EdgeData>, String> {
         edges

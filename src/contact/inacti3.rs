@@ -130,18 +130,9 @@ fn deepest(
     let mut best: Option<(f64, f64, V3)> = None;
     for &m in cands {
         let seg = &p.segs[m as usize];
-        // The engine's exclusions (`ContactState::search`).
-        if seg.contains(&s) {
+        // The engine's exclusions (the sort's).
+        if super::excluded(it, seg, s, x0) {
             continue;
-        }
-        if it.ty().removes_initially_close() {
-            let g = it.gap.gapmin;
-            if seg
-                .iter()
-                .any(|&c| geo::norm(geo::sub(x0[c as usize], x0[s as usize])) < 2.0 * g)
-            {
-                continue;
-            }
         }
         let xm = [
             x[seg[0] as usize],

@@ -726,20 +726,9 @@ impl ContactSystem {
                 continue;
             }
             for &m in &raw.segs[raw.ptr[j]..raw.ptr[j + 1]] {
-                let seg = &p.segs[m as usize];
-                if seg.contains(&s) {
-                    continue;
+                if !excluded(it, &p.segs[m as usize], s, x0) {
+                    cand.segs.push(m);
                 }
-                if it.ty().removes_initially_close() {
-                    let g = it.gap.gapmin;
-                    if seg
-                        .iter()
-                        .any(|&c| geo::norm(geo::sub(x0[c as usize], x0[s as usize])) < 2.0 * g)
-                    {
-                        continue;
-                    }
-                }
-                cand.segs.push(m);
             }
             cand.ptr.push(cand.segs.len());
         }
@@ -855,6 +844,19 @@ impl ContactSystem {
             }
         }
     }
+}
+
+/// The sort's exclusions of node `s` against segment `seg`: the node is one
+/// of the segment's, or (Irem_gap = 2) a node of the segment was initially
+/// closer to it than 2·Gapmin.
+pub(crate) fn excluded(it: &setup::Interface, seg: &[u32; 4], s: u32, x0: &[V3]) -> bool {
+    if seg.contains(&s) {
+        return true;
+    }
+    it.ty().removes_initially_close()
+        && seg
+            .iter()
+            .any(|&c| geo::norm(geo::sub(x0[c as usize], x0[s as usize])) < 2.0 * it.gap.gapmin)
 }
 
 /// Inacti on an edge pass at the first sort (/INTER/TYPE11 Inacti): a pair

@@ -200,7 +200,8 @@ fn segment_data(
 /// contact-node table.
 struct Surfaces<'a> {
     faces: FaceIndex,
-    /// Idel: every element of each face (empty when no interface deletes).
+    /// Every element of each face (empty unless an interface deletes, or
+    /// refuses faces between two solids).
     face_elems: HashMap<[u32; 4], Vec<(u8, u32)>>,
     /// Global node index of each cnode, ascending.
     all: &'a [u32],
@@ -240,7 +241,12 @@ pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<ContactSetup, String> {
     let any_idel = m.interfaces.iter().any(|i| {
         TypeOptions::from_card(&i.card.kind).is_some_and(|(_, c)| IdelRule::of(c.idel).is_some())
     });
-    let face_elems = if any_idel {
+    // Types that refuse faces between two solids check them on the same table.
+    let any_inner_check = m.interfaces.iter().any(|i| {
+        TypeOptions::from_card(&i.card.kind)
+            .is_some_and(|(t, _)| !t.implementation().inner_solid_faces_as_segments())
+    });
+    let face_elems = if any_idel || any_inner_check {
         face_elements(m)
     } else {
         HashMap::new()
@@ -390,7 +396,7 @@ fn build_pass(
 ) -> Result<Pass, String> {
     let main = sides.main;
     if !ty.inner_solid_faces_as_segments() {
-        refuse_inner_solid_faces(m, main, kw)?;
+        refuse_inner_solid_faces(m, &surfaces.face_elems, main, kw)?;
     }
     let mut segs = Vec::new();
     let mut seg_k = Vec::new();
@@ -492,14 +498,18 @@ fn build_pass(
 /// A main segment that is a face of two solids (an inner face, as
 /// /SURF/PART/ALL gives) is refused by types that would make it a contact
 /// segment only once one of the solids is deleted.
-fn refuse_inner_solid_faces(m: &Model, main: &[[u32; 4]], kw: &str) -> Result<(), String> {
+fn refuse_inner_solid_faces(
+    m: &Model,
+    faces: &HashMap<[u32; 4], Vec<(u8, u32)>>,
+    main: &[[u32; 4]],
+    kw: &str,
+) -> Result<(), String> {
     let solids = |k: u8| {
         matches!(
             ElementKind::ALL[k as usize],
             ElementKind::Brick8 | ElementKind::Tetra4
         )
     };
-    let faces = face_elements(m);
     for seg in main {
         let n = faces
             .get(&face_key(seg))

@@ -567,9 +567,7 @@ fn read_interfaces(
                 }
                 Side::Line(lid) => {
                     let l = &lines[line_index.resolve(lid, loc, &kw, field)? as usize];
-                    let mut nodes: Vec<u32> = l.edges.iter().flatten().copied().collect();
-                    nodes.sort_unstable();
-                    nodes.dedup();
+                    let nodes = distinct_nodes(l.edges.iter().flatten().copied());
                     Some(ResolvedSide {
                         nodes,
                         edges: l.edges.clone(),
@@ -704,9 +702,7 @@ fn expand_type19(
         return out;
     }
     let id = take_id();
-    let mut edge_nodes: Vec<u32> = sec_edges.iter().flatten().copied().collect();
-    edge_nodes.sort_unstable();
-    edge_nodes.dedup();
+    let edge_nodes = distinct_nodes(sec_edges.iter().flatten().copied());
     out.push(Interface {
         card: spec(id, "edge to edge", InterfaceKind::Type11(t.edge_part())),
         secondary_nodes: edge_nodes,

@@ -137,11 +137,16 @@ pub struct Surface {
 impl Surface {
     /// Distinct nodes of the segments, ascending.
     pub fn nodes(&self) -> Vec<u32> {
-        let mut n: Vec<u32> = self.segments.iter().flatten().copied().collect();
-        n.sort_unstable();
-        n.dedup();
-        n
+        distinct_nodes(self.segments.iter().flatten().copied())
     }
+}
+
+/// The distinct nodes among `nodes` (of segments, edges ...), ascending.
+pub fn distinct_nodes(nodes: impl IntoIterator<Item = u32>) -> Vec<u32> {
+    let mut n: Vec<u32> = nodes.into_iter().collect();
+    n.sort_unstable();
+    n.dedup();
+    n
 }
 
 /// A /LINE: 2-node segments (edges) of dense node indices, each once.

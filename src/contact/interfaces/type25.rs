@@ -147,12 +147,7 @@ impl InterfaceType for Type25 {
         if i.secondary_segments.is_empty() {
             return vec![pass(i.secondary_nodes.clone(), &i.main_segments)];
         }
-        let nodes = |segs: &[[u32; 4]]| {
-            let mut n: Vec<u32> = segs.iter().flatten().copied().collect();
-            n.sort_unstable();
-            n.dedup();
-            n
-        };
+        let nodes = super::type3::nodes_of;
         vec![
             pass(nodes(&i.secondary_segments), &i.main_segments),
             pass(nodes(&i.main_segments), &i.secondary_segments),

@@ -25,11 +25,8 @@ use serde::{Deserialize, Serialize};
 pub struct Type3 {}
 
 /// The nodes of `segs`, ascending.
-fn nodes_of(segs: &[[u32; 4]]) -> Vec<u32> {
-    let mut n: Vec<u32> = segs.iter().flatten().copied().collect();
-    n.sort_unstable();
-    n.dedup();
-    n
+pub(super) fn nodes_of(segs: &[[u32; 4]]) -> Vec<u32> {
+    crate::model::distinct_nodes(segs.iter().flatten().copied())
 }
 
 impl InterfaceType for Type3 {
