@@ -249,42 +249,7 @@ fn edge_contact_is_identical_on_1_2_4_ranks_and_1_2_threads_with_a_cut_pair() {
     let one = run(&d, &scratch("edge_ranks_1"), &RunArgs::default());
     let f = one.listing.last(1).normal[2];
     assert!((f - LOAD).abs() < 0.01 * LOAD);
-    for np in [2, 4] {
-        let r = run(
-            &d,
-            &scratch(&format!("edge_ranks_{np}")),
-            &RunArgs {
-                ranks: np,
-                ..Default::default()
-            },
-        );
-        assert!(
-            r.final_state_bytes() == one.final_state_bytes(),
-            "{np} ranks differ from 1"
-        );
-    }
-    let dir = scratch("edge_threads_2");
-    let fs = dir.join("final_state.csv");
-    let out = common::run_env(
-        0,
-        &[
-            "run",
-            d.to_str().unwrap(),
-            "--out",
-            dir.to_str().unwrap(),
-            "--quiet",
-            "--threads",
-            "2",
-            "--final-state",
-            fs.to_str().unwrap(),
-        ],
-        &[],
-    );
-    ok(&out, "2 threads");
-    assert!(
-        std::fs::read(fs).unwrap() == one.final_state_bytes(),
-        "2 threads differ from 1"
-    );
+    assert_same_final_state_on_ranks_and_2_threads(&d, "edge_ranks", &one, &[2, 4]);
 }
 
 #[test]
@@ -292,42 +257,5 @@ fn an_edge_contact_run_restarted_on_another_rank_count_ends_identically() {
     let d = deck("edge_cross");
     let whole = run(&d, &scratch("edge_restart_whole"), &RunArgs::default());
     // Stopped on 2 ranks mid-load (pairs active), restarted on 1.
-    let dir = scratch("edge_restart_stop");
-    let out = common::run_env(
-        2,
-        &[
-            "run",
-            d.to_str().unwrap(),
-            "--out",
-            dir.to_str().unwrap(),
-            "--quiet",
-            "--stop-after-cycle",
-            "1500",
-        ],
-        &[],
-    );
-    ok(&out, "run stopped at cycle 1500 on 2 ranks");
-    assert!(String::from_utf8_lossy(&out.stdout).contains("STOPPED AT CYCLE 1500"));
-    let rst = dir.join("edge_cross_rst.h5");
-    let fs = dir.join("final_state.csv");
-    let out = common::run_env(
-        0,
-        &[
-            "run",
-            d.to_str().unwrap(),
-            "--out",
-            dir.to_str().unwrap(),
-            "--quiet",
-            "--restart",
-            rst.to_str().unwrap(),
-            "--final-state",
-            fs.to_str().unwrap(),
-        ],
-        &[],
-    );
-    ok(&out, "restart on 1 rank");
-    assert!(
-        std::fs::read(fs).unwrap() == whole.final_state_bytes(),
-        "the restarted run differs"
-    );
+    assert_restart_2_to_1_ends_as(&d, "edge_restart_stop", 1500, &whole);
 }

@@ -180,84 +180,12 @@ fn type25_is_identical_on_1_2_4_ranks_and_2_threads_with_a_cut_interface() {
         );
     }
     let one = run(&d, &scratch("type25_ranks_1"), &RunArgs::default());
-    for np in [2, 4] {
-        let r = run(
-            &d,
-            &scratch(&format!("type25_ranks_{np}")),
-            &RunArgs {
-                ranks: np,
-                ..Default::default()
-            },
-        );
-        assert!(
-            r.final_state_bytes() == one.final_state_bytes(),
-            "{np} ranks differ from 1"
-        );
-    }
-    let dir = scratch("type25_threads_2");
-    let fs = dir.join("final_state.csv");
-    let out = common::run_env(
-        0,
-        &[
-            "run",
-            d.to_str().unwrap(),
-            "--out",
-            dir.to_str().unwrap(),
-            "--quiet",
-            "--threads",
-            "2",
-            "--final-state",
-            fs.to_str().unwrap(),
-        ],
-        &[],
-    );
-    ok(&out, "2 threads");
-    assert!(
-        std::fs::read(fs).unwrap() == one.final_state_bytes(),
-        "2 threads differ from 1"
-    );
+    assert_same_final_state_on_ranks_and_2_threads(&d, "type25_ranks", &one, &[2, 4]);
 }
 
 #[test]
 fn a_type25_run_restarted_on_another_rank_count_ends_identically() {
     let d = deck("type25_block");
     let whole = run(&d, &scratch("type25_restart_whole"), &RunArgs::default());
-    let dir = scratch("type25_restart_stop");
-    let out = common::run_env(
-        2,
-        &[
-            "run",
-            d.to_str().unwrap(),
-            "--out",
-            dir.to_str().unwrap(),
-            "--quiet",
-            "--stop-after-cycle",
-            "1000",
-        ],
-        &[],
-    );
-    ok(&out, "run stopped at cycle 1000 on 2 ranks");
-    assert!(String::from_utf8_lossy(&out.stdout).contains("STOPPED AT CYCLE 1000"));
-    let fs = dir.join("final_state.csv");
-    let rst = dir.join("type25_block_rst.h5");
-    let out = common::run_env(
-        0,
-        &[
-            "run",
-            d.to_str().unwrap(),
-            "--out",
-            dir.to_str().unwrap(),
-            "--quiet",
-            "--restart",
-            rst.to_str().unwrap(),
-            "--final-state",
-            fs.to_str().unwrap(),
-        ],
-        &[],
-    );
-    ok(&out, "restart on 1 rank");
-    assert!(
-        std::fs::read(fs).unwrap() == whole.final_state_bytes(),
-        "the restarted run differs"
-    );
+    assert_restart_2_to_1_ends_as(&d, "type25_restart_stop", 1000, &whole);
 }

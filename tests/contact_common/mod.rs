@@ -31,6 +31,97 @@ pub fn assert_same_final_state_on_2_ranks(deck: &Path, tag: &str, one: &Run) {
     );
 }
 
+/// Runs `deck` on each of `ranks` and on 1 rank with 2 threads (scratch
+/// `tag`-...) and asserts that each final state is byte-identical to `one`'s.
+pub fn assert_same_final_state_on_ranks_and_2_threads(
+    deck: &Path,
+    tag: &str,
+    one: &Run,
+    ranks: &[u32],
+) {
+    for &np in ranks {
+        let r = run(
+            deck,
+            &scratch(&format!("{tag}-{np}ranks")),
+            &RunArgs {
+                ranks: np,
+                ..Default::default()
+            },
+        );
+        assert!(
+            r.final_state_bytes() == one.final_state_bytes(),
+            "{}: the final state on {np} ranks differs from 1 rank",
+            deck.display()
+        );
+    }
+    let dir = scratch(&format!("{tag}-2threads"));
+    let fs = dir.join("final_state.csv");
+    let s = |p: &Path| p.to_str().unwrap().to_string();
+    let args = [
+        "run",
+        &s(deck),
+        "--out",
+        &s(&dir),
+        "--quiet",
+        "--threads",
+        "2",
+        "--final-state",
+        &s(&fs),
+    ];
+    ok(&crate::common::run_env(0, &args, &[]), "2 threads");
+    assert!(
+        std::fs::read(fs).unwrap() == one.final_state_bytes(),
+        "{}: the final state on 2 threads differs from 1",
+        deck.display()
+    );
+}
+
+/// Stops `deck` on 2 ranks after `cycle` (scratch `tag`), restarts it on 1
+/// rank from its restart file and asserts that the final state is
+/// byte-identical to `whole`'s, the run that never stopped.
+pub fn assert_restart_2_to_1_ends_as(deck: &Path, tag: &str, cycle: u64, whole: &Run) {
+    let dir = scratch(tag);
+    let s = |p: &Path| p.to_str().unwrap().to_string();
+    let c = cycle.to_string();
+    let args = [
+        "run",
+        &s(deck),
+        "--out",
+        &s(&dir),
+        "--quiet",
+        "--stop-after-cycle",
+        &c,
+    ];
+    let out = crate::common::run_env(2, &args, &[]);
+    ok(&out, &format!("run stopped at cycle {cycle} on 2 ranks"));
+    assert!(String::from_utf8_lossy(&out.stdout).contains(&format!("STOPPED AT CYCLE {cycle}")));
+    let name = deck
+        .file_name()
+        .unwrap()
+        .to_str()
+        .unwrap()
+        .trim_end_matches("_0000.rad");
+    let rst = dir.join(format!("{name}_rst.h5"));
+    let fs = dir.join("final_state.csv");
+    let args = [
+        "run",
+        &s(deck),
+        "--out",
+        &s(&dir),
+        "--quiet",
+        "--restart",
+        &s(&rst),
+        "--final-state",
+        &s(&fs),
+    ];
+    ok(&crate::common::run_env(0, &args, &[]), "restart on 1 rank");
+    assert!(
+        std::fs::read(fs).unwrap() == whole.final_state_bytes(),
+        "{}: stopped at cycle {cycle} on 2 ranks and restarted on 1, the final state differs",
+        deck.display()
+    );
+}
+
 /// What a run wrote.
 pub struct Run {
     pub dir: PathBuf,
