@@ -450,7 +450,7 @@ impl ContactSystem {
             self.timers.search_s += ts.elapsed().as_secs_f64();
         }
         let tf = std::time::Instant::now();
-        let (contribs, step) = self.pairs(mass, t, dt);
+        let (contribs, step) = self.pairs(world, mass, t, dt);
         self.timers.force_s += tf.elapsed().as_secs_f64();
         let te = std::time::Instant::now();
         let got = exchange::route(world, &self.setup, contribs);

@@ -15,6 +15,8 @@ use super::interfaces::{
 use super::key::{SumKey, SECONDARY_CORNER};
 use super::setup::{Interface, Pass, NONE};
 use super::{seg_values, ContactSystem, InterfaceSums, PassRun, Removal};
+use crate::parallel::exact_sum::{sum_over_ranks, ExactSum};
+use crate::parallel::World;
 use rayon::prelude::*;
 
 /// One node's pairs: their contributions, the smallest kinematic step (with
@@ -24,6 +26,8 @@ struct NodeOut {
     contribs: Vec<Contribution>,
     step: Option<(f64, u64)>,
     sums: InterfaceSums,
+    /// The largest penetration of its pairs.
+    pen_max: f64,
 }
 
 /// What every node of one pass reads.
@@ -44,6 +48,8 @@ struct PassView<'a> {
     /// IBC bits to release on an impacting secondary node.
     ibc: u8,
     dt: f64,
+    /// Total-force types: see `PairContext::scale`.
+    scale: Option<f64>,
 }
 
 /// One owned secondary node's memory.
@@ -59,6 +65,7 @@ impl ContactSystem {
     /// Every owned pair's force, as contributions, and the smallest kinematic step.
     pub(super) fn pairs(
         &mut self,
+        world: &World,
         mass: &[f64],
         t: f64,
         dt: f64,
@@ -71,31 +78,21 @@ impl ContactSystem {
                 ..Default::default()
             };
         }
-        for (ii, it) in self.setup.interfaces.iter().enumerate() {
+        for ii in 0..self.setup.interfaces.len() {
+            let it = &self.setup.interfaces[ii];
             if t < it.tstart || t > it.tstop {
                 continue;
             }
-            let ibc = (it.ibc[0] as u8) | ((it.ibc[1] as u8) << 1) | ((it.ibc[2] as u8) << 2);
-            for (pi, p) in it.passes.iter().enumerate() {
-                let view = PassView {
-                    it,
-                    p,
-                    ii,
-                    pi,
-                    cx: &self.cx,
-                    cv: &self.cv,
-                    avail: &self.avail,
-                    local: &self.local,
-                    mass,
-                    nodes_g: &self.setup.nodes,
-                    cnode_mass: &self.setup.mass,
-                    ibc,
-                    dt,
-                };
-                let results = it.options.visit(PassPairs {
-                    v: &view,
-                    run: &mut self.runs[ii][pi],
-                });
+            let mut scale = None;
+            if it.ty().is_total_force() {
+                let (fac, step) = self.total_scale(world, ii, mass, dt);
+                scale = Some(fac);
+                if step < best.map_or(f64::INFINITY, |b| b.0) {
+                    best = Some((step, self.setup.interfaces[ii].id));
+                }
+            }
+            for pi in 0..self.setup.interfaces[ii].passes.len() {
+                let results = self.run_pass(ii, pi, mass, dt, scale);
                 let acc = &mut self.sums[ii];
                 for r in results {
                     out.extend(r.contribs);
@@ -114,6 +111,65 @@ impl ContactSystem {
             }
         }
         (out, best)
+    }
+
+    /// The pairs of pass `pi` of interface `ii` this rank owns, in node
+    /// order (`scale`: see `PairContext::scale`).
+    fn run_pass(
+        &mut self,
+        ii: usize,
+        pi: usize,
+        mass: &[f64],
+        dt: f64,
+        scale: Option<f64>,
+    ) -> Vec<NodeOut> {
+        let it = &self.setup.interfaces[ii];
+        let ibc = (it.ibc[0] as u8) | ((it.ibc[1] as u8) << 1) | ((it.ibc[2] as u8) << 2);
+        let view = PassView {
+            it,
+            p: &it.passes[pi],
+            ii,
+            pi,
+            cx: &self.cx,
+            cv: &self.cv,
+            avail: &self.avail,
+            local: &self.local,
+            mass,
+            nodes_g: &self.setup.nodes,
+            cnode_mass: &self.setup.mass,
+            ibc,
+            dt,
+            scale,
+        };
+        it.options.visit(PassPairs {
+            v: &view,
+            run: &mut self.runs[ii][pi],
+        })
+    }
+
+    /// A total-force interface (`InterfaceType::is_total_force`): measures
+    /// its pairs, reduces the largest penetration and the resultant
+    /// penetration vector over all ranks (exact sums: the same bits on any
+    /// number of ranks), and returns its normal force per unit penetration
+    /// F(p_max)/|R| and its time step. Collective.
+    fn total_scale(&mut self, world: &World, ii: usize, mass: &[f64], dt: f64) -> (f64, f64) {
+        let mut p_max = [0.0f64];
+        let mut r = [ExactSum::default(); 3];
+        for pi in 0..self.setup.interfaces[ii].passes.len() {
+            let sign = self.setup.interfaces[ii].ty().resultant_sign(pi);
+            for n in self.run_pass(ii, pi, mass, dt, None) {
+                p_max[0] = p_max[0].max(n.pen_max);
+                for k in 0..3 {
+                    r[k].add(sign * n.sums.f_normal[k]);
+                }
+            }
+        }
+        world.max_f64(&mut p_max);
+        sum_over_ranks(world, &mut r);
+        let resultant = geo::norm([r[0].value(), r[1].value(), r[2].value()]);
+        let (f, step) = self.setup.interfaces[ii].ty().total_force(p_max[0]);
+        let fac = if resultant > 0.0 { f / resultant } else { 0.0 };
+        (fac, step)
     }
 }
 
@@ -271,6 +327,7 @@ fn one_pair<T: InterfaceType>(
         xm: &xm,
         vm: &vm,
         dt: v.dt,
+        scale: v.scale,
     };
     let f = match ty.pair(&c, ns, st) {
         PairOutcome::Free => return true,
@@ -330,6 +387,7 @@ fn emit(out: &mut NodeOut, key: SumKey, nodes: &PairNodes, f: &PairForce, ibc: u
     }
     sums.pairs += 1;
     sums.energy -= geo::dot(f.fs, vrel);
+    out.pen_max = out.pen_max.max(f.pen);
 }
 
 #[cfg(test)]

@@ -297,11 +297,12 @@ fn build_interface(
 ) -> Result<Interface, String> {
     let c = &i.card;
     let kw = format!("{}: /INTER/TYPE{}/{}", c.loc, c.type_number(), c.id);
-    let Some((options, common)) = TypeOptions::from_card(&c.kind) else {
+    let Some((mut options, common)) = TypeOptions::from_card(&c.kind) else {
         return Err(format!(
             "{kw}: this interface type is not computed by the engine yet"
         ));
     };
+    options.implementation_mut().bind(m, i, &kw)?;
     let ty = options.implementation();
     let mut sizes = Sizes {
         thick_sum: 0.0,

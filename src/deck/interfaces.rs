@@ -600,6 +600,83 @@ fn read_type19(cards: &mut Cards) -> InputResult<Type19> {
 }
 
 // ---------------------------------------------------------------------------
+// TYPE6
+// ---------------------------------------------------------------------------
+
+/// /INTER/TYPE6 (format 2017 and later; cards 5 and 6 may be absent), with
+/// the Starter's rules: Iform > 0 without fct_IDul becomes 2, then Iform > 0
+/// with Stiff = 0 becomes 0; Icor is 0 with Iform = 0; Stiff 0 → 1e30.
+fn read_type6(cards: &mut Cards) -> InputResult<Type6> {
+    let c1 = cards.next("the card with surf_ID1, surf_ID2")?;
+    let c2 = cards.next("the card with Sfric, Fric, Gap, Tstart, Tstop")?;
+    let c3 = cards.next("the card with IRS, IRm, Inacti, fct_IDff, fct_IDfv, Ascalef, Ascalev")?;
+    let c4 = cards.next("the card with fct_IDld, Iform, Ascalex, FscaleId, Icor")?;
+    let c5 = cards.next_opt();
+    let c6 = cards.next_opt();
+    let (tstart, tstop) = times(&c2)?;
+    let fct_id_ld = c4.id_opt(1, "fct_IDld")?;
+    if fct_id_ld == 0 {
+        return Err(c4.err(
+            "fct_IDld",
+            "0 in columns 1-10: expected the id of the loading force vs penetration /FUNCT (required)",
+        ));
+    }
+    let (fct_id_ul, stiff_raw, fscale_ul) = match &c5 {
+        Some(c) => (
+            c.id_opt(1, "fct_IDul")?,
+            real_ge0(c, 21, "Stiff", 0.0, "the transition stiffness")?,
+            real_ge0(c, 41, "Fscaleul", 1.0, "the unloading ordinate scale")?,
+        ),
+        None => (0, 0.0, 1.0),
+    };
+    let (visc, fct_id_dv, fct_id_df, fscalev) = match &c6 {
+        Some(c) => (
+            real_ge0(c, 1, "Visc", 0.0, "the damping coefficient")?,
+            c.id_opt(21, "fct_IDdv")?,
+            c.id_opt(31, "fct_IDdf")?,
+            real_ge0(c, 41, "Fscalev", 1.0, "the damping ordinate scale")?,
+        ),
+        None => (0.0, 0, 0, 1.0),
+    };
+    let mut iform = flag(&c4, 11, "Iform", &[0, 1, 2], 0)?;
+    if iform > 0 && fct_id_ul == 0 {
+        iform = 2;
+    }
+    if iform > 0 && stiff_raw == 0.0 {
+        iform = 0;
+    }
+    let icor = flag(&c4, 61, "Icor", &[0, 1], 0)?;
+    Ok(Type6 {
+        surf_id1: c1.id(1, "surf_ID1")?,
+        surf_id2: c1.id(11, "surf_ID2")?,
+        sfric: real_ge0(&c2, 1, "Sfric", 0.0, "the static friction force")?,
+        fric: real_ge0(&c2, 21, "Fric", 0.0, "the friction coefficient")?,
+        gap: real_ge0(&c2, 41, "Gap", 0.0, "the gap")?,
+        tstart,
+        tstop,
+        irs: flag(&c3, 11, "IRS", &[0, 1, 2], 0)?,
+        irm: flag(&c3, 21, "IRm", &[0, 1, 2], 0)?,
+        inacti: flag(&c3, 31, "Inacti", &[0, 5], 0)?,
+        fct_id_ff: c3.id_opt(41, "fct_IDff")?,
+        fct_id_fv: c3.id_opt(51, "fct_IDfv")?,
+        ascalef: real_ge0(&c3, 61, "Ascalef", 1.0, "the abscissa scale")?,
+        ascalev: real_ge0(&c3, 81, "Ascalev", 1.0, "the abscissa scale")?,
+        fct_id_ld,
+        iform,
+        ascalex: real_ge0(&c4, 21, "Ascalex", 1.0, "the penetration scale")?,
+        fscale_ld: real_ge0(&c4, 41, "FscaleId", 1.0, "the loading ordinate scale")?,
+        icor: if iform == 0 { 0 } else { icor },
+        fct_id_ul,
+        stiff: if stiff_raw == 0.0 { EP30 } else { stiff_raw },
+        fscale_ul,
+        visc,
+        fct_id_dv,
+        fct_id_df,
+        fscalev,
+    })
+}
+
+// ---------------------------------------------------------------------------
 // TYPE25
 // ---------------------------------------------------------------------------
 
@@ -711,6 +788,7 @@ pub(super) fn parse_interface(block: &Block, deck: &mut Deck) -> InputResult<boo
         "TYPE2" => 2,
         "TYPE3" => 3,
         "TYPE5" => 5,
+        "TYPE6" => 6,
         "TYPE7" => 7,
         "TYPE11" => 11,
         "TYPE19" => 19,
@@ -725,6 +803,7 @@ pub(super) fn parse_interface(block: &Block, deck: &mut Deck) -> InputResult<boo
         2 => InterfaceKind::Type2(read_type2(&mut cards)?),
         3 => InterfaceKind::Type3(read_type3(&mut cards)?),
         5 => InterfaceKind::Type5(read_type5(&mut cards)?),
+        6 => InterfaceKind::Type6(read_type6(&mut cards)?),
         7 => InterfaceKind::Type7(read_type7(&mut cards)?),
         11 => {
             let invers = deck.begin.as_ref().map_or(0, |b| b.invers);

@@ -124,6 +124,12 @@ fn build(deck: &Deck) -> Result<Model, InputError> {
 
     let conditions = read_conditions(deck, &refs, nodes.len())?;
     refs.check_spring_functions(&properties)?;
+    for c in &deck.interfaces {
+        let kw = format!("/INTER/TYPE{}/{}", c.type_number(), c.id);
+        for (f, field) in c.functions() {
+            refs.check_fct(f, &c.loc, &kw, field)?;
+        }
+    }
     let rigid_walls = read_rigid_walls(deck, &refs, &nodes, &node_index, &mut warnings)?;
     let lines = super::lines::resolve_lines(&deck.lines, &surfaces, &refs.surf_index, &ctx)?;
     let interfaces = read_interfaces(deck, &refs, &surfaces, &lines, &mut warnings)?;

@@ -18,6 +18,20 @@ pub fn eval(f: &Function, x: f64) -> f64 {
     y0 + (y1 - y0) * (x - x0) / (x1 - x0)
 }
 
+/// dy/dx of a /FUNCT at x: the slope of the segment `eval` interpolates
+/// on (the first or last one beyond the ends; 0 for a single point).
+pub fn slope(f: &Function, x: f64) -> f64 {
+    let n = f.x.len();
+    if n < 2 {
+        return 0.0;
+    }
+    let i = match f.x.partition_point(|&xi| xi <= x) {
+        0 => 0,
+        k => (k - 1).min(n - 2),
+    };
+    (f.y[i + 1] - f.y[i]) / (f.x[i + 1] - f.x[i])
+}
+
 /// Fscale · f(t / Ascale), the value of a load or imposed motion at time t.
 pub fn scaled(f: &Function, t: f64, ascale_x: f64, fscale_y: f64) -> f64 {
     fscale_y * eval(f, t / ascale_x)

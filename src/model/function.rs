@@ -4,7 +4,7 @@ use super::{Id, Loc};
 use serde::{Deserialize, Serialize};
 
 /// /FUNCT/fct_ID: title, then (X, Y) pairs (X 1-20, Y 21-40), X strictly increasing.
-#[derive(Clone, Debug, Serialize, Deserialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Function {
     pub id: Id,
     pub title: String,

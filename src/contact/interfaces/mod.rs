@@ -246,6 +246,12 @@ pub struct PairContext<'a> {
     pub xm: &'a [V3; 4],
     pub vm: &'a [V3; 4],
     pub dt: f64,
+    /// Total-force types ([`InterfaceType::total_force`]): `None` while the
+    /// runtime measures the pairs (the kernel gives the penetration vector
+    /// p·n as `fs`, `pen` = p, and leaves the pair memory as it is);
+    /// `Some(fac)` when it computes the forces, fac being the interface's
+    /// normal force per unit penetration this cycle. `None` for other types.
+    pub scale: Option<f64>,
 }
 
 /// What a kernel decides for one pair.
@@ -355,6 +361,39 @@ pub trait InterfaceType: Sync {
         false
     }
 
+    /// Resolves what the type takes from the model beyond its card (the
+    /// rigid bodies of TYPE6's surfaces, load curves), `kw` naming the card
+    /// in messages; an inconsistent deck is an error.
+    fn bind(&mut self, _m: &model::Model, _i: &model::Interface, _kw: &str) -> Result<(), String> {
+        Ok(())
+    }
+
+    /// Whether the interface's total normal force is a function of its
+    /// largest penetration (TYPE6, EQ. 8.7.6.1): then each cycle the runtime
+    /// first measures every pair (kernel with `PairContext::scale` = `None`),
+    /// reduces the largest penetration p_max and the resultant penetration
+    /// vector R = Σ_pass sign·Σ p_i·n_i over all ranks (exactly, so on any
+    /// number of ranks the same bits), and then computes the forces with
+    /// fac = F(p_max)/|R| (`scale` = `Some(fac)`), so the resultant normal
+    /// force is F(p_max).
+    fn is_total_force(&self) -> bool {
+        false
+    }
+
+    /// Total-force types: the sign of pass `pass`'s penetration vectors in
+    /// the resultant R (each pass's secondary side's vectors, counted on
+    /// the first side).
+    fn resultant_sign(&self, _pass: usize) -> f64 {
+        1.0
+    }
+
+    /// Total-force types: the total normal force at the largest penetration
+    /// `p_max` (0 when nothing penetrates), and the interface's time step
+    /// (∞ when it sets none).
+    fn total_force(&self, _p_max: f64) -> (f64, f64) {
+        (0.0, f64::INFINITY)
+    }
+
     /// The pair kernel: the force of one pair, and its memory.
     fn pair(&self, c: &PairContext, ns: &mut NodeState, st: &mut PairState) -> PairOutcome;
 
@@ -401,6 +440,13 @@ macro_rules! registry {
         impl TypeOptions {
             /// The type's implementation.
             pub fn implementation(&self) -> &dyn InterfaceType {
+                match self {
+                    $(TypeOptions::$variant(t) => t),*
+                }
+            }
+
+            /// The type's implementation, to bind it to the model.
+            pub fn implementation_mut(&mut self) -> &mut dyn InterfaceType {
                 match self {
                     $(TypeOptions::$variant(t) => t),*
                 }
@@ -454,6 +500,7 @@ macro_rules! registry {
 registry! {
     3 => type3::Type3,
     5 => type5::Type5,
+    6 => type6::Type6,
     7 => type7::Type7,
     11 => type11::Type11,
     25 => type25::Type25,
@@ -500,10 +547,11 @@ mod tests {
 
     #[test]
     fn every_registered_number_resolves_to_its_type_and_candidate_kind() {
-        assert_eq!(TypeOptions::NUMBERS, &[3, 5, 7, 11, 25]);
+        assert_eq!(TypeOptions::NUMBERS, &[3, 5, 6, 7, 11, 25]);
         let expect = [
             (3, CandidateKind::NodeToSegment, CandidateSearch::Walk),
             (5, CandidateKind::NodeToSegment, CandidateSearch::Walk),
+            (6, CandidateKind::NodeToSegment, CandidateSearch::Walk),
             (7, CandidateKind::NodeToSegment, CandidateSearch::Sort),
             (11, CandidateKind::EdgeToEdge, CandidateSearch::Sort),
             (25, CandidateKind::NodeToSegment, CandidateSearch::Sort),

@@ -9,6 +9,7 @@ mod type2;
 mod type25;
 mod type3;
 mod type5;
+mod type6;
 mod type7;
 
 pub use type11::*;
@@ -17,6 +18,7 @@ pub use type2::*;
 pub use type25::*;
 pub use type3::*;
 pub use type5::*;
+pub use type6::*;
 pub use type7::*;
 
 use super::{Id, Loc};
@@ -53,6 +55,7 @@ pub enum InterfaceKind {
     Type2(Type2),
     Type3(Type3),
     Type5(Type5),
+    Type6(Type6),
     Type7(Type7),
     Type11(Type11),
     Type19(Type19),
@@ -74,12 +77,13 @@ pub enum Side {
 }
 
 impl InterfaceSpec {
-    /// 2, 3, 5, 7, 11, 19 or 25.
+    /// 2, 3, 5, 6, 7, 11, 19 or 25.
     pub fn type_number(&self) -> u32 {
         match self.kind {
             InterfaceKind::Type2(_) => 2,
             InterfaceKind::Type3(_) => 3,
             InterfaceKind::Type5(_) => 5,
+            InterfaceKind::Type6(_) => 6,
             InterfaceKind::Type7(_) => 7,
             InterfaceKind::Type11(_) => 11,
             InterfaceKind::Type19(_) => 19,
@@ -93,6 +97,9 @@ impl InterfaceSpec {
             InterfaceKind::Type2(_) => "tied",
             InterfaceKind::Type3(_) => "segment to segment, node-to-segment in both directions",
             InterfaceKind::Type5(_) => "node to segment",
+            InterfaceKind::Type6(_) => {
+                "rigid body to rigid body, total force a function of the penetration"
+            }
             InterfaceKind::Type7(_) => "general node to segment",
             InterfaceKind::Type11(_) => "edge to edge",
             InterfaceKind::Type19(_) => {
@@ -108,6 +115,7 @@ impl InterfaceSpec {
             InterfaceKind::Type2(t) => Side::NodeGroup(t.grnod_ids),
             InterfaceKind::Type3(t) => Side::Surface(t.surf_id1),
             InterfaceKind::Type5(t) => Side::NodeGroup(t.grnod_ids),
+            InterfaceKind::Type6(t) => Side::Surface(t.surf_id1),
             InterfaceKind::Type7(t) => {
                 if t.grnod_ids == 0 {
                     Side::SameAsOther
@@ -134,7 +142,7 @@ impl InterfaceSpec {
     /// The field names of (secondary side, main side) on card 1.
     pub fn side_fields(&self) -> (&'static str, &'static str) {
         match &self.kind {
-            InterfaceKind::Type3(_) => ("surf_ID1", "surf_ID2"),
+            InterfaceKind::Type3(_) | InterfaceKind::Type6(_) => ("surf_ID1", "surf_ID2"),
             InterfaceKind::Type11(_) => ("line_IDs", "line_IDm"),
             InterfaceKind::Type19(_) => ("surf_IDs", "surf_IDm"),
             InterfaceKind::Type25(t) if t.surf_id1 == 0 => ("grnd_IDs", "surf_ID2"),
@@ -144,12 +152,28 @@ impl InterfaceSpec {
         }
     }
 
+    /// The /FUNCT ids the card names (0 = none), with their field names.
+    pub fn functions(&self) -> Vec<(Id, &'static str)> {
+        match &self.kind {
+            InterfaceKind::Type6(t) => vec![
+                (t.fct_id_ff, "fct_IDff"),
+                (t.fct_id_fv, "fct_IDfv"),
+                (t.fct_id_ld, "fct_IDld"),
+                (t.fct_id_ul, "fct_IDul"),
+                (t.fct_id_dv, "fct_IDdv"),
+                (t.fct_id_df, "fct_IDdf"),
+            ],
+            _ => Vec::new(),
+        }
+    }
+
     /// What the main (master) side references.
     pub fn main_side(&self) -> Side {
         match &self.kind {
             InterfaceKind::Type2(t) => Side::Surface(t.surf_idm),
             InterfaceKind::Type3(t) => Side::Surface(t.surf_id2),
             InterfaceKind::Type5(t) => Side::Surface(t.surf_idm),
+            InterfaceKind::Type6(t) => Side::Surface(t.surf_id2),
             InterfaceKind::Type7(t) => Side::Surface(t.surf_idm),
             InterfaceKind::Type11(t) => {
                 if t.line_idm == 0 {

@@ -11,7 +11,8 @@ use super::setup::{Ctx, State};
 /// contact forces take (elastic, damping, friction), with the mean of the
 /// velocities before and after the step: f·v_after alone overstates the
 /// work by (f·Δt)²/2M, which adds up when friction forces are large and
-/// their work small.
+/// their work small. A rigid body's node moves with its body, not by its
+/// own force over its own mass: it takes its velocity after the step.
 pub(super) fn work(cx: &Ctx, s: &mut State, dt_v: f64) {
     let mass = &cx.mass;
     for l in 0..cx.n {
@@ -21,7 +22,7 @@ pub(super) fn work(cx: &Ctx, s: &mut State, dt_v: f64) {
         for k in 0..3 {
             s.w_ext.add(s.fext[l][k] * s.v[l][k] * s.dt);
             s.w_ext.add(s.fext[l][3 + k] * s.vr[l][k] * s.dt);
-            let dv = if s.fixed[l][k] || mass[l] <= 0.0 || cx.tied_tr[l] {
+            let dv = if s.fixed[l][k] || mass[l] <= 0.0 || cx.tied_tr[l] || cx.in_body[l] {
                 0.0
             } else {
                 (s.fext[l][k] - s.fint[l][k] + s.fcont[l][k] + s.ftie[l][k]) / mass[l] * dt_v

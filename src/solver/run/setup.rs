@@ -49,6 +49,8 @@ pub(super) struct Ctx<'a> {
     pub inertia: Vec<f64>,
     /// Rigid-body main nodes (their body moves them).
     pub is_main: Vec<bool>,
+    /// Rigid-body main and member nodes (their body's resultant moves them).
+    pub in_body: Vec<bool>,
     /// Tied secondary nodes: translation (and rotation) follow their main segment.
     pub tied_tr: Vec<bool>,
     pub tied_rot: Vec<bool>,
@@ -200,6 +202,7 @@ pub(super) fn context<'a>(
         mass,
         inertia,
         is_main: vec![false; n],
+        in_body: vec![false; n],
         tied_tr,
         tied_rot,
         ke_skip: Vec::new(),
@@ -257,6 +260,10 @@ fn rigid_body_roles(cx: &mut Ctx) {
         let main_local = cx.local_of.get(&rb.main_node).copied();
         if let Some(l) = main_local {
             cx.is_main[l as usize] = true;
+            cx.in_body[l as usize] = true;
+        }
+        for &(l, _) in &members {
+            cx.in_body[l as usize] = true;
         }
         members.sort_by_key(|m| m.1);
         let mut main_fixed = [false; 6];

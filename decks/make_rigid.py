@@ -1,0 +1,101 @@
+#!/usr/bin/env python3
+"""Writes the rigid-body contact decks (tests/contact_rigid.rs runs them).
+Units: kg, mm, ms (force kN, stress GPa). Steel shells: E = 210, nu = 0.3.
+
+    python3 decks/make_rigid.py [OUT_DIR [NAME ...]]
+
+* type6_rest   a 20 x 20 mm shell block (2 x 2 shells, one /RBODY of 1 kg
+               added mass, its surface's normal facing down) starts touching
+               a fixed 40 x 40 mm shell ground (5 x 5 shells, another /RBODY
+               whose main node is fixed). A constant load W on the block's
+               main node pushes it on the ground through /INTER/TYPE6 with a
+               nonlinear loading curve f, FscaleId = 2, Ascalex = 0.5, and a
+               damper Visc on each penetrated node; it comes to rest at the
+               penetration p* where 2 f(p*/0.5) = W (theory manual §8.7,
+               EQ. 8.7.6.1: the total force is the curve's at the largest
+               penetration). Both are centred on the z axis, and no node
+               sits on an edge of the other surface (block nodes at -10, 0,
+               10 mm; ground nodes at -20, -12, -4, 4, 12, 20 mm): the block
+               stays level, every node at the same penetration.
+"""
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from make_contact import (header, law1, prop_shell, part, nodes_block, shells_block,  # noqa: E402
+                          group, surf_part, bcs, funct, cload, engine, plate, write, i10, r20)
+
+# type6_rest
+W = 0.012                       # kN on the block
+CURVE = [(0.0, 0.0), (0.01, 0.005), (0.02, 0.02), (0.05, 0.2)]   # f(x): x in mm, kN
+FSCALE, ASCALE = 2.0, 0.5
+VISC = 0.2                      # kN ms / mm per penetrated node
+BLOCK_MASS = 1.0                # kg added on the block's main node
+TEND = 15.0                     # ms
+
+
+def rest_penetration():
+    """p* with FSCALE f(p*/ASCALE) = W (f piecewise linear)."""
+    target = W / FSCALE
+    for (x0, y0), (x1, y1) in zip(CURVE, CURVE[1:]):
+        if y0 <= target <= y1:
+            return ASCALE * (x0 + (x1 - x0) * (target - y0) / (y1 - y0))
+    raise ValueError("W beyond the curve")
+
+
+def rbody(rid, title, main, gid, mass=0.0):
+    return [f"/RBODY/{rid}", title,
+            "#  node_ID   sens_ID   Skew_ID    Ispher                Mass  grnd_ID     Ikrem      ICoG   surf_ID",
+            i10(main) + i10(0) * 3 + r20(mass) + i10(gid) + i10(0) * 3,
+            "#                Jxx                 Jyy                 Jzz", r20(0) * 3,
+            "#                Jxy                 Jyz                 Jxz", r20(0) * 3]
+
+
+def inter6(iid, title, surf1, surf2, fct, fscale, ascale, visc, fric=0.0, gap=0.0):
+    """/INTER/TYPE6 in the 2017 and later layout (src/deck/interfaces.rs read_type6)."""
+    return [f"/INTER/TYPE6/{iid}", title,
+            "#  surf_ID1  surf_ID2", i10(surf1) + i10(surf2),
+            "#              Sfric                Fric                 Gap              Tstart               Tstop",
+            r20(0) + r20(fric) + r20(gap) + r20(0) + r20(0),
+            "#                 IRS       IRm    Inacti  fct_IDff  fct_IDfv             Ascalef             Ascalev",
+            " " * 10 + i10(0) * 5 + r20(0) * 2,
+            "# fct_IDld     Iform             Ascalex            FscaleId      Icor",
+            i10(fct) + i10(0) + r20(ascale) + r20(fscale) + i10(0),
+            "# fct_IDul                         Stiff            Fscaleul",
+            i10(0) + " " * 10 + r20(0) + r20(0),
+            "#               Visc  fct_IDdv  fct_IDdf             Fscalev",
+            r20(visc) + i10(0) * 2 + r20(0)]
+
+
+def type6_rest(name="type6_rest"):
+    ground, g_sh = plate(1, 1, (-20.0, -20.0), 40.0, 40.0, 5, 5, 0.0)
+    block, b_sh = plate(101, 101, (-10.0, -10.0), 20.0, 20.0, 2, 2, 0.0)
+    # The block's surface faces the ground: reverse its shells' node order.
+    b_sh = [(e, n[::-1]) for e, n in b_sh]
+    mains = [(1000, 0.0, 0.0, 0.0), (2000, 0.0, 0.0, 0.0)]
+    S = header(name, "TYPE6: a rigid block resting on a rigid ground", [
+        f"A rigid shell block pushed by {W:g} kN on a rigid ground through /INTER/TYPE6",
+        "(decks/make_rigid.py): it rests where FscaleId f(p/Ascalex) = W."])
+    S += law1(1, "steel") + prop_shell(1, "t = 1 mm", 1.0)
+    S += part(1, "ground", 1, 1) + part(2, "block", 1, 1)
+    S += nodes_block(ground + block + mains) + shells_block(1, g_sh) + shells_block(2, b_sh)
+    S += group(1, "ground nodes", [n[0] for n in ground]) + group(2, "block nodes", [n[0] for n in block])
+    S += group(3, "ground main node", [1000]) + group(4, "block main node", [2000])
+    S += rbody(1, "ground", 1000, 1) + rbody(2, "block", 2000, 2, BLOCK_MASS)
+    S += bcs(1, "ground fixed", "111 111", 3)
+    S += funct(1, "constant", [(0.0, 1.0), (1000.0, 1.0)])
+    S += funct(2, "loading force vs penetration", CURVE)
+    S += cload(1, "weight on the block", 1, "Z", 4, -W)
+    S += surf_part(1, "block bottom", [2]) + surf_part(2, "ground top", [1])
+    S += inter6(1, "block on ground", 1, 2, 2, FSCALE, ASCALE, VISC)
+    S += ["/END"]
+    N = engine(name, TEND, -500, comments=[f"{TEND:g} ms; rests at p* = {rest_penetration():.6g} mm."])
+    return name, S, N
+
+
+DECKS = {"type6_rest": type6_rest}
+
+if __name__ == "__main__":
+    out = sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(os.path.abspath(__file__))
+    for n in (sys.argv[2:] or DECKS):
+        write(out, *DECKS[n]())

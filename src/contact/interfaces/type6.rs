@@ -1,0 +1,344 @@
+//! TYPE6 rigid body contact (theory manual §8.7): two surfaces, each on one
+//! rigid body, searched as TYPE3 (`type3.rs`: the nodes of each surface
+//! against the segments of the other, the closest-segment walk, one-sided
+//! penetration), but the interface's total normal force is a user function
+//! of the largest penetration, F = FscaleId·f(p_max/Ascalex), shared by the
+//! penetrated nodes in proportion to their penetration vectors
+//! (EQ. 8.7.6.1):
+//!
+//!   F_i = p̄_i / ‖Σ p̄_j − Σ q̄_k‖ · F(max p)
+//!
+//! (p̄ the penetration vectors of surface 1's nodes, q̄ those of surface 2's
+//! nodes, counted on surface 1). The runtime measures every pair, reduces
+//! p_max and the resultant over all ranks, then computes the forces
+//! (`InterfaceType::is_total_force`). On top of the elastic share, each
+//! penetrated node takes a normal damper −Visc·v_n (the card's Visc, along
+//! the normal, never pulling) and Coulomb friction as TYPE3's (EQ.
+//! 8.5.4.1–4: incremental, K_t = K_n/10 with K_n = F/‖R‖ the node's normal
+//! force per unit penetration, capped at Fric·F_n).
+//!
+//! Time step (EQ. 8.7.5.1–2): Δt = 0.1·√(M/K), M the smaller of the two
+//! rigid bodies' masses, K the larger of the tangent FscaleId/Ascalex·f′
+//! and the secant F/p at the largest penetration (the tangent at 0 while
+//! nothing penetrates, so the step is already small at the first impact).
+//! The stiffness goes to no node's own step: the nodes move with their
+//! bodies.
+
+use super::type3::{nodes_of, Type3};
+use super::type5;
+use super::{
+    CandidateKind, CandidateSearch, CardCommon, InterfaceType, NodeState, PairContext, PairForce,
+    PairOutcome, PairState, PassSides, SurfaceSizes, NODE_SHAPE,
+};
+use super::layout::{Interface, Pass};
+use crate::contact::friction::{self, FrictionLaw};
+use crate::contact::gap::{GapRule, InitialPenetration};
+use crate::contact::geometry::{self as geo, V3};
+use crate::kinematics::function;
+use crate::model::{self, Function, InterfaceKind};
+use serde::{Deserialize, Serialize};
+
+/// TYPE6's own options; the load curve and the body mass are bound from
+/// the model (`bind`).
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct Type6 {
+    pub fct_id_ld: model::Id,
+    /// The loading curve f(p) (fct_IDld).
+    pub load: Option<Function>,
+    pub ascalex: f64,
+    pub fscale_ld: f64,
+    /// Visc: damping force per unit normal velocity, per penetrated node.
+    pub visc: f64,
+    /// The smaller of the two rigid bodies' masses (EQ. 8.7.5.1).
+    pub body_mass: f64,
+}
+
+impl Type6 {
+    /// FscaleId·f(p/Ascalex) and its slope in p.
+    fn curve(&self, p: f64) -> (f64, f64) {
+        let Some(f) = &self.load else {
+            return (0.0, 0.0);
+        };
+        let x = p / self.ascalex;
+        (
+            self.fscale_ld * function::eval(f, x),
+            self.fscale_ld / self.ascalex * function::slope(f, x),
+        )
+    }
+}
+
+/// The rigid body that holds every node of `segs`, by index.
+fn body_of(m: &model::Model, segs: &[[u32; 4]]) -> Option<usize> {
+    let nodes = nodes_of(segs);
+    m.rigid_bodies.iter().position(|b| {
+        nodes
+            .iter()
+            .all(|n| *n == b.main_node || b.secondary_nodes.binary_search(n).is_ok())
+    })
+}
+
+impl InterfaceType for Type6 {
+    fn type_number(&self) -> u32 {
+        6
+    }
+
+    fn candidate_kind(&self) -> CandidateKind {
+        CandidateKind::NodeToSegment
+    }
+
+    fn search(&self) -> CandidateSearch {
+        CandidateSearch::Walk
+    }
+
+    fn from_card(kind: &InterfaceKind) -> Option<(Self, CardCommon)> {
+        let InterfaceKind::Type6(t) = kind else {
+            return None;
+        };
+        let common = CardCommon {
+            stfac: 1.0,
+            friction: FrictionLaw {
+                fric: t.fric,
+                ..FrictionLaw::none()
+            },
+            gap_card: t.gap,
+            tstart: t.tstart,
+            tstop: t.tstop,
+            ibc: [false; 3],
+            inacti: 0,
+            idel: 0,
+        };
+        let own = Type6 {
+            fct_id_ld: t.fct_id_ld,
+            load: None,
+            ascalex: t.ascalex,
+            fscale_ld: t.fscale_ld,
+            visc: t.visc,
+            body_mass: 0.0,
+        };
+        Some((own, common))
+    }
+
+    fn unsupported(kind: &InterfaceKind) -> Option<&'static str> {
+        let InterfaceKind::Type6(t) = kind else {
+            return None;
+        };
+        if t.sfric != 0.0 {
+            Some("a static friction force (Sfric)")
+        } else if t.fct_id_ff != 0 || t.fct_id_fv != 0 {
+            Some("friction factor functions (fct_IDff, fct_IDfv)")
+        } else if t.iform != 0 {
+            Some("elasto-plastic loading and unloading (Iform = 1, 2)")
+        } else if t.inacti != 0 {
+            Some("Inacti = 5 (variable gap for initial penetrations)")
+        } else if t.fct_id_dv != 0 || t.fct_id_df != 0 {
+            Some("damping functions (fct_IDdv, fct_IDdf)")
+        } else if t.irs == 1 || t.irm == 1 {
+            Some("reversed segment normals (IRS or IRm = 1)")
+        } else {
+            None
+        }
+    }
+
+    /// The load curve, and the two rigid bodies: each surface must lie on
+    /// one rigid body (§8.7.1), and not the same one.
+    fn bind(&mut self, m: &model::Model, i: &model::Interface, kw: &str) -> Result<(), String> {
+        self.load = m.functions.iter().find(|f| f.id == self.fct_id_ld).cloned();
+        if self.load.is_none() {
+            return Err(format!(
+                "{kw}, field fct_IDld: /FUNCT/{} is not defined",
+                self.fct_id_ld
+            ));
+        }
+        let mut bodies = [0usize; 2];
+        for (b, (segs, field)) in bodies.iter_mut().zip([
+            (&i.secondary_segments, "surf_ID1"),
+            (&i.main_segments, "surf_ID2"),
+        ]) {
+            *b = body_of(m, segs).ok_or_else(|| {
+                format!(
+                    "{kw}, field {field}: every node of a TYPE6 surface must belong to one \
+                     /RBODY (theory manual §8.7.1); this surface's nodes are not all on one"
+                )
+            })?;
+        }
+        if bodies[0] == bodies[1] {
+            return Err(format!(
+                "{kw}, fields surf_ID1 and surf_ID2: both surfaces are on /RBODY/{}: \
+                 expected two different rigid bodies (theory manual §8.7.1)",
+                m.rigid_bodies[bodies[0]].card.id
+            ));
+        }
+        self.body_mass = bodies
+            .iter()
+            .map(|&b| m.rigid_bodies[b].mass)
+            .fold(f64::INFINITY, f64::min);
+        Ok(())
+    }
+
+    /// Surface 1's nodes against surface 2, then surface 2's against surface 1.
+    fn passes<'a>(&self, i: &'a model::Interface) -> Vec<PassSides<'a>> {
+        Type3 {}.passes(i)
+    }
+
+    fn gap_rule(&self, common: &CardCommon, _sizes: &SurfaceSizes) -> GapRule {
+        type5::constant_gap(common.gap_card)
+    }
+
+    fn sorting_margin(&self) -> f64 {
+        type5::DEFAULT_BUMULT
+    }
+
+    /// Not used: the force is the load curve's.
+    fn solid_segment_stiffness(&self, bulk: f64, area: f64, volume: f64) -> f64 {
+        crate::contact::stiffness::brick_type3(bulk, area, volume)
+    }
+
+    fn pair_stiffness(&self, _it: &Interface, _p: &Pass, _k: usize, _m: usize) -> f64 {
+        0.0
+    }
+
+    fn walk(
+        &self,
+        it: &Interface,
+        p: &Pass,
+        s0: u32,
+        xs: V3,
+        x_of: &dyn Fn(u32) -> Option<V3>,
+        seg_on: &dyn Fn(u32) -> bool,
+    ) -> Option<u32> {
+        type5::walk(p, s0, xs, type5::walk_reach(it, p), x_of, seg_on)
+    }
+
+    fn walk_reach(&self, max_diag: f64) -> f64 {
+        2.0 * max_diag
+    }
+
+    fn is_total_force(&self) -> bool {
+        true
+    }
+
+    /// Pass 2's nodes are surface 2's: their vectors count with the
+    /// opposite sign on surface 1 (EQ. 8.7.6.1, −Σ q̄_k).
+    fn resultant_sign(&self, pass: usize) -> f64 {
+        if pass == 0 {
+            1.0
+        } else {
+            -1.0
+        }
+    }
+
+    /// F(p_max) and Δt = 0.1·√(M/K) (EQ. 8.7.5.1–2).
+    fn total_force(&self, p_max: f64) -> (f64, f64) {
+        let (f, tangent) = self.curve(p_max.max(0.0));
+        let secant = if p_max > 0.0 { f / p_max } else { 0.0 };
+        let k = tangent.max(secant);
+        let dt = if k > 0.0 && self.body_mass > 0.0 {
+            0.1 * (self.body_mass / k).sqrt()
+        } else {
+            f64::INFINITY
+        };
+        (if p_max > 0.0 { f.max(0.0) } else { 0.0 }, dt)
+    }
+
+    #[inline]
+    fn pair(&self, c: &PairContext, _ns: &mut NodeState, st: &mut PairState) -> PairOutcome {
+        let m = c.m as usize;
+        let tri = c.p.is_tri(m);
+        let Some((pen, pr)) = type5::penetration(c.xs, c.xm, tri, c.it.gap.gapmin) else {
+            return PairOutcome::Free;
+        };
+        if pen <= 0.0 {
+            if c.scale.is_some() {
+                st.ft = [0.0; 3];
+            }
+            return PairOutcome::Free;
+        }
+        let n = pr.normal;
+        let Some(fac) = c.scale else {
+            // Measuring: the penetration vector.
+            return PairOutcome::Force(PairForce {
+                fs: geo::scale(n, pen),
+                sec_shape: NODE_SHAPE,
+                shape: pr.shape,
+                dt_kin: f64::INFINITY,
+                f_n: pen,
+                pen,
+                dir: n,
+                point: pr.point,
+                ..Default::default()
+            });
+        };
+        let vrel = geo::sub(c.vs, geo::interpolate(&pr.shape, c.vm));
+        let f_n = (fac * pen - self.visc * geo::dot(vrel, n)).max(0.0);
+        let law = &c.it.friction;
+        let f_t = if law.active() && f_n > 0.0 {
+            let vt = friction::tangential(vrel, n);
+            let mu = law.mu(0.0, geo::norm(vt));
+            friction::tangential_force(law, mu, f_n, vt, n, 0.1 * fac, 0.0, c.dt, &mut st.ft)
+        } else {
+            st.ft = [0.0; 3];
+            [0.0; 3]
+        };
+        PairOutcome::Force(PairForce {
+            fs: geo::add(geo::scale(n, f_n), f_t),
+            sec_shape: NODE_SHAPE,
+            shape: pr.shape,
+            kt: 0.0,
+            dt_kin: f64::INFINITY,
+            f_n,
+            f_t,
+            pen,
+            dir: n,
+            point: pr.point,
+        })
+    }
+
+    fn initial_penetration(
+        &self,
+        _it: &Interface,
+        _xs: V3,
+        _xm: &[V3; 4],
+        _tri: bool,
+        _g: f64,
+    ) -> (InitialPenetration, f64) {
+        // An initial intersection is simply part of p_max (Icor = 0).
+        (InitialPenetration::Keep, 0.0)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn linear(k: f64) -> Type6 {
+        Type6 {
+            fct_id_ld: 1,
+            load: Some(Function {
+                id: 1,
+                title: String::new(),
+                x: vec![0.0, 1.0],
+                y: vec![0.0, k],
+                loc: Default::default(),
+            }),
+            ascalex: 0.5,
+            fscale_ld: 2.0,
+            visc: 0.0,
+            body_mass: 4.0,
+        }
+    }
+
+    /// F = FscaleId·f(p/Ascalex); Δt = 0.1·√(M/K) with K the tangent
+    /// FscaleId/Ascalex·f′ (EQ. 8.7.5.1), also before any penetration.
+    #[test]
+    fn the_total_force_and_step_follow_the_scaled_curve() {
+        let t = linear(100.0);
+        let (f, dt) = t.total_force(0.01);
+        assert!((f - 2.0 * 100.0 * 0.02).abs() < 1e-12);
+        assert!((dt - 0.1 * (4.0f64 / 400.0).sqrt()).abs() < 1e-15);
+        let (f0, dt0) = t.total_force(0.0);
+        assert_eq!(f0, 0.0);
+        assert_eq!(dt0, dt);
+        assert_eq!(t.resultant_sign(0), 1.0);
+        assert_eq!(t.resultant_sign(1), -1.0);
+    }
+}
