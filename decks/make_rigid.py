@@ -17,13 +17,21 @@ Units: kg, mm, ms (force kN, stress GPa). Steel shells: E = 210, nu = 0.3.
                sits on an edge of the other surface (block nodes at -10, 0,
                10 mm; ground nodes at -20, -12, -4, 4, 12, 20 mm): the block
                stays level, every node at the same penetration.
+* type14_sphere   a rigid sphere (/SURF/ELLIPS, R = 100 mm, on an /RBODY of
+               10 kg with no elements) dropped at 2 mm/ms on a fixed shell
+               plate (200 x 200 mm, 10 mm shells, a node under the impact
+               point) through /INTER/TYPE14 with a nonlinear load curve f
+               (the total elastic force against the largest penetration,
+               Stif = 1): it penetrates to the depth where the curve's work
+               equals its kinetic energy, then rebounds with all of it (one
+               curve for loading and unloading: no loss without Visc).
 """
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from make_contact import (header, law1, prop_shell, part, nodes_block, shells_block,  # noqa: E402
-                          group, surf_part, bcs, funct, cload, engine, plate, write, i10, r20)
+                          group, surf_part, bcs, funct, cload, inivel, engine, plate, write, i10, r20)
 
 # type6_rest
 W = 0.012                       # kN on the block
@@ -93,7 +101,62 @@ def type6_rest(name="type6_rest"):
     return name, S, N
 
 
-DECKS = {"type6_rest": type6_rest}
+# type14_sphere
+R_SPHERE = 100.0                # mm
+M_SPHERE = 10.0                 # kg
+V0_SPHERE = 2.0                 # mm/ms
+H0_SPHERE = 2.0                 # mm: the sphere's gap at t = 0
+CURVE14 = [(0.0, 0.0), (10.0, 0.5), (30.0, 4.5)]   # f(p): mm, kN
+TEND14 = 40.0                   # ms
+
+
+def ellipsoid(sid, title, centre, axes, n=2):
+    return [f"/SURF/ELLIPS/{sid}", title,
+            "#  skew_ID         n", i10(0) + i10(n),
+            "#                 Xc                  Yc                  Zc", "".join(r20(v) for v in centre),
+            "#                  a                   b                   c", "".join(r20(v) for v in axes)]
+
+
+def inter14(iid, title, grnod, surf, fct, stif=1.0, gap=0.0):
+    """/INTER/TYPE14 (src/deck/interfaces.rs read_type14)."""
+    return [f"/INTER/TYPE14/{iid}", title,
+            "#  grnd_IDs  surf_IDm  fct_IDld   fct_IDf  fct_IDd1  fct_IDd2",
+            i10(grnod) + i10(surf) + i10(fct) + i10(0) * 3,
+            "#               Stif                Fric                Visc                 Gap",
+            r20(stif) + r20(0) + r20(0) + r20(gap)]
+
+
+def type14_sphere(name="type14_sphere"):
+    nodes, sh = plate(1, 1, (-100.0, -100.0), 200.0, 200.0, 20, 20, 0.0)
+    zc = R_SPHERE + H0_SPHERE
+    frame = [(1001 + k, *[10.0 * s if i == k // 2 else 0.0 for i in range(3)]) for k, s in
+             enumerate([1, -1] * 3)]
+    frame = [(n, x, y, z + zc) for n, x, y, z in frame]
+    body = [(1000, 0.0, 0.0, zc)] + frame
+    j = 0.4 * M_SPHERE * R_SPHERE ** 2
+    S = header(name, "TYPE14: a rigid sphere dropped on a plate", [
+        "A rigid sphere (an ellipsoid surface on a rigid body) dropped on a fixed plate",
+        "through /INTER/TYPE14 with a load curve (decks/make_rigid.py)."])
+    S += law1(1, "soft plate", e=0.21) + prop_shell(1, "t = 1 mm", 1.0) + part(1, "plate", 1, 1)
+    S += nodes_block(nodes + body) + shells_block(1, sh)
+    S += group(1, "plate nodes", [n[0] for n in nodes])
+    S += group(2, "sphere frame", [n[0] for n in frame]) + group(3, "sphere nodes", [n[0] for n in body])
+    S += ellipsoid(10, "sphere", (0.0, 0.0, zc), (R_SPHERE,) * 3)
+    S += [f"/RBODY/1", "sphere",
+          "#  node_ID   sens_ID   Skew_ID    Ispher                Mass  grnd_ID     Ikrem      ICoG   surf_ID",
+          i10(1000) + i10(0) * 3 + r20(M_SPHERE) + i10(2) + i10(0) * 2 + i10(10),
+          "#                Jxx                 Jyy                 Jzz", r20(j) * 3,
+          "#                Jxy                 Jyz                 Jxz", r20(0) * 3]
+    S += bcs(1, "plate fixed", "111 111", 1)
+    S += inivel(1, "drop", (0.0, 0.0, -V0_SPHERE), 3)
+    S += funct(2, "total elastic force vs penetration", CURVE14)
+    S += inter14(1, "sphere on plate", 1, 10, 2)
+    S += ["/END"]
+    N = engine(name, TEND14, -5, comments=[f"{TEND14:g} ms: impact at 1 ms, rebound by about 25 ms."])
+    return name, S, N
+
+
+DECKS = {"type6_rest": type6_rest, "type14_sphere": type14_sphere}
 
 if __name__ == "__main__":
     out = sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(os.path.abspath(__file__))

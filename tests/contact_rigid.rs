@@ -15,6 +15,17 @@
 //!   and restarted on 1 ends identically;
 //! - a surface not on a rigid body, and the options not computed, stop the
 //!   run by name.
+//!
+//! Hyper-ellipsoid contact (§8.9, TYPE14) on type14_sphere: a rigid sphere
+//! (/SURF/ELLIPS on a 10 kg /RBODY) dropped at v0 = 2 mm/ms on a fixed plate,
+//! the total elastic force a nonlinear curve of the largest penetration:
+//!
+//! - the largest force is the curve's at the depth δ where its work equals
+//!   the sphere's kinetic energy, ∫₀^δ f = ½Mv0², within 2%;
+//! - the sphere rebounds with its kinetic energy (one curve loads and
+//!   unloads), within 2%, and the energy closes with the contact energy;
+//! - identical on 1, 2 and 4 ranks (the plate's nodes, whose reactions the
+//!   body gathers, on several ranks) and 2 threads; restart 2 → 1.
 
 mod common;
 #[path = "contact_common/mod.rs"]
@@ -156,6 +167,146 @@ fn type6_options_it_does_not_compute_stop_the_run_by_name() {
     assert_eq!(code, 2, "{err}");
     assert!(
         err.contains("/INTER/TYPE6/1") && err.contains("Iform"),
+        "{err}"
+    );
+}
+
+const CURVE14: [(f64, f64); 3] = [(0.0, 0.0), (10.0, 0.5), (30.0, 4.5)];
+const M_SPHERE: f64 = 10.0;
+const V0_SPHERE: f64 = 2.0;
+
+/// δ with ∫₀^δ f = ½·M·v0² (f piecewise linear, integrated exactly).
+fn sphere_depth() -> f64 {
+    let mut left = 0.5 * M_SPHERE * V0_SPHERE * V0_SPHERE;
+    for s in CURVE14.windows(2) {
+        let ((x0, y0), (x1, y1)) = (s[0], s[1]);
+        let slope = (y1 - y0) / (x1 - x0);
+        let area = 0.5 * (y0 + y1) * (x1 - x0);
+        if area >= left {
+            // y0·x + ½·slope·x² = left
+            let x = (-y0 + (y0 * y0 + 2.0 * slope * left).sqrt()) / slope;
+            return x0 + x;
+        }
+        left -= area;
+    }
+    unreachable!("the energy is within the curve")
+}
+
+fn curve14(p: f64) -> f64 {
+    for s in CURVE14.windows(2) {
+        let ((x0, y0), (x1, y1)) = (s[0], s[1]);
+        if p <= x1 {
+            return y0 + (y1 - y0) * (p - x0) / (x1 - x0);
+        }
+    }
+    unreachable!("p is within the curve")
+}
+
+#[test]
+fn a_type14_sphere_penetrates_as_its_load_curve_says_and_rebounds_with_its_energy() {
+    let r = run(
+        &deck("type14_sphere"),
+        &scratch("type14_sphere_1"),
+        &RunArgs::default(),
+    );
+    assert!(r.listing.normal_termination());
+    let depth = sphere_depth();
+    assert!((depth - 20.963).abs() < 1e-3, "{depth}");
+    let f_peak = r
+        .listing
+        .of(1)
+        .iter()
+        .map(|l| -l.normal[2])
+        .fold(0.0, f64::max);
+    let expect = curve14(depth);
+    assert!(
+        (f_peak - expect).abs() < 0.02 * expect,
+        "peak force {f_peak}, expected {expect} at the depth {depth}"
+    );
+    let state = r.final_state();
+    let v = state[&1000][5];
+    assert!(
+        (v * v / (V0_SPHERE * V0_SPHERE) - 1.0).abs() < 0.02,
+        "rebound speed {v}, expected {V0_SPHERE}"
+    );
+    assert!(
+        r.listing.of(1).last().unwrap().pairs == 0,
+        "the sphere left the plate"
+    );
+    let out = std::fs::read_to_string(r.dir.join("type14_sphere.out")).unwrap();
+    let closes = out
+        .lines()
+        .find(|l| l.contains("ENERGY BALANCE"))
+        .and_then(|l| l.split("closes to ").nth(1))
+        .and_then(|t| t.trim().trim_end_matches('%').parse::<f64>().ok())
+        .expect("ENERGY BALANCE line");
+    assert!(closes.abs() < 1.0, "energy closes to {closes}%");
+}
+
+#[test]
+fn type14_is_identical_on_1_2_4_ranks_and_2_threads_with_the_nodes_on_several_ranks() {
+    let d = deck("type14_sphere");
+    for np in [2, 4] {
+        let v = common::crashsim_json(&[
+            "partition",
+            d.to_str().unwrap(),
+            "--np",
+            &np.to_string(),
+            "--json",
+        ]);
+        let sec = v["interfaces"][0]["secondary_ranks"]
+            .as_array()
+            .unwrap()
+            .len();
+        assert!(sec >= 2, "{np} ranks: the plate's nodes on {sec} rank(s)");
+    }
+    let one = run(&d, &scratch("type14_ranks_1"), &RunArgs::default());
+    assert_same_final_state_on_ranks_and_2_threads(&d, "type14_ranks", &one, &[2, 4]);
+}
+
+#[test]
+fn a_type14_run_restarted_on_another_rank_count_ends_identically() {
+    let d = deck("type14_sphere");
+    let whole = run(&d, &scratch("type14_restart_whole"), &RunArgs::default());
+    // Cycle 300 is in the middle of the contact.
+    assert_restart_2_to_1_ends_as(&d, "type14_restart_stop", 300, &whole);
+}
+
+#[test]
+fn type14_options_it_does_not_compute_stop_the_run_by_name() {
+    let dir = scratch("type14_fric");
+    let d = common::deck_variant("type14_sphere", &dir, |i, lines| {
+        (i >= 1 && lines[i - 1].starts_with("#               Stif"))
+            .then(|| format!("{:>20}{:>20}{:>20}{:>20}", "1", "0.3", "0", "0"))
+    });
+    let out = common::crashsim(&[
+        "run",
+        d.to_str().unwrap(),
+        "--out",
+        dir.join("out").to_str().unwrap(),
+    ]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("/INTER/TYPE14/1") && err.contains("friction"),
+        "{err}"
+    );
+}
+
+#[test]
+fn an_ellipsoid_with_a_zero_semi_axis_is_a_deck_error_at_its_line() {
+    let dir = scratch("type14_bad_axis");
+    let d = common::deck_variant("type14_sphere", &dir, |i, lines| {
+        (i >= 1 && lines[i - 1].starts_with("#                  a"))
+            .then(|| format!("{:>20}{:>20}{:>20}", "100", "0", "100"))
+    });
+    let out = common::crashsim(&["check", d.to_str().unwrap()]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("type14_sphere_0000.rad:")
+            && err.contains("/SURF/ELLIPS/10")
+            && err.contains("semi-axis"),
         "{err}"
     );
 }

@@ -31,6 +31,7 @@ pub mod stiffness;
 pub mod tied;
 
 use crate::domain::Subdomain;
+use crate::kinematics::rigid_body::{NodeLoad, RigidBodyState};
 use crate::parallel::World;
 use exchange::GhostPlan;
 use geometry::{self as geo, V3};
@@ -167,6 +168,10 @@ pub struct ContactSystem {
     idel_index: IdelIndex,
     /// Elements already known deleted (all ranks).
     dead: std::collections::HashSet<(u8, u32)>,
+    /// The reactions of analytic main surfaces on their rigid bodies from
+    /// this rank's pairs at the last `compute`: (body index, load at the
+    /// contact point, keyed by the secondary node).
+    pub body_loads: Vec<(usize, NodeLoad)>,
     /// What the interfaces removed at the last `compute`, and totals.
     removed_now: Vec<Removed>,
     removed_total: Vec<(u64, u64)>,
@@ -304,6 +309,7 @@ impl ContactSystem {
             idel_index,
             dead: std::collections::HashSet::new(),
             removed_now: Vec::new(),
+            body_loads: Vec::new(),
             removed_total,
             local,
             owned,
@@ -386,6 +392,7 @@ impl ContactSystem {
         kc: &mut [f64],
         release: &mut Vec<(u32, u8)>,
         deleted: &[(u8, u32)],
+        bodies: &[RigidBodyState],
     ) -> Option<ContactStep> {
         if self.is_empty() {
             return None;
@@ -450,7 +457,7 @@ impl ContactSystem {
             self.timers.search_s += ts.elapsed().as_secs_f64();
         }
         let tf = std::time::Instant::now();
-        let (contribs, step) = self.pairs(world, mass, t, dt);
+        let (contribs, step) = self.pairs(world, mass, t, dt, bodies);
         self.timers.force_s += tf.elapsed().as_secs_f64();
         let te = std::time::Instant::now();
         let got = exchange::route(world, &self.setup, contribs);
@@ -809,6 +816,7 @@ impl ContactSystem {
                         CandidateSearch::Sort => {
                             run.cand.segs[run.cand.ptr[j]..run.cand.ptr[j + 1]].to_vec()
                         }
+                        CandidateSearch::Analytic => vec![],
                         CandidateSearch::Walk => {
                             let m = run.nodes[j].last_seg;
                             if m == NONE {

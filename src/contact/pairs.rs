@@ -15,6 +15,7 @@ use super::interfaces::{
 use super::key::{SumKey, SECONDARY_CORNER};
 use super::setup::{Interface, Pass, NONE};
 use super::{seg_values, ContactSystem, InterfaceSums, PassRun, Removal};
+use crate::kinematics::rigid_body::{NodeLoad, RigidBodyState};
 use crate::parallel::exact_sum::{sum_over_ranks, ExactSum};
 use crate::parallel::World;
 use rayon::prelude::*;
@@ -28,6 +29,8 @@ struct NodeOut {
     sums: InterfaceSums,
     /// The largest penetration of its pairs.
     pen_max: f64,
+    /// Reactions on rigid bodies (analytic main surfaces).
+    body_loads: Vec<(usize, NodeLoad)>,
 }
 
 /// What every node of one pass reads.
@@ -48,6 +51,7 @@ struct PassView<'a> {
     /// IBC bits to release on an impacting secondary node.
     ibc: u8,
     dt: f64,
+    bodies: &'a [RigidBodyState],
     /// Total-force types: see `PairContext::scale`.
     scale: Option<f64>,
 }
@@ -69,8 +73,10 @@ impl ContactSystem {
         mass: &[f64],
         t: f64,
         dt: f64,
+        bodies: &[RigidBodyState],
     ) -> (Vec<Contribution>, Option<(f64, u64)>) {
         let mut out: Vec<Contribution> = Vec::new();
+        self.body_loads.clear();
         let mut best: Option<(f64, u64)> = None;
         for s in self.sums.iter_mut() {
             *s = InterfaceSums {
@@ -85,17 +91,18 @@ impl ContactSystem {
             }
             let mut scale = None;
             if it.ty().is_total_force() {
-                let (fac, step) = self.total_scale(world, ii, mass, dt);
+                let (fac, step) = self.total_scale(world, ii, mass, dt, bodies);
                 scale = Some(fac);
                 if step < best.map_or(f64::INFINITY, |b| b.0) {
                     best = Some((step, self.setup.interfaces[ii].id));
                 }
             }
             for pi in 0..self.setup.interfaces[ii].passes.len() {
-                let results = self.run_pass(ii, pi, mass, dt, scale);
+                let results = self.run_pass(ii, pi, mass, dt, bodies, scale);
                 let acc = &mut self.sums[ii];
                 for r in results {
                     out.extend(r.contribs);
+                    self.body_loads.extend(r.body_loads);
                     if let Some(st) = r.step {
                         if best.is_none_or(|b| st < b) {
                             best = Some(st);
@@ -121,6 +128,7 @@ impl ContactSystem {
         pi: usize,
         mass: &[f64],
         dt: f64,
+        bodies: &[RigidBodyState],
         scale: Option<f64>,
     ) -> Vec<NodeOut> {
         let it = &self.setup.interfaces[ii];
@@ -139,6 +147,7 @@ impl ContactSystem {
             cnode_mass: &self.setup.mass,
             ibc,
             dt,
+            bodies,
             scale,
         };
         it.options.visit(PassPairs {
@@ -152,12 +161,19 @@ impl ContactSystem {
     /// penetration vector over all ranks (exact sums: the same bits on any
     /// number of ranks), and returns its normal force per unit penetration
     /// F(p_max)/|R| and its time step. Collective.
-    fn total_scale(&mut self, world: &World, ii: usize, mass: &[f64], dt: f64) -> (f64, f64) {
+    fn total_scale(
+        &mut self,
+        world: &World,
+        ii: usize,
+        mass: &[f64],
+        dt: f64,
+        bodies: &[RigidBodyState],
+    ) -> (f64, f64) {
         let mut p_max = [0.0f64];
         let mut r = [ExactSum::default(); 3];
         for pi in 0..self.setup.interfaces[ii].passes.len() {
             let sign = self.setup.interfaces[ii].ty().resultant_sign(pi);
-            for n in self.run_pass(ii, pi, mass, dt, None) {
+            for n in self.run_pass(ii, pi, mass, dt, bodies, None) {
                 p_max[0] = p_max[0].max(n.pen_max);
                 for k in 0..3 {
                     r[k].add(sign * n.sums.f_normal[k]);
@@ -246,6 +262,12 @@ fn node_pairs<T: InterfaceType>(
                 }
             }
         }
+        CandidateSearch::Analytic => {
+            // One pair per node, against main entity 0 (the analytic surface).
+            if !one_pair(ty, v, k, 0, ns, &mut mem.walk_pair.1, &mut out) {
+                return NodeOut::default();
+            }
+        }
         CandidateSearch::Walk => {
             let node_off = removal.sec_off.get(k).copied().unwrap_or(false);
             if node_off || ns.last_seg == NONE {
@@ -290,12 +312,24 @@ fn one_pair<T: InterfaceType>(
     if ns.off_segs.binary_search(&m).is_ok() {
         return true;
     }
-    let seg = &v.p.segs[m as usize];
-    let (Some(xm), Some(vm)) = (
-        seg_values(seg, v.avail, v.cx),
-        seg_values(seg, v.avail, v.cv),
-    ) else {
-        return true;
+    // An analytic main surface has no segment: no main nodes.
+    const NO_SEGMENT: [u32; 4] = [NONE; 4];
+    let analytic = v.p.segs.is_empty();
+    let seg = if analytic {
+        &NO_SEGMENT
+    } else {
+        &v.p.segs[m as usize]
+    };
+    let (xm, vm) = if analytic {
+        ([[0.0; 3]; 4], [[0.0; 3]; 4])
+    } else {
+        let (Some(xm), Some(vm)) = (
+            seg_values(seg, v.avail, v.cx),
+            seg_values(seg, v.avail, v.cv),
+        ) else {
+            return true;
+        };
+        (xm, vm)
     };
     let sec = v.p.sec_side(k);
     let s = sec.nodes[0];
@@ -322,11 +356,19 @@ fn one_pair<T: InterfaceType>(
         xs_side: &xs_side,
         vs_side: &vs_side,
         sec,
-        main: Side::segment(seg),
+        main: if analytic {
+            Side {
+                nodes: NO_SEGMENT,
+                count: 0,
+            }
+        } else {
+            Side::segment(seg)
+        },
         cnode_mass: v.cnode_mass,
         xm: &xm,
         vm: &vm,
         dt: v.dt,
+        bodies: v.bodies,
         scale: v.scale,
     };
     let f = match ty.pair(&c, ns, st) {
@@ -343,6 +385,17 @@ fn one_pair<T: InterfaceType>(
     };
     let vrel = geo::sub(vs, geo::interpolate(&f.shape, &vm));
     emit(out, key, &nodes, &f, v.ibc, vrel);
+    if let Some(b) = ty.reaction_body() {
+        out.body_loads.push((
+            b,
+            NodeLoad {
+                node: v.nodes_g[s as usize],
+                f: geo::scale(f.fs, -1.0),
+                m: [0.0; 3],
+                x: f.point,
+            },
+        ));
+    }
     if let Some(d) = ty.kinematic_step(&f) {
         if d < out.step.map_or(f64::INFINITY, |b| b.0) {
             out.step = Some((d, v.it.id));

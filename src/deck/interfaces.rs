@@ -677,6 +677,28 @@ fn read_type6(cards: &mut Cards) -> InputResult<Type6> {
 }
 
 // ---------------------------------------------------------------------------
+// TYPE14
+// ---------------------------------------------------------------------------
+
+fn read_type14(cards: &mut Cards) -> InputResult<Type14> {
+    let c1 =
+        cards.next("the card with grnd_IDs, surf_IDm, fct_IDld, fct_IDf, fct_IDd1, fct_IDd2")?;
+    let c2 = cards.next("the card with Stif, Fric, Visc, Gap")?;
+    Ok(Type14 {
+        grnd_ids: c1.id(1, "grnd_IDs")?,
+        surf_idm: c1.id(11, "surf_IDm")?,
+        fct_id_ld: c1.id_opt(21, "fct_IDld")?,
+        fct_id_f: c1.id_opt(31, "fct_IDf")?,
+        fct_id_d1: c1.id_opt(41, "fct_IDd1")?,
+        fct_id_d2: c1.id_opt(51, "fct_IDd2")?,
+        stif: real_ge0(&c2, 1, "Stif", 0.0, "the stiffness")?,
+        fric: real_ge0(&c2, 21, "Fric", 0.0, "the friction coefficient")?,
+        visc: real_ge0(&c2, 41, "Visc", 0.0, "the viscosity")?,
+        gap: real_ge0(&c2, 61, "Gap", 0.0, "the gap")?,
+    })
+}
+
+// ---------------------------------------------------------------------------
 // TYPE25
 // ---------------------------------------------------------------------------
 
@@ -791,6 +813,7 @@ pub(super) fn parse_interface(block: &Block, deck: &mut Deck) -> InputResult<boo
         "TYPE6" => 6,
         "TYPE7" => 7,
         "TYPE11" => 11,
+        "TYPE14" => 14,
         "TYPE19" => 19,
         "TYPE25" => 25,
         _ => return Ok(false),
@@ -809,6 +832,7 @@ pub(super) fn parse_interface(block: &Block, deck: &mut Deck) -> InputResult<boo
             let invers = deck.begin.as_ref().map_or(0, |b| b.invers);
             InterfaceKind::Type11(read_type11(&mut cards, invers > 0 && invers < 110)?)
         }
+        14 => InterfaceKind::Type14(read_type14(&mut cards)?),
         19 => InterfaceKind::Type19(read_type19(&mut cards)?),
         _ => InterfaceKind::Type25(read_type25(&mut cards)?),
     };

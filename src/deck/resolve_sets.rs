@@ -271,6 +271,15 @@ pub fn surfaces(
     for c in cards {
         let mut segments = Vec::new();
         let kw;
+        if let SurfaceDef::Ellipsoid(e) = &c.def {
+            out.push(Surface {
+                id: c.id,
+                title: c.title.clone(),
+                segments,
+                ellipsoid: Some(e.clone()),
+            });
+            continue;
+        }
         match &c.def {
             SurfaceDef::Parts(items) | SurfaceDef::PartsAllFaces(items) => {
                 let which = match &c.def {
@@ -323,6 +332,7 @@ pub fn surfaces(
                     segments.push(n);
                 }
             }
+            SurfaceDef::Ellipsoid(_) => unreachable!("taken above"),
         }
         if segments.is_empty() {
             return Err(InputError::new(c.loc.clone(), &kw, "", "the surface has no segments (its parts or groups hold no shell or solid face); expected at least one"));
@@ -331,6 +341,7 @@ pub fn surfaces(
             id: c.id,
             title: c.title.clone(),
             segments,
+            ellipsoid: None,
         });
     }
     Ok(out)

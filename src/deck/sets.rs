@@ -63,6 +63,8 @@ pub enum SurfaceDef {
     ShellGroups(Vec<i64>),
     /// /SURF/SEG: explicit segments (n4 = n3 or 0 for a triangle).
     Segments(Vec<SegmentCard>),
+    /// /SURF/ELLIPS: an analytic hyper-ellipsoid.
+    Ellipsoid(crate::model::Ellipsoid),
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
@@ -140,6 +142,19 @@ pub(super) fn parse_set(block: &Block, deck: &mut Deck) -> InputResult<bool> {
                 title,
                 items,
                 item_locs,
+                loc: block.loc.clone(),
+            });
+        }
+        ("SURF", "ELLIPS") => {
+            let id = header_id(block, 2, "surf_ID")?;
+            let mut cards = Cards::new(block);
+            let title = cards.title();
+            let def = SurfaceDef::Ellipsoid(read_ellipsoid(&mut cards)?);
+            deck.surfaces.push(SurfaceCard {
+                id,
+                title,
+                def,
+                item_locs: Vec::new(),
                 loc: block.loc.clone(),
             });
         }
@@ -246,4 +261,45 @@ pub(super) fn id_list(
         }
     }
     Ok((out, locs))
+}
+
+/// /SURF/ELLIPS cards: skew_ID (1-10), n (11-20, 0 → 2, >= 2); Xc Yc Zc
+/// (1-20, 21-40, 41-60); a b c (the same columns, each > 0).
+fn read_ellipsoid(cards: &mut Cards) -> InputResult<crate::model::Ellipsoid> {
+    let c1 = cards.next("the card with skew_ID, n")?;
+    let c2 = cards.next("the card with Xc, Yc, Zc")?;
+    let c3 = cards.next("the card with the semi-axes a, b, c")?;
+    let n = match c1.int_opt(11, 10, "n")?.unwrap_or(0) {
+        0 => 2,
+        v if v >= 2 => v as u32,
+        v => {
+            return Err(c1.err(
+                "n",
+                format!("{v} in columns 11-20: expected the degree of the hyper-ellipsoid, an integer >= 2 (0 = 2)"),
+            ))
+        }
+    };
+    let mut center = [0.0; 3];
+    let mut axes = [0.0; 3];
+    for (k, (cn, an)) in [("Xc", "a"), ("Yc", "b"), ("Zc", "c")].iter().enumerate() {
+        let col = 1 + 20 * k;
+        center[k] = c2.real_opt(col, 20, cn)?.unwrap_or(0.0);
+        let a = c3.real_opt(col, 20, an)?.unwrap_or(0.0);
+        if a <= 0.0 {
+            return Err(c3.err(
+                an,
+                format!(
+                    "{a} in columns {col}-{}: expected a semi-axis length > 0",
+                    col + 19
+                ),
+            ));
+        }
+        axes[k] = a;
+    }
+    Ok(crate::model::Ellipsoid {
+        skew_id: c1.id_opt(1, "skew_ID")?,
+        n,
+        center,
+        axes,
+    })
 }

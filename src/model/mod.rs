@@ -132,6 +132,19 @@ pub struct Surface {
     pub id: Id,
     pub title: String,
     pub segments: Vec<[u32; 4]>,
+    /// /SURF/ELLIPS: an analytic hyper-ellipsoid (then no segments).
+    #[serde(default)]
+    pub ellipsoid: Option<Ellipsoid>,
+}
+
+/// /SURF/ELLIPS (reference guide): |(x−xc)/a|^n + |(y−yc)/b|^n + |(z−zc)/c|^n = 1
+/// in the axes of skew_ID (0: global), n an integer >= 2 (default 2).
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct Ellipsoid {
+    pub skew_id: Id,
+    pub n: u32,
+    pub center: [f64; 3],
+    pub axes: [f64; 3],
 }
 
 impl Surface {

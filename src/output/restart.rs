@@ -38,7 +38,7 @@
 
 use super::h5::{self, Rows, Xfer};
 use super::{Context, LoopState};
-use crate::kinematics::rigid_body::RigidBodyState;
+use crate::kinematics::rigid_body::{NodeLoad, RigidBodyState};
 use crate::parallel::exact_sum::{sum_over_ranks, ExactSum};
 use crate::parallel::World;
 use hdf5::types::VarLenUnicode;
@@ -374,6 +374,11 @@ pub struct LoopScalars {
     pub bodies: Vec<RigidBodyState>,
     pub wall_p: Vec<[f64; 3]>,
     pub wall_v: Vec<[f64; 3]>,
+    /// The contact reactions on rigid bodies (TYPE14) the next cycle
+    /// applies, gathered from every rank in rank order (a node's loads all
+    /// come from its owner, so their order survives another rank count).
+    #[serde(default)]
+    pub body_loads: Vec<(usize, NodeLoad)>,
 }
 
 /// Where the output stood (replicated).
@@ -427,6 +432,12 @@ pub fn save(
     let n = g.node_ids.len();
     let mut sums = [*s.w_ext, *s.wall_work];
     sum_over_ranks(ctx.world, &mut sums);
+    let body_loads: Vec<(usize, NodeLoad)> = ctx
+        .world
+        .allgather(&s.contact.body_loads)
+        .into_iter()
+        .flatten()
+        .collect();
     let scalars = LoopScalars {
         deck: g.name.clone(),
         nodes: n as u64,
@@ -444,6 +455,7 @@ pub fn save(
         bodies: s.bodies.to_vec(),
         wall_p: s.wall_p.to_vec(),
         wall_v: s.wall_v.to_vec(),
+        body_loads,
     };
     let mut w = RestartWriter::create(ctx.world, path)?;
     w.replicated("solver", &scalars)?;
@@ -754,6 +766,12 @@ pub fn restore(ctx: &Context, path: &Path, s: &mut LoopState) -> Result<OutputCo
     *s.next_th = sc.next_th;
     *s.history = sc.history;
     s.bodies.clone_from_slice(&sc.bodies);
+    // The reactions go back on rank 0 alone, in their gathered order.
+    s.contact.body_loads = if ctx.world.rank() == 0 {
+        sc.body_loads
+    } else {
+        Vec::new()
+    };
     s.wall_p.copy_from_slice(&sc.wall_p);
     s.wall_v.copy_from_slice(&sc.wall_v);
     Ok(counters)

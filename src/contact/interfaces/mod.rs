@@ -67,6 +67,10 @@ pub enum CandidateSearch {
     /// One segment per node, walked to from the last cycle's closest segment
     /// ([`InterfaceType::walk`]).
     Walk,
+    /// No segments: every secondary node against the type's analytic main
+    /// surface (TYPE14's ellipsoid), which moves with a rigid body; the
+    /// kernel screens the node itself.
+    Analytic,
 }
 
 /// The most nodes on one side of a pair (a quadrilateral segment).
@@ -246,6 +250,9 @@ pub struct PairContext<'a> {
     pub xm: &'a [V3; 4],
     pub vm: &'a [V3; 4],
     pub dt: f64,
+    /// The rigid bodies at the start of the step (replicated on every rank):
+    /// analytic main surfaces move with them.
+    pub bodies: &'a [crate::kinematics::rigid_body::RigidBodyState],
     /// Total-force types ([`InterfaceType::total_force`]): `None` while the
     /// runtime measures the pairs (the kernel gives the penetration vector
     /// p·n as `fs`, `pen` = p, and leaves the pair memory as it is);
@@ -394,6 +401,13 @@ pub trait InterfaceType: Sync {
         (0.0, f64::INFINITY)
     }
 
+    /// Analytic main surfaces on a rigid body: the body (index into the
+    /// model's rigid bodies) that takes each pair's reaction, −F at the
+    /// contact point (`PairForce::point`).
+    fn reaction_body(&self) -> Option<usize> {
+        None
+    }
+
     /// The pair kernel: the force of one pair, and its memory.
     fn pair(&self, c: &PairContext, ns: &mut NodeState, st: &mut PairState) -> PairOutcome;
 
@@ -503,6 +517,7 @@ registry! {
     6 => type6::Type6,
     7 => type7::Type7,
     11 => type11::Type11,
+    14 => type14::Type14,
     25 => type25::Type25,
 }
 
@@ -547,13 +562,18 @@ mod tests {
 
     #[test]
     fn every_registered_number_resolves_to_its_type_and_candidate_kind() {
-        assert_eq!(TypeOptions::NUMBERS, &[3, 5, 6, 7, 11, 25]);
+        assert_eq!(TypeOptions::NUMBERS, &[3, 5, 6, 7, 11, 14, 25]);
         let expect = [
             (3, CandidateKind::NodeToSegment, CandidateSearch::Walk),
             (5, CandidateKind::NodeToSegment, CandidateSearch::Walk),
             (6, CandidateKind::NodeToSegment, CandidateSearch::Walk),
             (7, CandidateKind::NodeToSegment, CandidateSearch::Sort),
             (11, CandidateKind::EdgeToEdge, CandidateSearch::Sort),
+            (
+                14,
+                CandidateKind::NodeToEllipsoid,
+                CandidateSearch::Analytic,
+            ),
             (25, CandidateKind::NodeToSegment, CandidateSearch::Sort),
         ];
         for (n, kind, search) in expect {

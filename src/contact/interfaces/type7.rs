@@ -600,6 +600,7 @@ mod tests {
             xm: &xm,
             vm: &vm,
             dt: 1e-3,
+            bodies: &[],
             scale: None,
         };
         let mut ns = NodeState::default();

@@ -4,6 +4,7 @@
 //! the type's options after default resolution. One file per interface type.
 
 mod type11;
+mod type14;
 mod type19;
 mod type2;
 mod type25;
@@ -13,6 +14,7 @@ mod type6;
 mod type7;
 
 pub use type11::*;
+pub use type14::*;
 pub use type19::*;
 pub use type2::*;
 pub use type25::*;
@@ -58,6 +60,7 @@ pub enum InterfaceKind {
     Type6(Type6),
     Type7(Type7),
     Type11(Type11),
+    Type14(Type14),
     Type19(Type19),
     Type25(Type25),
 }
@@ -77,7 +80,7 @@ pub enum Side {
 }
 
 impl InterfaceSpec {
-    /// 2, 3, 5, 6, 7, 11, 19 or 25.
+    /// 2, 3, 5, 6, 7, 11, 14, 19 or 25.
     pub fn type_number(&self) -> u32 {
         match self.kind {
             InterfaceKind::Type2(_) => 2,
@@ -86,6 +89,7 @@ impl InterfaceSpec {
             InterfaceKind::Type6(_) => 6,
             InterfaceKind::Type7(_) => 7,
             InterfaceKind::Type11(_) => 11,
+            InterfaceKind::Type14(_) => 14,
             InterfaceKind::Type19(_) => 19,
             InterfaceKind::Type25(_) => 25,
         }
@@ -102,6 +106,7 @@ impl InterfaceSpec {
             }
             InterfaceKind::Type7(_) => "general node to segment",
             InterfaceKind::Type11(_) => "edge to edge",
+            InterfaceKind::Type14(_) => "nodes against a rigid hyper-ellipsoid",
             InterfaceKind::Type19(_) => {
                 "general contact: node to surface both ways and edge to edge"
             }
@@ -126,6 +131,7 @@ impl InterfaceSpec {
                 }
             }
             InterfaceKind::Type11(t) => Side::Line(t.line_ids),
+            InterfaceKind::Type14(t) => Side::NodeGroup(t.grnd_ids),
             InterfaceKind::Type19(t) => Side::Surface(t.surfaces().0),
             InterfaceKind::Type25(t) => {
                 if t.surf_id1 == 0 {
@@ -163,6 +169,12 @@ impl InterfaceSpec {
                 (t.fct_id_dv, "fct_IDdv"),
                 (t.fct_id_df, "fct_IDdf"),
             ],
+            InterfaceKind::Type14(t) => vec![
+                (t.fct_id_ld, "fct_IDld"),
+                (t.fct_id_f, "fct_IDf"),
+                (t.fct_id_d1, "fct_IDd1"),
+                (t.fct_id_d2, "fct_IDd2"),
+            ],
             _ => Vec::new(),
         }
     }
@@ -182,6 +194,7 @@ impl InterfaceSpec {
                     Side::Line(t.line_idm)
                 }
             }
+            InterfaceKind::Type14(t) => Side::Surface(t.surf_idm),
             InterfaceKind::Type19(t) => Side::Surface(t.surfaces().1),
             InterfaceKind::Type25(t) => Side::Surface(if t.surf_id2 == 0 {
                 t.surf_id1

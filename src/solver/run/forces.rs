@@ -140,6 +140,7 @@ fn contact_forces(cx: &Ctx, s: &mut State, dt: f64, deleted: &[(u8, u32)]) -> Op
         &mut s.kcont,
         &mut s.release,
         deleted,
+        &s.bodies,
     );
     for &(l, bits) in &s.release {
         for k in 0..3 {

@@ -31,6 +31,19 @@ pub(super) fn work(cx: &Ctx, s: &mut State, dt_v: f64) {
                 .add(-s.fcont[l][k] * (s.v[l][k] - 0.5 * dv) * dt_v);
         }
     }
+    // The reactions of analytic contact surfaces (TYPE14) on their rigid
+    // bodies, at the mean velocity of the body's point over the step.
+    for (b, l) in &s.contact.body_loads {
+        let body = &s.bodies[*b];
+        let after = body.velocity_at(l.x, body.center);
+        let (v0, w0) = s.bodies_v_before[*b];
+        let r = [0, 1, 2].map(|k| l.x[k] - body.center[k]);
+        let spin = crate::vec3::cross(w0, r);
+        for k in 0..3 {
+            let v = 0.5 * (after[k] + v0[k] + spin[k]);
+            s.e_contact.add(-l.f[k] * v * dt_v);
+        }
+    }
 }
 
 /// Positions at n+1: nodes by their velocity, rigid-body main nodes at

@@ -87,8 +87,20 @@ fn accelerate(cx: &Ctx, s: &mut State, dt_v: f64) {
 
 /// This rank's owned loads of each rigid body: its members', then its main
 /// node's (a load on the main node acts on the body, as in Radioss; the main
-/// node sits at the centre, so its force adds no moment).
+/// node sits at the centre, so its force adds no moment), then the
+/// reactions of the contacts on its analytic surfaces (TYPE14), keyed by
+/// their secondary nodes (a node's pairs are all computed by its owner, in
+/// interface order, so the gathered order does not depend on the ranks).
 fn rigid_body_loads(cx: &Ctx, s: &State) -> Vec<Vec<NodeLoad>> {
+    let mut loads = own_body_loads(cx, s);
+    for &(b, l) in &s.contact.body_loads {
+        loads[b].push(l);
+    }
+    loads
+}
+
+/// The members' and main node's loads of each rigid body.
+fn own_body_loads(cx: &Ctx, s: &State) -> Vec<Vec<NodeLoad>> {
     cx.local_bodies
         .iter()
         .map(|lb| {
@@ -119,6 +131,7 @@ fn rigid_bodies(cx: &Ctx, s: &mut State, dt_v: f64) {
     if cx.local_bodies.is_empty() {
         return;
     }
+    s.bodies_v_before = s.bodies.iter().map(|b| (b.v, b.omega)).collect();
     let all = cx.world.allgather(&rigid_body_loads(cx, s));
     for (b, lb) in cx.local_bodies.iter().enumerate() {
         let mut loads: Vec<NodeLoad> = all.iter().flat_map(|r| r[b].iter().copied()).collect();

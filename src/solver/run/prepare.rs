@@ -230,8 +230,20 @@ fn check_supported(m: &Model) -> Result<(), String> {
         }
     }
     for r in &m.rigid_bodies {
-        if r.card.sens_id != 0 || r.card.skew_id != 0 || r.card.ikrem != 0 || r.card.surf_id != 0 {
-            return unsupported("/RBODY with a sensor, skew, IKREM or surface", &r.card.loc);
+        if r.card.sens_id != 0 || r.card.skew_id != 0 || r.card.ikrem != 0 {
+            return unsupported("/RBODY with a sensor, skew or IKREM", &r.card.loc);
+        }
+        // surf_ID: the hyper-ellipsoid the body carries (TYPE14).
+        let ellipsoid = |id| {
+            m.surfaces
+                .iter()
+                .any(|s| s.id == id && s.ellipsoid.is_some())
+        };
+        if r.card.surf_id != 0 && !ellipsoid(r.card.surf_id) {
+            return unsupported(
+                "/RBODY with a surface (surf_ID) other than a /SURF/ELLIPS",
+                &r.card.loc,
+            );
         }
     }
     for i in &m.interfaces {

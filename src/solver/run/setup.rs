@@ -128,6 +128,9 @@ pub(super) struct State {
     pub release: Vec<(u32, u8)>,
     pub ties: TiedSystem,
     pub bodies: Vec<RigidBodyState>,
+    /// Each body's velocity and spin before this step's acceleration (the
+    /// contact work on analytic surfaces takes the mean with the new ones).
+    pub bodies_v_before: Vec<([f64; 3], [f64; 3])>,
     pub walls: Walls,
     /// This rank's partial sums, exact (the same totals for any partition):
     /// external work, rigid-wall work, contact energy.
@@ -412,6 +415,7 @@ pub(super) fn initial_state(
         w_ext: ExactSum::default(),
         wall_work: ExactSum::default(),
         e_contact: ExactSum::default(),
+        bodies_v_before: Vec::new(),
         e0: 0.0,
         history: Vec::new(),
         next_th: 0.0,

@@ -1,0 +1,358 @@
+//! TYPE14 hyper-ellipsoid to node contact (theory manual §8.9): a rigid
+//! analytic surface, |ξ/a|^n + |η/b|^n + |ζ/c|^n = 1 (/SURF/ELLIPS), carried
+//! by the rigid body whose /RBODY names it (surf_ID), against secondary
+//! nodes. Every secondary node is checked against the ellipsoid each cycle
+//! (`CandidateSearch::Analytic`: no segments, no sort).
+//!
+//! - Geometry (the pure functions below): F(ξ) = Σ|ξ_k/a_k|^n, s = F^{1/n} (the node lies on the ellipsoid
+//!   scaled by s), the distance d = (s − 1)·h with h the distance from the
+//!   centre to the tangent plane at ξ/s (exact on a sphere: |ξ| − r), the
+//!   normal ∇F/|∇F|, the contact point ξ − d·n.
+//! - Penetration p = Gap − d (> 0 in contact).
+//! - Force (§8.9, reference guide comment 1): with fct_IDld the user gives
+//!   the *total* elastic force against the largest penetration: the
+//!   interface's resultant is Stif·f(p_max), shared by the nodes in
+//!   proportion to their penetration vectors (the runtime's total-force
+//!   phases, as TYPE6); without it each node is a linear spring Stif·p.
+//! - The reaction, −F at the contact point, goes to the rigid body (force
+//!   and moment about its centre). A fixed ellipsoid (no /RBODY) takes none.
+//! - Time step: each node's stiffness enters its nodal step (EQ. 8.8.5.2);
+//!   the body's, √(2M/K) with K the larger of the tangent and the secant of
+//!   Stif·f at p_max, the global minimum as an interface step.
+
+use super::layout::{Interface, Pass};
+use super::{
+    CandidateKind, CandidateSearch, CardCommon, InterfaceType, NodeState, PairContext, PairForce,
+    PairOutcome, PairState, SurfaceSizes, NODE_SHAPE,
+};
+use crate::contact::friction::FrictionLaw;
+use crate::contact::gap::{GapRule, InitialPenetration};
+use crate::contact::geometry::{self as geo, V3};
+use crate::kinematics::function;
+use crate::kinematics::rigid_body::RigidBodyState;
+use crate::model::{self, Ellipsoid, Function, InterfaceKind};
+use serde::{Deserialize, Serialize};
+
+/// TYPE14's own options; the ellipsoid, its body and the load curve are
+/// bound from the model (`bind`).
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct Type14 {
+    pub surf_idm: model::Id,
+    pub fct_id_ld: model::Id,
+    pub stif: f64,
+    pub gap: f64,
+    pub ellipsoid: Option<Ellipsoid>,
+    /// The load curve f(p) (fct_IDld), `None`: linear node springs.
+    pub load: Option<Function>,
+    /// The rigid body carrying the ellipsoid (index), its mass, and the
+    /// ellipsoid's centre relative to the body's centre at t = 0.
+    pub body: Option<usize>,
+    pub body_mass: f64,
+    pub offset: V3,
+}
+
+/// Where the ellipsoid is: its centre and the rotation from its axes to
+/// the global ones (row-major).
+struct Pose {
+    center: V3,
+    rot: [[f64; 3]; 3],
+}
+
+fn mat_vec(a: &[[f64; 3]; 3], v: V3) -> V3 {
+    [0, 1, 2].map(|i| a[i][0] * v[0] + a[i][1] * v[1] + a[i][2] * v[2])
+}
+fn mat_t_vec(a: &[[f64; 3]; 3], v: V3) -> V3 {
+    [0, 1, 2].map(|i| a[0][i] * v[0] + a[1][i] * v[1] + a[2][i] * v[2])
+}
+
+/// F(ξ) = Σ|ξ_k/a_k|^n.
+pub fn shape_value(xi: V3, axes: V3, n: u32) -> f64 {
+    (0..3).map(|k| (xi[k] / axes[k]).abs().powi(n as i32)).sum()
+}
+
+/// ∇F/n = (sgn ξ_k·|ξ_k|^{n−1}/a_k^n)_k.
+pub fn shape_gradient(xi: V3, axes: V3, n: u32) -> V3 {
+    [0, 1, 2].map(|k| xi[k].signum() * xi[k].abs().powi(n as i32 - 1) / axes[k].powi(n as i32))
+}
+
+/// The signed distance of ξ (local) to the ellipsoid, d = (s − 1)·h with
+/// s = F^{1/n} and h = 1/|∇F(ξ/s)/n| (the distance from the centre to the
+/// tangent plane at ξ/s; Euler's identity ∇F·ξ = n·F), and the outward
+/// unit normal at ξ. `None` at the centre.
+pub fn distance(xi: V3, axes: V3, n: u32) -> Option<(f64, V3)> {
+    let f = shape_value(xi, axes, n);
+    if f <= 0.0 {
+        return None;
+    }
+    let s = f.powf(1.0 / n as f64);
+    let on = geo::scale(xi, 1.0 / s);
+    let h = 1.0 / geo::norm(shape_gradient(on, axes, n));
+    let g = shape_gradient(xi, axes, n);
+    let gn = geo::norm(g);
+    if gn == 0.0 {
+        return None;
+    }
+    Some(((s - 1.0) * h, geo::scale(g, 1.0 / gn)))
+}
+
+impl Type14 {
+    fn pose(&self, bodies: &[RigidBodyState]) -> Option<Pose> {
+        let e = self.ellipsoid.as_ref()?;
+        Some(match self.body.and_then(|b| bodies.get(b)) {
+            Some(b) => {
+                let r = mat_vec(&b.rot, self.offset);
+                Pose {
+                    center: geo::add(b.center, r),
+                    rot: b.rot,
+                }
+            }
+            None => Pose {
+                center: e.center,
+                rot: [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
+            },
+        })
+    }
+
+    /// Stif·f(p) and its slope.
+    fn curve(&self, p: f64) -> (f64, f64) {
+        match &self.load {
+            Some(f) => (
+                self.stif * function::eval(f, p),
+                self.stif * function::slope(f, p),
+            ),
+            None => (self.stif * p, self.stif),
+        }
+    }
+}
+
+impl InterfaceType for Type14 {
+    fn type_number(&self) -> u32 {
+        14
+    }
+
+    fn candidate_kind(&self) -> CandidateKind {
+        CandidateKind::NodeToEllipsoid
+    }
+
+    fn search(&self) -> CandidateSearch {
+        CandidateSearch::Analytic
+    }
+
+    fn from_card(kind: &InterfaceKind) -> Option<(Self, CardCommon)> {
+        let InterfaceKind::Type14(t) = kind else {
+            return None;
+        };
+        let common = CardCommon {
+            stfac: 1.0,
+            friction: FrictionLaw::none(),
+            gap_card: t.gap,
+            tstart: 0.0,
+            tstop: model::contact::EP30,
+            ibc: [false; 3],
+            inacti: 0,
+            idel: 0,
+        };
+        let own = Type14 {
+            surf_idm: t.surf_idm,
+            fct_id_ld: t.fct_id_ld,
+            stif: t.stif,
+            gap: t.gap,
+            ..Default::default()
+        };
+        Some((own, common))
+    }
+
+    fn unsupported(kind: &InterfaceKind) -> Option<&'static str> {
+        let InterfaceKind::Type14(t) = kind else {
+            return None;
+        };
+        if t.fric != 0.0 || t.fct_id_f != 0 {
+            Some("friction (Fric, fct_IDf)")
+        } else if t.visc != 0.0 || t.fct_id_d1 != 0 || t.fct_id_d2 != 0 {
+            Some("viscosity (Visc, fct_IDd1, fct_IDd2)")
+        } else {
+            None
+        }
+    }
+
+    /// The ellipsoid (surf_IDm), the rigid body whose /RBODY names it
+    /// (none: the ellipsoid stays where it is), and the load curve.
+    fn bind(&mut self, m: &model::Model, i: &model::Interface, kw: &str) -> Result<(), String> {
+        let e = m
+            .surfaces
+            .iter()
+            .find(|s| s.id == self.surf_idm)
+            .and_then(|s| s.ellipsoid.clone())
+            .ok_or_else(|| {
+                format!(
+                    "{kw}, field surf_IDm: /SURF/{} is not a /SURF/ELLIPS",
+                    self.surf_idm
+                )
+            })?;
+        if e.skew_id != 0 {
+            return Err(format!(
+                "{kw}, field surf_IDm: /SURF/ELLIPS/{} with a skew system (skew_ID) \
+                 is not supported by the engine yet",
+                self.surf_idm
+            ));
+        }
+        if self.stif <= 0.0 {
+            return Err(format!(
+                "{kw}, field Stif: 0: expected the stiffness (with fct_IDld, the scale of its force) > 0"
+            ));
+        }
+        self.body = m
+            .rigid_bodies
+            .iter()
+            .position(|b| b.card.surf_id == self.surf_idm);
+        if let Some(b) = self.body.map(|b| &m.rigid_bodies[b]) {
+            if let Some(n) = i
+                .secondary_nodes
+                .iter()
+                .find(|n| **n == b.main_node || b.secondary_nodes.binary_search(n).is_ok())
+            {
+                return Err(format!(
+                    "{kw}, field grnd_IDs: node {} is on /RBODY/{}, which carries the \
+                     ellipsoid: expected nodes off the ellipsoid's body",
+                    m.nodes.ids[*n as usize], b.card.id
+                ));
+            }
+            self.body_mass = b.mass;
+            self.offset = geo::sub(e.center, b.center);
+        }
+        self.ellipsoid = Some(e);
+        if self.fct_id_ld != 0 {
+            self.load = m.functions.iter().find(|f| f.id == self.fct_id_ld).cloned();
+            if self.load.is_none() {
+                return Err(format!(
+                    "{kw}, field fct_IDld: /FUNCT/{} is not defined",
+                    self.fct_id_ld
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    fn gap_rule(&self, common: &CardCommon, _sizes: &SurfaceSizes) -> GapRule {
+        super::type5::constant_gap(common.gap_card)
+    }
+
+    fn sorting_margin(&self) -> f64 {
+        super::type5::DEFAULT_BUMULT
+    }
+
+    /// Not used: the ellipsoid has no segments.
+    fn solid_segment_stiffness(&self, bulk: f64, area: f64, volume: f64) -> f64 {
+        crate::contact::stiffness::brick_type3(bulk, area, volume)
+    }
+
+    fn pair_stiffness(&self, _it: &Interface, _p: &Pass, _k: usize, _m: usize) -> f64 {
+        self.stif
+    }
+
+    fn reaction_body(&self) -> Option<usize> {
+        self.body
+    }
+
+    fn is_total_force(&self) -> bool {
+        self.load.is_some()
+    }
+
+    /// Stif·f(p_max), and the body's step √(2M/K).
+    fn total_force(&self, p_max: f64) -> (f64, f64) {
+        if p_max <= 0.0 {
+            return (0.0, f64::INFINITY);
+        }
+        let (f, tangent) = self.curve(p_max);
+        let k = tangent.max(f / p_max);
+        let dt = if self.body.is_some() && k > 0.0 {
+            (2.0 * self.body_mass / k).sqrt()
+        } else {
+            f64::INFINITY
+        };
+        (f.max(0.0), dt)
+    }
+
+    #[inline]
+    fn pair(&self, c: &PairContext, _ns: &mut NodeState, _st: &mut PairState) -> PairOutcome {
+        let (Some(pose), Some(e)) = (self.pose(c.bodies), self.ellipsoid.as_ref()) else {
+            return PairOutcome::Free;
+        };
+        let xi = mat_t_vec(&pose.rot, geo::sub(c.xs, pose.center));
+        // Screen: the node within the ellipsoid grown by the gap.
+        let a_min = e.axes.iter().copied().fold(f64::INFINITY, f64::min);
+        let reach = (1.0 + self.gap / a_min).powi(e.n as i32);
+        if shape_value(xi, e.axes, e.n) > reach {
+            return PairOutcome::Free;
+        }
+        let Some((d, n_local)) = distance(xi, e.axes, e.n) else {
+            return PairOutcome::Free;
+        };
+        let pen = self.gap - d;
+        if pen <= 0.0 {
+            return PairOutcome::Free;
+        }
+        let n = mat_vec(&pose.rot, n_local);
+        let point = geo::add(pose.center, mat_vec(&pose.rot, geo::sub(xi, geo::scale(n_local, d))));
+        let k = match (&self.load, c.scale) {
+            (None, _) => self.stif,
+            (Some(_), Some(fac)) => fac,
+            // Measuring (total force): the penetration vector.
+            (Some(_), None) => {
+                return PairOutcome::Force(PairForce {
+                    fs: geo::scale(n, pen),
+                    sec_shape: NODE_SHAPE,
+                    shape: [0.0; 4],
+                    dt_kin: f64::INFINITY,
+                    f_n: pen,
+                    pen,
+                    dir: n,
+                    point,
+                    ..Default::default()
+                })
+            }
+        };
+        let f_n = k * pen;
+        PairOutcome::Force(PairForce {
+            fs: geo::scale(n, f_n),
+            sec_shape: NODE_SHAPE,
+            shape: [0.0; 4],
+            kt: k,
+            dt_kin: f64::INFINITY,
+            f_n,
+            f_t: [0.0; 3],
+            pen,
+            dir: n,
+            point,
+        })
+    }
+
+    fn initial_penetration(
+        &self,
+        _it: &Interface,
+        _xs: V3,
+        _xm: &[V3; 4],
+        _tri: bool,
+        _g: f64,
+    ) -> (InitialPenetration, f64) {
+        (InitialPenetration::Keep, 0.0)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_distance_is_exact_on_a_sphere_and_on_the_axes_of_an_ellipsoid() {
+        let (d, n) = distance([3.0, 4.0, 0.0], [2.0; 3], 2).unwrap();
+        assert!((d - 3.0).abs() < 1e-14);
+        assert!((n[0] - 0.6).abs() < 1e-14 && (n[1] - 0.8).abs() < 1e-14);
+        let (d, n) = distance([0.0, 0.0, 1.5], [3.0, 2.0, 1.0], 2).unwrap();
+        assert!((d - 0.5).abs() < 1e-14, "{d}");
+        assert_eq!(n, [0.0, 0.0, 1.0]);
+        let (d, _) = distance([0.0, -1.0, 0.0], [3.0, 2.0, 1.0], 4).unwrap();
+        assert!((d + 1.0).abs() < 1e-14, "{d}");
+        assert!(distance([0.0; 3], [1.0; 3], 2).is_none());
+    }
+}
