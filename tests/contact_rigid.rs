@@ -49,6 +49,17 @@ fn rest_penetration() -> f64 {
     unreachable!("W is within the curve")
 }
 
+/// How far the energy balance, contact energy included, closes (%): the
+/// listing's final ENERGY BALANCE line.
+fn energy_closes(r: &Run, name: &str) -> f64 {
+    let out = std::fs::read_to_string(r.dir.join(format!("{name}.out"))).unwrap();
+    out.lines()
+        .find(|l| l.contains("ENERGY BALANCE"))
+        .and_then(|l| l.split("closes to ").nth(1))
+        .and_then(|t| t.trim().trim_end_matches('%').parse::<f64>().ok())
+        .expect("ENERGY BALANCE line")
+}
+
 #[test]
 fn a_type6_block_rests_where_the_load_curve_balances_its_load() {
     let r = run(
@@ -75,13 +86,7 @@ fn a_type6_block_rests_where_the_load_curve_balances_its_load() {
     }
     // 9 block nodes on the ground, 4 ground nodes under the block.
     assert_eq!(r.listing.last(1).pairs, 13);
-    let out = std::fs::read_to_string(r.dir.join("type6_rest.out")).unwrap();
-    let closes = out
-        .lines()
-        .find(|l| l.contains("ENERGY BALANCE"))
-        .and_then(|l| l.split("closes to ").nth(1))
-        .and_then(|t| t.trim().trim_end_matches('%').parse::<f64>().ok())
-        .expect("ENERGY BALANCE line");
+    let closes = energy_closes(&r, "type6_rest");
     assert!(closes.abs() < 1.0, "energy closes to {closes}%");
 }
 
@@ -89,22 +94,7 @@ fn a_type6_block_rests_where_the_load_curve_balances_its_load() {
 fn type6_is_identical_on_1_2_4_ranks_and_2_threads_with_a_cut_interface() {
     let d = deck("type6_rest");
     for np in [2, 4] {
-        let v = common::crashsim_json(&[
-            "partition",
-            d.to_str().unwrap(),
-            "--np",
-            &np.to_string(),
-            "--json",
-        ]);
-        let i = &v["interfaces"][0];
-        let ranks = |k: &str| -> Vec<u64> {
-            i[k].as_array()
-                .unwrap()
-                .iter()
-                .map(|r| r.as_u64().unwrap())
-                .collect()
-        };
-        let (sec, main) = (ranks("secondary_ranks"), ranks("main_ranks"));
+        let (sec, main) = interface_ranks(&d, np, 0);
         assert!(
             main.iter().any(|r| !sec.contains(r)) || sec.iter().any(|r| !main.contains(r)),
             "{np} ranks: the interface is not cut: {sec:?} {main:?}"
@@ -121,10 +111,14 @@ fn a_type6_run_restarted_on_another_rank_count_ends_identically() {
     assert_restart_2_to_1_ends_as(&d, "type6_restart_stop", 2000, &whole);
 }
 
-/// Runs a variant of type6_rest and returns (exit code, stderr).
-fn run_variant(tag: &str, edit: impl Fn(usize, &[&str]) -> Option<String>) -> (i32, String) {
+/// Runs a variant of decks/NAME and returns (exit code, stderr).
+fn run_variant(
+    name: &str,
+    tag: &str,
+    edit: impl Fn(usize, &[&str]) -> Option<String>,
+) -> (i32, String) {
     let dir = scratch(tag);
-    let d = common::deck_variant("type6_rest", &dir, edit);
+    let d = common::deck_variant(name, &dir, edit);
     let out = common::crashsim(&[
         "run",
         d.to_str().unwrap(),
@@ -140,7 +134,7 @@ fn run_variant(tag: &str, edit: impl Fn(usize, &[&str]) -> Option<String>) -> (i
 #[test]
 fn a_type6_surface_off_any_rigid_body_stops_the_run_by_name() {
     // The block's /RBODY (its 7 lines) left out: the block is a deformable shell.
-    let (code, err) = run_variant("type6_no_body", |i, lines| {
+    let (code, err) = run_variant("type6_rest", "type6_no_body", |i, lines| {
         (0..7)
             .any(|k| i >= k && lines[i - k] == "/RBODY/2")
             .then(|| "#".to_string())
@@ -155,7 +149,7 @@ fn a_type6_surface_off_any_rigid_body_stops_the_run_by_name() {
 #[test]
 fn type6_options_it_does_not_compute_stop_the_run_by_name() {
     // Iform = 1 with an unloading curve and a transition stiffness.
-    let (code, err) = run_variant("type6_iform", |i, lines| {
+    let (code, err) = run_variant("type6_rest", "type6_iform", |i, lines| {
         if i >= 1 && lines[i - 1].starts_with("# fct_IDld") {
             Some(common::set_cols(lines[i], 10, 20, 1))
         } else if i >= 1 && lines[i - 1].starts_with("# fct_IDul") {
@@ -233,13 +227,7 @@ fn a_type14_sphere_penetrates_as_its_load_curve_says_and_rebounds_with_its_energ
         r.listing.of(1).last().unwrap().pairs == 0,
         "the sphere left the plate"
     );
-    let out = std::fs::read_to_string(r.dir.join("type14_sphere.out")).unwrap();
-    let closes = out
-        .lines()
-        .find(|l| l.contains("ENERGY BALANCE"))
-        .and_then(|l| l.split("closes to ").nth(1))
-        .and_then(|t| t.trim().trim_end_matches('%').parse::<f64>().ok())
-        .expect("ENERGY BALANCE line");
+    let closes = energy_closes(&r, "type14_sphere");
     assert!(closes.abs() < 1.0, "energy closes to {closes}%");
 }
 
@@ -247,17 +235,7 @@ fn a_type14_sphere_penetrates_as_its_load_curve_says_and_rebounds_with_its_energ
 fn type14_is_identical_on_1_2_4_ranks_and_2_threads_with_the_nodes_on_several_ranks() {
     let d = deck("type14_sphere");
     for np in [2, 4] {
-        let v = common::crashsim_json(&[
-            "partition",
-            d.to_str().unwrap(),
-            "--np",
-            &np.to_string(),
-            "--json",
-        ]);
-        let sec = v["interfaces"][0]["secondary_ranks"]
-            .as_array()
-            .unwrap()
-            .len();
+        let sec = interface_ranks(&d, np, 0).0.len();
         assert!(sec >= 2, "{np} ranks: the plate's nodes on {sec} rank(s)");
     }
     let one = run(&d, &scratch("type14_ranks_1"), &RunArgs::default());
@@ -274,19 +252,11 @@ fn a_type14_run_restarted_on_another_rank_count_ends_identically() {
 
 #[test]
 fn type14_options_it_does_not_compute_stop_the_run_by_name() {
-    let dir = scratch("type14_fric");
-    let d = common::deck_variant("type14_sphere", &dir, |i, lines| {
+    let (code, err) = run_variant("type14_sphere", "type14_fric", |i, lines| {
         (i >= 1 && lines[i - 1].starts_with("#               Stif"))
             .then(|| format!("{:>20}{:>20}{:>20}{:>20}", "1", "0.3", "0", "0"))
     });
-    let out = common::crashsim(&[
-        "run",
-        d.to_str().unwrap(),
-        "--out",
-        dir.join("out").to_str().unwrap(),
-    ]);
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert_eq!(code, 2, "{err}");
     assert!(
         err.contains("/INTER/TYPE14/1") && err.contains("friction"),
         "{err}"

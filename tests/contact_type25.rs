@@ -158,22 +158,7 @@ fn the_mass_and_time_step_stiffness_pushes_with_stfac_mdt_m_over_dt_squared() {
 fn type25_is_identical_on_1_2_4_ranks_and_2_threads_with_a_cut_interface() {
     let d = deck("type25_block");
     for np in [2, 4] {
-        let v = common::crashsim_json(&[
-            "partition",
-            d.to_str().unwrap(),
-            "--np",
-            &np.to_string(),
-            "--json",
-        ]);
-        let i = &v["interfaces"][0];
-        let ranks = |k: &str| -> Vec<u64> {
-            i[k].as_array()
-                .unwrap()
-                .iter()
-                .map(|r| r.as_u64().unwrap())
-                .collect()
-        };
-        let (sec, main) = (ranks("secondary_ranks"), ranks("main_ranks"));
+        let (sec, main) = interface_ranks(&d, np, 0);
         assert!(
             sec.iter().any(|r| !main.contains(r)),
             "{np} ranks: the interface is not cut: {sec:?} {main:?}"

@@ -32,6 +32,12 @@ pub fn slope(f: &Function, x: f64) -> f64 {
     (f.y[i + 1] - f.y[i]) / (f.x[i + 1] - f.x[i])
 }
 
+/// Fscale·f(x/Ascale) and its slope in x, Fscale/Ascale·f′(x/Ascale).
+pub fn scaled_with_slope(f: &Function, x: f64, ascale_x: f64, fscale_y: f64) -> (f64, f64) {
+    let u = x / ascale_x;
+    (fscale_y * eval(f, u), fscale_y / ascale_x * slope(f, u))
+}
+
 /// Fscale · f(t / Ascale), the value of a load or imposed motion at time t.
 pub fn scaled(f: &Function, t: f64, ascale_x: f64, fscale_y: f64) -> f64 {
     fscale_y * eval(f, t / ascale_x)

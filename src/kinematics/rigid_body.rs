@@ -36,7 +36,8 @@ pub struct RigidBodyState {
 fn sym(j: &[f64; 6]) -> [[f64; 3]; 3] {
     [[j[0], j[3], j[5]], [j[3], j[1], j[4]], [j[5], j[4], j[2]]]
 }
-fn mat_vec(a: &[[f64; 3]; 3], v: V3) -> V3 {
+/// a·v.
+pub fn mat_vec(a: &[[f64; 3]; 3], v: V3) -> V3 {
     [0, 1, 2].map(|i| a[i][0] * v[0] + a[i][1] * v[1] + a[i][2] * v[2])
 }
 fn mat_mul(a: &[[f64; 3]; 3], b: &[[f64; 3]; 3]) -> [[f64; 3]; 3] {
@@ -48,7 +49,8 @@ fn mat_mul(a: &[[f64; 3]; 3], b: &[[f64; 3]; 3]) -> [[f64; 3]; 3] {
     }
     c
 }
-fn transpose(a: &[[f64; 3]; 3]) -> [[f64; 3]; 3] {
+/// aᵀ.
+pub fn transpose(a: &[[f64; 3]; 3]) -> [[f64; 3]; 3] {
     [0, 1, 2].map(|i| [a[0][i], a[1][i], a[2][i]])
 }
 pub use crate::vec3::cross;

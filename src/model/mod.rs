@@ -266,7 +266,20 @@ pub struct Model {
     pub unsupported: Vec<Warning>,
 }
 
+impl RigidBody {
+    /// Whether node `n` (global index) moves with the body: its main node
+    /// or one of its (ascending) secondary nodes.
+    pub fn holds(&self, n: u32) -> bool {
+        n == self.main_node || self.secondary_nodes.binary_search(&n).is_ok()
+    }
+}
+
 impl Model {
+    /// The /FUNCT of id `id`.
+    pub fn function(&self, id: Id) -> Option<&Function> {
+        self.functions.iter().find(|f| f.id == id)
+    }
+
     pub fn elements_of(&self, kind: ElementKind) -> &ElementSet {
         &self.elements[kind.index()]
     }

@@ -13,6 +13,28 @@ pub type V3 = [f64; 3];
 #[allow(unused_imports)]
 pub use crate::common::{deck, ok, read_csv, scratch};
 
+/// The ranks `partition --np NP --json` puts interface `i`'s sides on:
+/// (secondary ranks, main ranks).
+pub fn interface_ranks(deck: &Path, np: u32, i: usize) -> (Vec<u64>, Vec<u64>) {
+    let v = crate::common::crashsim_json(&[
+        "partition",
+        deck.to_str().unwrap(),
+        "--np",
+        &np.to_string(),
+        "--json",
+    ]);
+    let it = &v["interfaces"][i];
+    let ranks = |k: &str| -> Vec<u64> {
+        it[k]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|r| r.as_u64().unwrap())
+            .collect()
+    };
+    (ranks("secondary_ranks"), ranks("main_ranks"))
+}
+
 /// Runs `deck` again on 2 ranks (in scratch `tag`) and asserts that its final
 /// state is byte-identical to `one`'s.
 pub fn assert_same_final_state_on_2_ranks(deck: &Path, tag: &str, one: &Run) {

@@ -430,6 +430,19 @@ pub trait InterfaceType: Sync {
     ) -> (InitialPenetration, f64);
 }
 
+/// The /FUNCT a card's field names, for a type's `bind`; an error naming
+/// the card (`kw`) and the field when it is not defined.
+pub fn bound_curve(
+    m: &model::Model,
+    id: model::Id,
+    kw: &str,
+    field: &str,
+) -> Result<model::Function, String> {
+    m.function(id)
+        .cloned()
+        .ok_or_else(|| format!("{kw}, field {field}: /FUNCT/{id} is not defined"))
+}
+
 /// Work done on a type known at compile time ([`TypeOptions::visit`]).
 pub trait TypeVisitor {
     type Out;

@@ -29,7 +29,7 @@ use crate::contact::friction::FrictionLaw;
 use crate::contact::gap::{GapRule, InitialPenetration};
 use crate::contact::geometry::{self as geo, V3};
 use crate::kinematics::function;
-use crate::kinematics::rigid_body::RigidBodyState;
+use crate::kinematics::rigid_body::{mat_vec, transpose, RigidBodyState};
 use crate::model::{self, Ellipsoid, Function, InterfaceKind};
 use serde::{Deserialize, Serialize};
 
@@ -56,13 +56,6 @@ pub struct Type14 {
 struct Pose {
     center: V3,
     rot: [[f64; 3]; 3],
-}
-
-fn mat_vec(a: &[[f64; 3]; 3], v: V3) -> V3 {
-    [0, 1, 2].map(|i| a[i][0] * v[0] + a[i][1] * v[1] + a[i][2] * v[2])
-}
-fn mat_t_vec(a: &[[f64; 3]; 3], v: V3) -> V3 {
-    [0, 1, 2].map(|i| a[0][i] * v[0] + a[1][i] * v[1] + a[2][i] * v[2])
 }
 
 /// F(ξ) = Σ|ξ_k/a_k|^n.
@@ -116,10 +109,7 @@ impl Type14 {
     /// Stif·f(p) and its slope.
     fn curve(&self, p: f64) -> (f64, f64) {
         match &self.load {
-            Some(f) => (
-                self.stif * function::eval(f, p),
-                self.stif * function::slope(f, p),
-            ),
+            Some(f) => function::scaled_with_slope(f, p, 1.0, self.stif),
             None => (self.stif * p, self.stif),
         }
     }
@@ -209,7 +199,7 @@ impl InterfaceType for Type14 {
             if let Some(n) = i
                 .secondary_nodes
                 .iter()
-                .find(|n| **n == b.main_node || b.secondary_nodes.binary_search(n).is_ok())
+                .find(|&&n| b.holds(n))
             {
                 return Err(format!(
                     "{kw}, field grnd_IDs: node {} is on /RBODY/{}, which carries the \
@@ -222,13 +212,7 @@ impl InterfaceType for Type14 {
         }
         self.ellipsoid = Some(e);
         if self.fct_id_ld != 0 {
-            self.load = m.functions.iter().find(|f| f.id == self.fct_id_ld).cloned();
-            if self.load.is_none() {
-                return Err(format!(
-                    "{kw}, field fct_IDld: /FUNCT/{} is not defined",
-                    self.fct_id_ld
-                ));
-            }
+            self.load = Some(super::bound_curve(m, self.fct_id_ld, kw, "fct_IDld")?);
         }
         Ok(())
     }
@@ -278,7 +262,7 @@ impl InterfaceType for Type14 {
         let (Some(pose), Some(e)) = (self.pose(c.bodies), self.ellipsoid.as_ref()) else {
             return PairOutcome::Free;
         };
-        let xi = mat_t_vec(&pose.rot, geo::sub(c.xs, pose.center));
+        let xi = mat_vec(&transpose(&pose.rot), geo::sub(c.xs, pose.center));
         // Screen: the node within the ellipsoid grown by the gap.
         let a_min = e.axes.iter().copied().fold(f64::INFINITY, f64::min);
         let reach = (1.0 + self.gap / a_min).powi(e.n as i32);

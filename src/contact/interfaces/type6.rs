@@ -56,25 +56,19 @@ pub struct Type6 {
 impl Type6 {
     /// FscaleId·f(p/Ascalex) and its slope in p.
     fn curve(&self, p: f64) -> (f64, f64) {
-        let Some(f) = &self.load else {
-            return (0.0, 0.0);
-        };
-        let x = p / self.ascalex;
-        (
-            self.fscale_ld * function::eval(f, x),
-            self.fscale_ld / self.ascalex * function::slope(f, x),
-        )
+        match &self.load {
+            Some(f) => function::scaled_with_slope(f, p, self.ascalex, self.fscale_ld),
+            None => (0.0, 0.0),
+        }
     }
 }
 
 /// The rigid body that holds every node of `segs`, by index.
 fn body_of(m: &model::Model, segs: &[[u32; 4]]) -> Option<usize> {
     let nodes = nodes_of(segs);
-    m.rigid_bodies.iter().position(|b| {
-        nodes
-            .iter()
-            .all(|n| *n == b.main_node || b.secondary_nodes.binary_search(n).is_ok())
-    })
+    m.rigid_bodies
+        .iter()
+        .position(|b| nodes.iter().all(|&n| b.holds(n)))
 }
 
 impl InterfaceType for Type6 {
@@ -142,13 +136,7 @@ impl InterfaceType for Type6 {
     /// The load curve, and the two rigid bodies: each surface must lie on
     /// one rigid body (§8.7.1), and not the same one.
     fn bind(&mut self, m: &model::Model, i: &model::Interface, kw: &str) -> Result<(), String> {
-        self.load = m.functions.iter().find(|f| f.id == self.fct_id_ld).cloned();
-        if self.load.is_none() {
-            return Err(format!(
-                "{kw}, field fct_IDld: /FUNCT/{} is not defined",
-                self.fct_id_ld
-            ));
-        }
+        self.load = Some(super::bound_curve(m, self.fct_id_ld, kw, "fct_IDld")?);
         let mut bodies = [0usize; 2];
         for (b, (segs, field)) in bodies.iter_mut().zip([
             (&i.secondary_segments, "surf_ID1"),
