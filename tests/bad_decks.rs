@@ -1379,3 +1379,49 @@ fn node_group_of_an_unknown_surface() {
         },
     );
 }
+
+#[test]
+fn failure_card_names_unknown_material_and_bad_flags() {
+    // /FAIL/JOHNSON on a material the deck does not define: error at the card.
+    let c = Case::new("fail-jc-mat");
+    let mut d = base_deck();
+    let n = before_end(
+        &mut d,
+        &[
+            s("/FAIL/JOHNSON/9"),
+            r20("0.1") + &r20("0.1") + &r20("-0.1"),
+            r20("0") + &i10(1) + &i10(1),
+        ],
+    );
+    assert_error(
+        &c.check(&d),
+        Expect {
+            file: DECK,
+            line: n,
+            keyword: "/FAIL/JOHNSON",
+            field: "mat_ID",
+            phrases: &["material 9 is not defined"],
+        },
+    );
+    // Ifail_so outside 0-4: error at its line, naming the field.
+    let c = Case::new("fail-jc-ifail");
+    let mut d = base_deck();
+    let n = before_end(
+        &mut d,
+        &[
+            s("/FAIL/JOHNSON/1"),
+            r20("0.1") + &r20("0.1") + &r20("-0.1"),
+            r20("0") + &i10(1) + &i10(7),
+        ],
+    );
+    assert_error(
+        &c.check(&d),
+        Expect {
+            file: DECK,
+            line: n + 2,
+            keyword: "/FAIL/JOHNSON/1",
+            field: "Ifail_so",
+            phrases: &["7: expected one of"],
+        },
+    );
+}

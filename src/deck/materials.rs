@@ -153,6 +153,7 @@ pub(super) fn parse_material(block: &Block, deck: &mut Deck) -> InputResult<bool
         e,
         nu,
         law,
+        failures: vec![],
         loc: block.loc.clone(),
     });
     Ok(true)

@@ -14,6 +14,7 @@ pub mod source;
 mod conditions;
 mod controls;
 pub(crate) mod engine;
+mod failures;
 mod id_index;
 mod interfaces;
 pub mod keyword_policy;
@@ -57,6 +58,8 @@ pub struct Deck {
     pub elements: Elements,
     pub parts: Vec<PartCard>,
     pub materials: Vec<MaterialSpec>,
+    /// Failure cards (/FAIL/...), attached to their materials by the model builder.
+    pub failures: Vec<failures::FailureCard>,
     pub properties: Vec<PropertySpec>,
     pub def_shell: Option<DefShell>,
     pub def_solid: Option<DefSolid>,
@@ -244,6 +247,7 @@ pub(crate) fn read_starter_block(block: &Block, deck: &mut Deck) -> InputResult<
         }
         "PART" => parts::parse_part(block, deck).map(|_| true)?,
         "MAT" => materials::parse_material(block, deck)?,
+        "FAIL" => failures::parse_failure(block, deck)?,
         "PROP" => parts::parse_property(block, deck)?,
         "DEF_SHELL" | "DEF_SOLID" => parts::parse_defaults(block, deck).map(|_| true)?,
         "FUNCT" => parts::parse_function(block, deck).map(|_| true)?,

@@ -145,7 +145,7 @@ fn build(deck: &Deck) -> Result<Model, InputError> {
         nodes,
         elements,
         parts,
-        materials: deck.materials.clone(),
+        materials: super::failures::materials_with_failures(deck)?,
         properties,
         functions: deck.functions.clone(),
         node_groups: node_groups.clone(),

@@ -52,7 +52,7 @@
 //!
 //! No heap allocation: everything is fixed-size on the stack.
 
-use crate::material::Material;
+use crate::material::{Failure, Material};
 use crate::model::ResolvedSolid;
 use serde::{Deserialize, Serialize};
 
@@ -71,6 +71,10 @@ pub struct SolidSection {
     pub material: Material,
     /// Dilatational wave speed √((λ+2μ)/ρ₀).
     pub c: f64,
+    /// The material's failure model (/FAIL), if any.
+    pub failure: Option<Failure>,
+    /// Icpre as the formulation uses it (HA8: 0, 1 or 2; 0 elsewhere).
+    pub icpre: i64,
 }
 
 fn check_ismstr(r: &ResolvedSolid) -> Result<i64, String> {
@@ -96,7 +100,7 @@ impl SolidSection {
             1 | 2 => {}
             v => {
                 return Err(format!(
-                    "Isolid = {v} is not supported: the engine computes bricks with Isolid = 1 (Belytschko viscous hourglass) or 2 (Hallquist viscous hourglass)"
+                    "Isolid = {v} is not supported: the engine computes bricks with Isolid = 1 (Belytschko viscous hourglass), 2 (Hallquist viscous hourglass) or 14 (HA8, fully integrated)"
                 ))
             }
         }
@@ -116,6 +120,8 @@ impl SolidSection {
             h: r.h,
             material: m.clone(),
             c: dilatational_speed(m),
+            failure: None,
+            icpre: 0,
         })
     }
 
@@ -138,6 +144,8 @@ impl SolidSection {
             h: 0.0,
             material: m.clone(),
             c: dilatational_speed(m),
+            failure: None,
+            icpre: 0,
         })
     }
 }
@@ -149,6 +157,8 @@ pub struct Hex8State {
     pub sig: [f64; 6],
     /// Equivalent plastic strain.
     pub eps_p: f64,
+    /// Damage of the failure model (/FAIL; 1 = failed).
+    pub dmg: f64,
     /// Last hourglass generalized forces Q_α (4 modes × 3 components), for output.
     pub hg: [[f64; 3]; 4],
     /// Cumulative internal energy (stress and bulk viscosity work, without hourglass).
@@ -355,6 +365,7 @@ pub(crate) fn solid_point_update(
     dt: f64,
     sig: &mut [f64; 6],
     eps_p: &mut f64,
+    dmg: &mut f64,
     eps_dot: &mut f64,
     eint: f64,
 ) -> SolidPoint {
@@ -399,8 +410,13 @@ pub(crate) fn solid_point_update(
             2.0 * d[4] * dt,
             2.0 * d[5] * dt,
         ];
+        let ep0 = *eps_p;
         let wp = mat.solid_update_at(sig, eps_p, deps, *eps_dot, temp);
         out.failed = mat.has_failed(*eps_p);
+        if let (Some(f), false) = (&sec.failure, out.failed) {
+            let tstar = mat.homologous_temperature(temp);
+            out.failed = f.solid(sig, dmg, *eps_p - ep0, *eps_dot, tstar);
+        }
         if out.failed {
             *sig = [0.0; 6];
         }
@@ -432,6 +448,30 @@ pub(crate) fn solid_point_update(
 pub(crate) fn solid_time_step(sec: &SolidSection, lc: f64, compress: f64) -> f64 {
     let q = sec.qb * sec.c + lc * sec.qa * sec.qa * compress;
     lc / (q + (q * q + sec.c * sec.c).sqrt())
+}
+
+/// R σ Rᵀ of a Voigt stress [σxx σyy σzz σxy σyz σzx].
+pub(crate) fn rotate_voigt(r: &[[f64; 3]; 3], s: &[f64; 6]) -> [f64; 6] {
+    let m = [[s[0], s[3], s[5]], [s[3], s[1], s[4]], [s[5], s[4], s[2]]];
+    let mut o = [[0.0; 3]; 3];
+    for i in 0..3 {
+        for j in 0..3 {
+            for k in 0..3 {
+                for l in 0..3 {
+                    o[i][j] += r[i][k] * m[k][l] * r[j][l];
+                }
+            }
+        }
+    }
+    [o[0][0], o[1][1], o[2][2], o[0][1], o[1][2], o[2][0]]
+}
+
+/// Von Mises stress of a Voigt stress.
+pub(crate) fn von_mises(s: &[f64; 6]) -> f64 {
+    let d = (s[0] - s[1]).powi(2) + (s[1] - s[2]).powi(2) + (s[2] - s[0]).powi(2);
+    (0.5 * d + 3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]))
+        .max(0.0)
+        .sqrt()
 }
 
 /// Internal force of a constant stress on the gradient vector b: σ b.
@@ -502,6 +542,7 @@ pub fn hex8_step(
         dt,
         &mut st.sig,
         &mut st.eps_p,
+        &mut st.dmg,
         &mut st.eps_dot,
         st.eint,
     );
@@ -590,6 +631,8 @@ pub(crate) mod tests {
             ismstr: 4,
             iframe: 1,
             itetra4: 1000,
+            icpre: 0,
+            inpts: 0,
             qa,
             qb,
             h,
@@ -682,18 +725,7 @@ pub(crate) mod tests {
 
     /// R σ Rᵀ of a Voigt stress.
     pub(crate) fn rotated(r: &[[f64; 3]; 3], s: &[f64; 6]) -> [f64; 6] {
-        let m = [[s[0], s[3], s[5]], [s[3], s[1], s[4]], [s[5], s[4], s[2]]];
-        let mut o = [[0.0; 3]; 3];
-        for i in 0..3 {
-            for j in 0..3 {
-                for k in 0..3 {
-                    for l in 0..3 {
-                        o[i][j] += r[i][k] * m[k][l] * r[j][l];
-                    }
-                }
-            }
-        }
-        [o[0][0], o[1][1], o[2][2], o[0][1], o[1][2], o[2][0]]
+        rotate_voigt(r, s)
     }
 
     #[test]
@@ -1235,8 +1267,8 @@ pub(crate) mod tests {
     #[test]
     fn sections_refuse_what_is_not_computed() {
         let m = mat();
-        let e = SolidSection::new(&resolved(14, 1.1, 0.05, 0.1), &m).unwrap_err();
-        assert!(e.contains("Isolid = 14"), "{e}");
+        let e = SolidSection::new(&resolved(17, 1.1, 0.05, 0.1), &m).unwrap_err();
+        assert!(e.contains("Isolid = 17"), "{e}");
         let e = SolidSection::new(&resolved(24, 1.1, 0.05, 0.1), &m).unwrap_err();
         assert!(e.contains("Isolid = 24"), "{e}");
         let mut r = resolved(1, 1.1, 0.05, 0.1);
@@ -1257,5 +1289,83 @@ pub(crate) mod tests {
         r.itetra4 = 1000;
         r.isolid = 14;
         assert_eq!(SolidSection::for_tetra(&r, &m).unwrap().isolid, 0);
+    }
+
+    /// /FAIL/JOHNSON on a brick in pure shear, D3 = 0: ε_f = D1 + D2 whatever
+    /// the small pressure of the (not exactly isochoric) prescribed motion;
+    /// the damage is ε_p/ε_f all along and the element is deleted in the
+    /// step where its plastic strain passes ε_f, not before.
+    #[test]
+    fn johnson_cook_failure_deletes_at_the_failure_strain() {
+        let card = crate::model::MaterialSpec {
+            id: 1,
+            unit_id: 0,
+            title: String::new(),
+            rho: 2.7e-6,
+            rho_ref: 0.0,
+            e: 70.0,
+            nu: 0.3,
+            law: crate::model::MaterialLaw::JohnsonCook(crate::model::JohnsonCook::hardening(
+                0.15, 0.2, 0.6,
+            )),
+            failures: vec![],
+            loc: Default::default(),
+        };
+        let m = Material::from_card(&card);
+        let mut s = SolidSection::new(&resolved(1, 0.0, 0.0, 0.0), &m).unwrap();
+        let jc = crate::model::JohnsonFailure {
+            d: [0.1, 0.1, 0.0, 0.0, 0.0],
+            eps_dot_0: 1.0,
+            ifail_sh: 1,
+            ifail_so: 1,
+            epsf_min: 0.0,
+            ixfem: 0,
+        };
+        s.failure = Some(Failure::Johnson(
+            crate::material::FailJohnson::new(&jc).unwrap(),
+        ));
+        let mut x = unit_cube();
+        let mut st = hex8_init(&s, &x);
+        let (rate, dt) = (1.0, 1e-4);
+        let mut v = [[0.0; 3]; 8];
+        for a in 0..8 {
+            v[a] = [
+                0.5 * rate * (x[a][1] - 0.5),
+                0.5 * rate * (x[a][0] - 0.5),
+                0.0,
+            ];
+        }
+        let mut last = 0.0;
+        for _ in 0..100_000 {
+            for a in 0..8 {
+                for k in 0..3 {
+                    x[a][k] += dt * v[a][k];
+                }
+                v[a] = [
+                    0.5 * rate * (x[a][1] - 0.5),
+                    0.5 * rate * (x[a][0] - 0.5),
+                    0.0,
+                ];
+            }
+            let before = st.eps_p;
+            let o = hex8_step(&s, &x, &v, dt, &mut st);
+            if o.failed {
+                assert!(
+                    before < 0.2 && st.eps_p >= 0.2 - 1e-12,
+                    "{before} {}",
+                    st.eps_p
+                );
+                assert_eq!(st.dmg, 1.0);
+                return;
+            }
+            assert!(
+                (st.dmg - st.eps_p / 0.2).abs() <= 1e-12,
+                "{} {}",
+                st.dmg,
+                st.eps_p
+            );
+            last = st.eps_p;
+        }
+        panic!("not deleted; eps_p = {last}");
     }
 }

@@ -15,6 +15,7 @@ fn card(law: MaterialLaw) -> MaterialSpec {
         e: 205.0,
         nu: 0.300000012,
         law,
+        failures: vec![],
         loc: Loc::default(),
     }
 }

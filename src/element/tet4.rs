@@ -30,6 +30,8 @@ pub struct Tet4State {
     pub sig: [f64; 6],
     /// Equivalent plastic strain.
     pub eps_p: f64,
+    /// Damage of the failure model (/FAIL; 1 = failed).
+    pub dmg: f64,
     /// Cumulative internal energy (stress and bulk viscosity work).
     pub eint: f64,
     /// Cumulative plastic work.
@@ -151,6 +153,7 @@ pub fn tet4_step(
         dt,
         &mut st.sig,
         &mut st.eps_p,
+        &mut st.dmg,
         &mut st.eps_dot,
         st.eint,
     );

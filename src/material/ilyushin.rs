@@ -185,6 +185,7 @@ mod tests {
             e: 205.0,
             nu: 0.3,
             law: MaterialLaw::JohnsonCook(JohnsonCook::hardening(0.25, b, 0.52)),
+            failures: vec![],
             loc: Loc::default(),
         })
     }

@@ -101,6 +101,13 @@ pub trait Law: Sized {
         0.0
     }
 
+    /// Homologous temperature T* = (T − T_r)/(T_melt − T_r) (0 for a law
+    /// without temperature), for the failure models' temperature terms.
+    #[inline]
+    fn homologous_temperature(&self, _temp: f64) -> f64 {
+        0.0
+    }
+
     /// Temperature from the internal energy per unit volume.
     #[inline]
     fn temperature(&self, _eint_per_volume: f64) -> f64 {

@@ -41,6 +41,7 @@ mod tests {
             e: 210.0,
             nu: 0.3,
             law: MaterialLaw::Elastic,
+            failures: vec![],
             loc: Loc::default(),
         }
     }

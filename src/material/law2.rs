@@ -108,6 +108,16 @@ impl Law for Law2 {
         self.t_r
     }
 
+    /// T* = (T − T_r)/(T_melt − T_r) when the law is thermal (ρC_p given).
+    #[inline]
+    fn homologous_temperature(&self, temp: f64) -> f64 {
+        if self.is_thermal() && self.t_melt < NO_LIMIT {
+            (temp - self.t_r) / (self.t_melt - self.t_r)
+        } else {
+            0.0
+        }
+    }
+
     /// Adiabatic heating, T = T_r + e/ρC_p, as Radioss does for LAW2 shells;
     /// T_r when ρC_p is not given.
     #[inline]
@@ -164,6 +174,7 @@ mod tests {
             e: 210.0,
             nu: 0.3,
             law: MaterialLaw::JohnsonCook(JohnsonCook::hardening(a, b, n)),
+            failures: vec![],
             loc: Loc::default(),
         }
     }

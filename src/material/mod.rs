@@ -7,6 +7,8 @@
 //! or, for shell sections computed with N = 0, the global (resultant,
 //! Ilyushin) update of `ilyushin.rs`.
 
+mod fail_johnson;
+mod failure;
 mod hardening;
 mod ilyushin;
 mod johnson_cook;
@@ -17,6 +19,8 @@ mod point;
 mod registry;
 mod return_map;
 
+pub use fail_johnson::FailJohnson;
+pub use failure::Failure;
 pub use hardening::Hardening;
 pub use ilyushin::ilyushin_equivalent;
 pub use law::{ElasticConstants, Law};

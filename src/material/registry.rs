@@ -182,6 +182,12 @@ impl Material {
         each_law!(self, l => l.temperature(eint_per_volume))
     }
 
+    /// Homologous temperature T* at temperature `temp` (see [`Law::homologous_temperature`]).
+    #[inline]
+    pub fn homologous_temperature(&self, temp: f64) -> f64 {
+        each_law!(self, l => l.homologous_temperature(temp))
+    }
+
     /// Reference temperature T_r (0 for elastic materials).
     #[inline]
     pub fn reference_temperature(&self) -> f64 {
@@ -293,6 +299,7 @@ mod tests {
             e: 205.0,
             nu: 0.300000012,
             law: MaterialLaw::JohnsonCook(law.unwrap_or(jc)),
+            failures: vec![],
             loc: Loc::default(),
         }
     }

@@ -18,7 +18,43 @@ pub struct MaterialSpec {
     pub e: f64,
     pub nu: f64,
     pub law: MaterialLaw,
+    /// Failure models attached by /FAIL/.../mat_ID (in deck order).
+    #[serde(default)]
+    pub failures: Vec<FailureSpec>,
     pub loc: Loc,
+}
+
+/// A failure model attached to a material (/FAIL/<model>/mat_ID), where its card is.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct FailureSpec {
+    pub model: FailureModel,
+    pub loc: Loc,
+}
+
+/// The failure model and its parameters after default resolution.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub enum FailureModel {
+    /// /FAIL/JOHNSON: Johnson-Cook damage D = Σ Δε_p / ε_f(σ*, ε̇, T*).
+    Johnson(JohnsonFailure),
+}
+
+/// /FAIL/JOHNSON parameters (reference guide /FAIL/JOHNSON; defaults as the
+/// Radioss starter resolves them).
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct JohnsonFailure {
+    /// D1..D5 of ε_f = [D1 + D2·exp(D3·σ*)]·[1 + D4·ln(ε̇/ε̇₀)]·[1 + D5·T*].
+    pub d: [f64; 5],
+    /// Reference strain rate ε̇₀ (blank → 1e-20, as the starter).
+    pub eps_dot_0: f64,
+    /// Shells: 1 = deleted when one through-thickness point fails, 2 = when all do (blank → 1).
+    pub ifail_sh: i64,
+    /// Solids: 1 = deleted when one point fails; 2 = deviatoric stress set to
+    /// zero; 3 = only compressive pressure kept; 4 = stress set to zero, element kept (blank → 1).
+    pub ifail_so: i64,
+    /// Lower bound of ε_f (2024 format; blank → 0).
+    pub epsf_min: f64,
+    /// XFEM crack flag (0 none).
+    pub ixfem: i64,
 }
 
 /// The constitutive law and its parameters.

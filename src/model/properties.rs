@@ -82,6 +82,12 @@ pub struct ResolvedSolid {
     pub ismstr: i64,
     pub iframe: i64,
     pub itetra4: i64,
+    /// Icpre as given (0 blank, −1 automatic); the formulation resolves it.
+    #[serde(default)]
+    pub icpre: i64,
+    /// Inpts as given (0 blank).
+    #[serde(default)]
+    pub inpts: i64,
     pub qa: f64,
     pub qb: f64,
     pub h: f64,
@@ -96,6 +102,8 @@ pub fn resolve_solid(p: &SolidProperty, d: Option<&DefSolid>) -> ResolvedSolid {
         ismstr: pick(p.ismstr, d.map(|d| d.ismstr), 4),
         iframe: pick(p.iframe, d.map(|d| d.iframe), 1),
         itetra4: pick(p.itetra4, None, 1000),
+        icpre: p.icpre,
+        inpts: p.inpts,
         qa: p.qa,
         qb: p.qb,
         h: p.h,

@@ -18,10 +18,7 @@ pub(super) fn von_mises_shell(s: &[f64; 5]) -> f64 {
 
 /// Von Mises stress of a 3-D tensor [σxx σyy σzz σxy σyz σzx].
 pub(super) fn von_mises_3d(s: &[f64; 6]) -> f64 {
-    let d = (s[0] - s[1]).powi(2) + (s[1] - s[2]).powi(2) + (s[2] - s[0]).powi(2);
-    (0.5 * d + 3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]))
-        .max(0.0)
-        .sqrt()
+    crate::element::hex8::von_mises(s)
 }
 
 /// Decodes one element's restart record, naming what did not fit.
@@ -92,6 +89,14 @@ impl HourglassEnergy for Hex8State {
     }
 }
 impl HourglassEnergy for Tet4State {
+    fn hourglass_energy(&self) -> f64 {
+        0.0
+    }
+    fn plastic_work(&self) -> f64 {
+        self.eplas
+    }
+}
+impl HourglassEnergy for crate::element::ha8::Ha8State {
     fn hourglass_energy(&self) -> f64 {
         0.0
     }

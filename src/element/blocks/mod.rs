@@ -11,6 +11,7 @@
 //! and one line in the table of [`registry`].
 
 mod common;
+mod ha8;
 mod hex8;
 pub mod registry;
 mod sections;

@@ -12,7 +12,7 @@
 
 use super::sections::{part_material, shell_property, solid_property};
 use super::sections::{SHELL_WITHOUT_MATERIAL, SOLID_WITHOUT_MATERIAL};
-use super::{hex8, shell3, shell4_bt, spring, tet4};
+use super::{ha8, hex8, shell3, shell4_bt, spring, tet4};
 use super::{Block, BlockInput, BuildBlock};
 use crate::domain::LocalElements;
 use crate::model::{ElementKind, Function, MaterialSpec, Part, Property, PropertyKind};
@@ -53,6 +53,13 @@ pub const FORMULATIONS: &[Formulation] = &[
         build: hex8::build,
     },
     Formulation {
+        kind: ElementKind::Brick8,
+        flag: "Isolid",
+        numbers: &[14],
+        name: "HA8 fully integrated brick (2×2×2, assumed strain)",
+        build: ha8::build,
+    },
+    Formulation {
         kind: ElementKind::Tetra4,
         flag: "Itetra4",
         numbers: &[0, 1000],
@@ -79,7 +86,7 @@ pub fn refusal(kind: ElementKind, n: i64) -> String {
         (ElementKind::Shell3, 31) => "Ish3n = 31 (DKT_S3) is not supported: the engine computes the C0 triangle (Ish3n = 1, 2)".into(),
         (ElementKind::Shell3, v) => format!("Ish3n = {v}: expected 1 or 2 (C0 triangle)"),
         (ElementKind::Brick8, v) => format!(
-            "Isolid = {v} is not supported: the engine computes bricks with Isolid = 1 (Belytschko viscous hourglass) or 2 (Hallquist viscous hourglass)"
+            "Isolid = {v} is not supported: the engine computes bricks with Isolid = 1 (Belytschko viscous hourglass), 2 (Hallquist viscous hourglass) or 14 (HA8, fully integrated)"
         ),
         (ElementKind::Tetra4, v) => format!(
             "Itetra4 = {v}: only the standard 4-node tetrahedron (Itetra4 = 0 or 1000) is supported"
@@ -278,7 +285,7 @@ mod tests {
             (ElementKind::Shell4, 24, "Ishell = 24 (QEPH) is not supported yet: the engine computes Ishell = 1, 2, 3, 4 (Belytschko-Tsay)"),
             (ElementKind::Shell4, 7, "Ishell = 7: expected 1, 2, 3 or 4 (Belytschko-Tsay)"),
             (ElementKind::Shell3, 30, "Ish3n = 30 (DKT18) is not supported: the engine computes the C0 triangle (Ish3n = 1, 2)"),
-            (ElementKind::Brick8, 14, "Isolid = 14 is not supported: the engine computes bricks with Isolid = 1 (Belytschko viscous hourglass) or 2 (Hallquist viscous hourglass)"),
+            (ElementKind::Brick8, 17, "Isolid = 17 is not supported: the engine computes bricks with Isolid = 1 (Belytschko viscous hourglass), 2 (Hallquist viscous hourglass) or 14 (HA8, fully integrated)"),
             (ElementKind::Tetra4, 3, "Itetra4 = 3: only the standard 4-node tetrahedron (Itetra4 = 0 or 1000) is supported"),
         ];
         for (kind, n, message) in refused {

@@ -7,7 +7,7 @@
 use crate::domain::LocalElements;
 use crate::element::hex8::SolidSection;
 use crate::element::shell4::ShellSection;
-use crate::material::Material;
+use crate::material::{Failure, Material};
 use crate::model::{MaterialSpec, Part, Property, ResolvedShell, ResolvedSolid};
 use std::collections::HashMap;
 
@@ -90,8 +90,14 @@ pub(super) fn shell_sections(
     per_part(le, |p| {
         let part = &parts[p as usize];
         let prop = shell_property(part, props)?;
-        let mat = Material::from_card(part_material(part, mats, SHELL_WITHOUT_MATERIAL)?);
-        new_section(prop, &mat)
+        let card = part_material(part, mats, SHELL_WITHOUT_MATERIAL)?;
+        if let Some(f) = card.failures.first() {
+            return Err(format!(
+                "{}: a failure model on shell elements is not computed yet (only on solids)",
+                f.loc
+            ));
+        }
+        new_section(prop, &Material::from_card(card))
     })
 }
 
@@ -107,7 +113,9 @@ pub(super) fn solid_sections(
     per_part(le, |p| {
         let part = &parts[p as usize];
         let prop = solid_property(part, props)?;
-        let mat = Material::from_card(part_material(part, mats, SOLID_WITHOUT_MATERIAL)?);
-        new_section(prop, &mat)
+        let card = part_material(part, mats, SOLID_WITHOUT_MATERIAL)?;
+        let mut section = new_section(prop, &Material::from_card(card))?;
+        section.failure = Failure::of_material(&card.failures)?;
+        Ok(section)
     })
 }
