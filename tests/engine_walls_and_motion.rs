@@ -326,3 +326,38 @@ fn boundary_conditions_and_imposed_velocity_on_a_rigid_bodys_main_node_hold_the_
         );
     }
 }
+
+/// The same rigid plate with an /IMPDISP along z on its main node only
+/// (u = 0.3 t through a ramp): it moves the body, as in Radioss — every
+/// node ends at z = 0.3 t_end with vz = 0.3 (before, the displacement was
+/// imposed on the main node alone and the body never followed it).
+#[test]
+fn imposed_displacement_on_a_rigid_bodys_main_node_moves_the_body() {
+    let rows = rigid_plate_with(
+        "rbody-impdisp",
+        &[
+            "/FUNCT/4",
+            "ramp",
+            "                   0                   0",
+            "                  10                  10",
+            "/IMPDISP/12",
+            "main node: z displacement",
+            "         4         Z         0         0         8         0         0",
+            "                   1                 0.3                   0                   0",
+        ],
+    );
+    for c in rows {
+        assert!(
+            (c[6] - 0.3).abs() < 1e-9,
+            "node {}: vz {} (0.3)",
+            c[0],
+            c[6]
+        );
+        assert!(
+            (c[3] - 0.15).abs() < 0.3 * 2e-3, // the run ends within a step (~1.7e-3) past 0.5
+            "node {}: z {} (0.3 t_end = 0.15)",
+            c[0],
+            c[3]
+        );
+    }
+}

@@ -26,8 +26,12 @@
 //!   x^{n+½} = x^{n+1} − ½Δt v, forces f_I = Σ_p V_p B̄_p,Iᵀ (σ_p − q I) on
 //!   x^{n+1}, V_p = det J(ξ_p) (Gauss weights 1).
 //! * **Material** per point: `Material::solid_update_at`, the element's
-//!   filtered equivalent rate and adiabatic temperature; /FAIL per point
-//!   (one failed point deletes the element under Ifail_so = 1).
+//!   filtered equivalent rate and adiabatic temperature; /FAIL per point.
+//!   One failed point (Ifail_so = 1, or EPS_p_max) releases the element
+//!   progressively, as the reference engine does with its OFF flag: its
+//!   forces (and their work) are scaled by 0.8, 0.64, … and it is deleted
+//!   when the factor falls below 0.1 (11 cycles); a sudden release would
+//!   throw the nodes it held.
 //! * **Bulk viscosity** q from the centre dilatation, as `hex8`.
 //! * **Time step** (note eq. 17): Δx = min_p 8 det J(ξ_p) / A_med with A_med
 //!   the largest median cross-section |j_η × j_ζ|/16 (…); 1 on a unit cube.
@@ -324,6 +328,11 @@ pub struct Ha8State {
     pub vol: f64,
     /// Filtered equivalent strain rate of the element.
     pub eps_dot: f64,
+    /// Release after failure, as the reference engine does it (its OFF
+    /// flag): 0 while no point has failed; then the factor of the element's
+    /// forces, 0.8 at the failure and ×0.8 per cycle, the element deleted
+    /// below 0.1 (about 11 cycles).
+    pub off: f64,
     pub deleted: bool,
 }
 
@@ -475,14 +484,29 @@ pub fn ha8_step(
         compress = c;
         out.d_eint = work;
         out.d_eplas = wplas;
-        if failed {
-            st.eint += work;
-            st.eplas += wplas;
-            st.deleted = true;
-            out.failed = true;
-            return out;
+        if failed && st.off == 0.0 {
+            st.off = 1.0;
         }
     }
+    // Progressive release of a failed element (reference engine: OFF
+    // starts at 0.8 and decays by 0.8 per cycle; forces and the work they
+    // do are scaled by it).
+    let factor = if st.off > 0.0 {
+        if dt > 0.0 {
+            st.off *= 0.8;
+        }
+        if st.off < 0.1 {
+            st.eint += out.d_eint * st.off;
+            st.eplas += out.d_eplas;
+            st.deleted = true;
+            out.failed = true;
+            out.f = [[0.0; 3]; 8];
+            return out;
+        }
+        st.off
+    } else {
+        1.0
+    };
     // Bulk viscosity (MQVISCB) from the centre dilatation.
     let mut q = 0.0;
     if compress > 0.0 {
@@ -491,6 +515,7 @@ pub fn ha8_step(
         q = rho * al * compress * (sec.qa * sec.qa * al * compress + sec.qb * sec.c);
         out.d_eint += q * compress * vol * dt;
     }
+    out.d_eint *= factor;
     st.eint += out.d_eint;
     st.eplas += out.d_eplas;
     st.vol = vol;
@@ -512,7 +537,7 @@ pub fn ha8_step(
     }
     let rt = crate::kinematics::rigid_body::transpose(&r1);
     for a in 0..8 {
-        out.f[a] = mat_vec(&rt, fl[a]);
+        out.f[a] = mat_vec(&rt, fl[a].map(|f| f * factor));
     }
     st.sig = super::hex8::rotate_voigt(&rt, &mean);
     st.eps_p = st.eps_p_p.iter().sum::<f64>() / 8.0;

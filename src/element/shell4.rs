@@ -137,6 +137,8 @@ pub struct ShellSection {
     pub ashear: f64,
     pub ithick: i64,
     pub iplas: i64,
+    /// Numerical damping dn (QEPH hourglass dampers and time step).
+    pub dn: f64,
     pub material: Material,
     /// Point positions ζ_k ∈ [−½, ½] (fraction of the thickness, k = 0 at the bottom).
     pub zeta: [f64; MAX_IP],
@@ -230,10 +232,9 @@ impl ShellSection {
     /// The section with N = 0 computed by `n0` (any other N as given).
     pub fn build(r: &ResolvedShell, m: &Material, n0: N0Rule) -> Result<ShellSection, String> {
         match r.ishell {
-            1..=4 => {}
-            12 => return Err("Ishell = 12 (QBAT) is not supported yet: the engine computes Ishell = 1, 2, 3, 4 (Belytschko-Tsay)".into()),
-            24 => return Err("Ishell = 24 (QEPH) is not supported yet: the engine computes Ishell = 1, 2, 3, 4 (Belytschko-Tsay)".into()),
-            v => return Err(format!("Ishell = {v}: expected 1, 2, 3 or 4 (Belytschko-Tsay)")),
+            1..=4 | 24 => {}
+            12 => return Err("Ishell = 12 (QBAT) is not supported yet: the engine computes Ishell = 1, 2, 3, 4 (Belytschko-Tsay) and 24 (QEPH)".into()),
+            v => return Err(format!("Ishell = {v}: expected 1, 2, 3, 4 (Belytschko-Tsay) or 24 (QEPH)")),
         }
         let ismstr = match r.ismstr {
             1 | 2 | 4 => r.ismstr,
@@ -272,6 +273,7 @@ impl ShellSection {
             ashear: if n_ip == 1 { 0.0 } else { r.ashear },
             ithick: r.ithick,
             iplas: r.iplas,
+            dn: r.dn,
             material: m.clone(),
             zeta,
             w_mem,
@@ -334,6 +336,8 @@ pub struct Shell4State {
     /// Ismstr = 1 (small strain): the initial geometry, whose derivatives,
     /// area and time step the element keeps (its frame still turns).
     pub geo0: Option<Geom>,
+    /// QEPH (Ishell 24): the twelve hourglass stresses (element frame).
+    pub qeph: [f64; 12],
 }
 
 /// What one element step returns.
@@ -698,7 +702,12 @@ pub fn shell4_step(
         out.bad_area = true;
         return out;
     };
-    out.dt = char_length(sec, st.geo0.as_ref().unwrap_or(&ge), st.tri) / kc.c;
+    let g_dt = st.geo0.as_ref().unwrap_or(&ge);
+    out.dt = if sec.ishell == 24 && !st.tri {
+        qeph::char_length(sec, g_dt) / kc.c
+    } else {
+        char_length(sec, g_dt, st.tri) / kc.c
+    };
     let mut gm = if dt > 0.0 {
         let mut xm = *x;
         for i in 0..4 {
@@ -729,7 +738,7 @@ pub fn shell4_step(
     // the membrane and flexural modes as for the rotational ones (its shell
     // hourglass routine switches the orthogonalisation off with Ismstr 1/11).
     let orth = sec.ishell != 2 && sec.ismstr != 1;
-    let hourglass = !st.tri;
+    let hourglass = !st.tri && sec.ishell != 24;
 
     // ---- generalized strain rates (mid-step frame) ---------------------------
     let [m1, m2, m3] = gm.e;
@@ -804,6 +813,7 @@ pub fn shell4_step(
     let mut no = [0.0; 3];
     let mut mo = [0.0; 3];
     let mut qo = [0.0; 2];
+    let mut ep0 = [0.0; MAX_IP];
     let (dwp, dezz, nfailed) = if dt > 0.0 {
         // Old stresses turned to this step's frame; transverse shear elastic.
         for (k, s) in sig.iter_mut().enumerate() {
@@ -818,6 +828,7 @@ pub fn shell4_step(
             qo[1] += wm * oyz;
             *s = [o[0], o[1], o[2], oyz + gs * dgyz, ozx + gs * dgzx];
         }
+        ep0[..n_ip].copy_from_slice(eps_p);
         update_slots(sec, &law, t, sig, eps_p, d_m, d_k, dt)
     } else {
         let failed = eps_p.iter().filter(|&&e| law.has_failed(e)).count();
@@ -956,12 +967,33 @@ pub fn shell4_step(
         out.m[i] = [mm[0] + m0[0], mm[1] + m0[1], mm[2] + m0[2]];
     }
 
+    if sec.ishell == 24 && !st.tri {
+        let pl = qeph::plastic_state(sec, &law, &ep0[..n_ip], eps_p);
+        let (nb, mb) = (scale(nr, 1.0 / t), scale(mr, 1.0 / (t * t)));
+        let q = qeph::step(sec, &gm, &ge, v, vr, dt, t, &mut st.qeph, pl, nb, mb);
+        for i in 0..4 {
+            let (f, m) = (q.f[i], q.m[i]);
+            let fg = comb3(f[0], e1, f[1], e2, f[2], e3);
+            let mg = comb3(m[0], e1, m[1], e2, 0.0, e3);
+            for k in 0..3 {
+                out.f[i][k] += fg[k];
+                out.m[i][k] += mg[k];
+            }
+        }
+        (out.d_eint, out.d_ehg) = (out.d_eint + q.d_eint, q.d_ehg);
+        st.eint += q.d_eint;
+        st.ehg += q.d_ehg;
+    }
+
     // ---- thickness ---------------------------------------------------------------
     if sec.ithick == 1 && dt > 0.0 {
         st.thick = t * (1.0 + dezz);
     }
     out
 }
+
+#[path = "shell4_qeph.rs"]
+mod qeph;
 
 #[cfg(test)]
 #[path = "shell4_tests.rs"]

@@ -190,7 +190,7 @@ fn thickness_rule_matches_the_theory_manual_table() {
 #[test]
 fn section_refuses_what_it_does_not_compute() {
     let m = jc_mat(|_| {});
-    for (ishell, what) in [(12, "QBAT"), (24, "QEPH")] {
+    for (ishell, what) in [(12, "QBAT")] {
         let e = ShellSection::new(&resolved(ishell, 3, 0.01), &m).unwrap_err();
         assert!(e.contains(what), "{e}");
     }
@@ -291,6 +291,7 @@ fn rigid_body_motion_gives_no_force_and_no_energy() {
         (1, warped_quad()),
         (3, warped_quad()),
         (4, warped_quad()),
+        (24, warped_quad()),
         (
             2,
             [
@@ -611,9 +612,10 @@ fn pure_bending_moment() {
 fn corner_forces_are_in_equilibrium() {
     let m = jc_mat(|j| j.c = 0.01);
     let mut rng = Lcg(42);
-    for ishell in [1, 2, 3, 4] {
+    for ishell in [1, 2, 3, 4, 24] {
         for iplas in [0, 1, 2] {
             let mut r = resolved(ishell, 5, 0.05);
+            r.dn = 0.015;
             r.iplas = iplas;
             r.ithick = 1;
             let sec = ShellSection::new(&r, &m).unwrap();
@@ -1340,4 +1342,112 @@ fn n0_corner_forces_are_in_equilibrium() {
         yielded += usize::from(el.ep[0] > 0.0);
     }
     assert!(yielded >= 2, "the sections must yield");
+}
+
+/// QEPH in-plane bending: one a × b rectangle (ν = 0) under the linear
+/// bending field u_x = −κxy (its nodal values are the membrane hourglass
+/// mode) stores the beam's energy ½Eκ²(tb³/12)a exactly (note eq. 11 with
+/// 17: K = (4/3)E t b/a), where the BT hourglass of Ishell 1 gives a
+/// coefficient-dependent value; the forces are in equilibrium.
+#[test]
+fn qeph_in_plane_bending_energy_is_the_beams() {
+    let mut card0 = card(MaterialLaw::Elastic);
+    card0.nu = 0.0;
+    let m = Material::from_card(&card0);
+    let mut r = resolved(24, 5, 0.0);
+    r.dn = 0.0;
+    let sec = ShellSection::new(&r, &m).unwrap();
+    let (a, b, t) = (8.0, 2.0, 1.5);
+    let x = [
+        [-0.5 * a, -0.5 * b, 0.0],
+        [0.5 * a, -0.5 * b, 0.0],
+        [0.5 * a, 0.5 * b, 0.0],
+        [-0.5 * a, 0.5 * b, 0.0],
+    ];
+    let mut el = El::new(&sec, &x, t);
+    let (kappa, n) = (1e-5, 100);
+    let dt = 1.0 / n as f64;
+    let mut xc = x;
+    for _ in 0..n {
+        let v: [[f64; 3]; 4] = std::array::from_fn(|i| [-kappa * x[i][0] * x[i][1], 0.0, 0.0]);
+        let xn: [[f64; 3]; 4] = std::array::from_fn(|i| [xc[i][0] + dt * v[i][0], xc[i][1], 0.0]);
+        let o = el.step(&sec, &xn, &v, &[[0.0; 3]; 4], dt);
+        let fs: f64 = (0..4).map(|i| o.f[i][0]).sum();
+        assert!(fs.abs() < 1e-12, "{fs}");
+        xc = xn;
+    }
+    let e = m.young();
+    let analytic = 0.5 * e * kappa * kappa * t * b.powi(3) / 12.0 * a;
+    let rel = (el.st.eint - analytic) / analytic;
+    assert!(rel.abs() < 0.01, "{} vs {analytic} ({rel})", el.st.eint);
+    assert_eq!(el.st.ehg, 0.0, "no damping with dn = 0");
+}
+
+/// QEPH time step: on a square of side a the characteristic length is
+/// a/√1.25 (note eq. 21), times √(1 + dn²) − dn (eq. 22).
+#[test]
+fn qeph_time_step_of_a_square() {
+    let m = elastic();
+    let mut r = resolved(24, 3, 0.0);
+    r.dn = 0.015;
+    let sec = ShellSection::new(&r, &m).unwrap();
+    let a = 5.0;
+    let x = [[0.0, 0.0, 0.0], [a, 0.0, 0.0], [a, a, 0.0], [0.0, a, 0.0]];
+    let o = El::new(&sec, &x, 1.0).step(&sec, &x, &[[0.0; 3]; 4], &[[0.0; 3]; 4], 0.0);
+    // f2 = 0.78 + 0.22·(3.413·(1 − 0.7071))³ ≈ 0.99985 on a square.
+    let f2 = 0.78 + 0.22 * (3.413f64 * (1.0 - 0.7071)).powi(3);
+    let expect = a / (1.25 * f2).sqrt() * ((1.0 + 0.015f64 * 0.015).sqrt() - 0.015);
+    assert!(
+        (o.dt * m.sound_speed() - expect).abs() < 1e-12 * a,
+        "{} vs {expect}",
+        o.dt * m.sound_speed()
+    );
+}
+
+/// QEPH out-of-plane and shear hourglass modes are resisted elastically:
+/// the work of a mode goes into the internal energy and comes back when
+/// the mode is undone (no damping with dn = 0), and dn adds dissipation.
+#[test]
+fn qeph_hourglass_modes_store_energy_elastically() {
+    let m = elastic();
+    for dn in [0.0, 0.015] {
+        let mut r = resolved(24, 5, 0.0);
+        r.dn = dn;
+        let sec = ShellSection::new(&r, &m).unwrap();
+        let x = [
+            [0.0, 0.0, 0.0],
+            [5.0, 0.0, 0.0],
+            [5.0, 5.0, 0.0],
+            [0.0, 5.0, 0.0],
+        ];
+        let mut el = El::new(&sec, &x, 1.0);
+        let h = [1.0, -1.0, 1.0, -1.0];
+        let mut xc = x;
+        let dt = 1e-3;
+        let mut peak = 0.0;
+        for sgn in [1.0, -1.0] {
+            for _ in 0..50 {
+                // z hourglass (w mode) with the rotations of a twist θ = ∓h·(y, x)…
+                let v: [[f64; 3]; 4] = std::array::from_fn(|i| [0.0, 0.0, sgn * 0.01 * h[i]]);
+                let vr: [[f64; 3]; 4] =
+                    std::array::from_fn(|i| [sgn * 0.002 * h[i], -sgn * 0.003 * h[i], 0.0]);
+                let xn: [[f64; 3]; 4] =
+                    std::array::from_fn(|i| [xc[i][0], xc[i][1], xc[i][2] + dt * v[i][2]]);
+                let o = el.step(&sec, &xn, &v, &vr, dt);
+                assert!(!o.bad_area);
+                xc = xn;
+            }
+            if sgn > 0.0 {
+                peak = el.st.eint;
+                assert!(peak > 0.0, "the mode is resisted");
+            }
+        }
+        let back = el.st.eint;
+        if dn == 0.0 {
+            assert!(back.abs() < 1e-6 * peak, "elastic: {back} of {peak}");
+            assert_eq!(el.st.ehg, 0.0);
+        } else {
+            assert!(el.st.ehg > 0.0, "dn dissipates");
+        }
+    }
 }

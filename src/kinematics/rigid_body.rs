@@ -27,6 +27,8 @@ pub struct RigidBodyState {
     /// Inertia about the centre at t = 0 (xx, yy, zz, xy, yz, xz), body axes = global at t = 0.
     pub j0: [f64; 6],
     pub center: V3,
+    /// Centre at t = 0 (the body's displacement, for /IMPDISP on its main node).
+    pub center0: V3,
     pub v: V3,
     pub omega: V3,
     /// Rotation from the initial orientation (row-major 3×3).
@@ -105,6 +107,7 @@ impl RigidBodyState {
             mass,
             j0: inertia,
             center,
+            center0: center,
             v,
             omega,
             rot: [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],

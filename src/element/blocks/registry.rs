@@ -39,6 +39,13 @@ pub const FORMULATIONS: &[Formulation] = &[
         build: shell4_bt::build,
     },
     Formulation {
+        kind: ElementKind::Shell4,
+        flag: "Ishell",
+        numbers: &[24],
+        name: "QEPH (Belytschko-Tsay with physical hourglass stabilization)",
+        build: shell4_bt::build,
+    },
+    Formulation {
         kind: ElementKind::Shell3,
         flag: "Ish3n",
         numbers: &[1, 2],
@@ -79,9 +86,8 @@ pub const FORMULATIONS: &[Formulation] = &[
 /// messages of the sections' own checks, byte for byte).
 pub fn refusal(kind: ElementKind, n: i64) -> String {
     match (kind, n) {
-        (ElementKind::Shell4, 12) => "Ishell = 12 (QBAT) is not supported yet: the engine computes Ishell = 1, 2, 3, 4 (Belytschko-Tsay)".into(),
-        (ElementKind::Shell4, 24) => "Ishell = 24 (QEPH) is not supported yet: the engine computes Ishell = 1, 2, 3, 4 (Belytschko-Tsay)".into(),
-        (ElementKind::Shell4, v) => format!("Ishell = {v}: expected 1, 2, 3 or 4 (Belytschko-Tsay)"),
+        (ElementKind::Shell4, 12) => "Ishell = 12 (QBAT) is not supported yet: the engine computes Ishell = 1, 2, 3, 4 (Belytschko-Tsay) and 24 (QEPH)".into(),
+        (ElementKind::Shell4, v) => format!("Ishell = {v}: expected 1, 2, 3, 4 (Belytschko-Tsay) or 24 (QEPH)"),
         (ElementKind::Shell3, 30) => "Ish3n = 30 (DKT18) is not supported: the engine computes the C0 triangle (Ish3n = 1, 2)".into(),
         (ElementKind::Shell3, 31) => "Ish3n = 31 (DKT_S3) is not supported: the engine computes the C0 triangle (Ish3n = 1, 2)".into(),
         (ElementKind::Shell3, v) => format!("Ish3n = {v}: expected 1 or 2 (C0 triangle)"),
@@ -281,9 +287,8 @@ mod tests {
             }
         }
         let refused = [
-            (ElementKind::Shell4, 12, "Ishell = 12 (QBAT) is not supported yet: the engine computes Ishell = 1, 2, 3, 4 (Belytschko-Tsay)"),
-            (ElementKind::Shell4, 24, "Ishell = 24 (QEPH) is not supported yet: the engine computes Ishell = 1, 2, 3, 4 (Belytschko-Tsay)"),
-            (ElementKind::Shell4, 7, "Ishell = 7: expected 1, 2, 3 or 4 (Belytschko-Tsay)"),
+            (ElementKind::Shell4, 12, "Ishell = 12 (QBAT) is not supported yet: the engine computes Ishell = 1, 2, 3, 4 (Belytschko-Tsay) and 24 (QEPH)"),
+            (ElementKind::Shell4, 7, "Ishell = 7: expected 1, 2, 3, 4 (Belytschko-Tsay) or 24 (QEPH)"),
             (ElementKind::Shell3, 30, "Ish3n = 30 (DKT18) is not supported: the engine computes the C0 triangle (Ish3n = 1, 2)"),
             (ElementKind::Brick8, 17, "Isolid = 17 is not supported: the engine computes bricks with Isolid = 1 (Belytschko viscous hourglass), 2 (Hallquist viscous hourglass) or 14 (HA8, fully integrated)"),
             (ElementKind::Tetra4, 3, "Itetra4 = 3: only the standard 4-node tetrahedron (Itetra4 = 0 or 1000) is supported"),
@@ -310,7 +315,7 @@ mod tests {
         m.properties[prop].shell.as_mut().unwrap().ishell = 12;
         assert_eq!(
             blocks(&m, &le).err().unwrap(),
-            "Ishell = 12 (QBAT) is not supported yet: the engine computes Ishell = 1, 2, 3, 4 (Belytschko-Tsay)"
+            "Ishell = 12 (QBAT) is not supported yet: the engine computes Ishell = 1, 2, 3, 4 (Belytschko-Tsay) and 24 (QEPH)"
         );
         let le = all_of(&m, ElementKind::Brick8);
         let prop = m.parts[le.part[0] as usize].prop.unwrap() as usize;

@@ -168,6 +168,16 @@ fn constrain_body(cx: &Ctx, s: &mut State, b: usize) {
             imposed[c.card.dir.index()] = Some(val);
         }
     }
+    // /IMPDISP on the main node: the velocity that takes the body's centre
+    // to u(t + Δt) from where it is.
+    for &i in &lb.main_impdisp {
+        let c = &cx.g.imposed_displacements[i];
+        if let Some(u) = cx.imposed(c, s.t + s.dt) {
+            let d = c.card.dir.index();
+            let body = &s.bodies[b];
+            imposed[d] = Some((u - (body.center[d] - body.center0[d])) / s.dt);
+        }
+    }
     let counts = lb.main_local.is_some_and(|l| cx.owned[l as usize]);
     let body = &mut s.bodies[b];
     for (k, val) in imposed.iter().enumerate() {
@@ -209,6 +219,10 @@ fn imposed_motion(cx: &Ctx, s: &mut State) {
         let d = c.card.dir.index();
         for &l in nodes {
             let l = l as usize;
+            // A rigid body's main node moves with its body (`constrain_body`).
+            if d < 3 && cx.is_main[l] {
+                continue;
+            }
             impose(cx, s, l, d, (u - (s.x[l][d] - cx.sd.x[l][d])) / dt);
         }
     }

@@ -29,6 +29,9 @@ pub(super) struct LocalBody {
     /// act on the body, as in Radioss.
     pub main_fixed: [bool; 6],
     pub main_impvel: Vec<usize>,
+    /// The main node's translational /IMPDISP cards (indices into
+    /// `GlobalData::imposed_displacements`): they move the body.
+    pub main_impdisp: Vec<usize>,
 }
 
 /// Local nodes of a card, with the card.
@@ -278,12 +281,19 @@ fn rigid_body_roles(cx: &mut Ctx) {
         let main_impvel = (0..g.imposed_velocities.len())
             .filter(|&i| g.imposed_velocities[i].nodes.contains(&rb.main_node))
             .collect();
+        let main_impdisp = (0..g.imposed_displacements.len())
+            .filter(|&i| {
+                let c = &g.imposed_displacements[i];
+                c.nodes.contains(&rb.main_node) && c.card.dir.index() < 3
+            })
+            .collect();
         cx.local_bodies.push(LocalBody {
             members,
             main_local,
             main_mass: rb.card.mass + main_local.map(|l| sd.mass[l as usize]).unwrap_or(0.0),
             main_fixed,
             main_impvel,
+            main_impdisp,
         });
     }
     cx.ke_skip = (0..n).map(|l| cx.is_main[l] || cx.tied_tr[l]).collect();
