@@ -751,7 +751,7 @@ fn part_names_unsupported_material() {
     let c = Case::new("part-mat-unsupported");
     let mut d = base_deck();
     let n = replace(&mut d, &part_line(), i10(1) + &i10(8) + &i10(0));
-    before_end(&mut d, &[s("/MAT/LAW36/8"), s("tabulated"), r20("7800.0")]);
+    before_end(&mut d, &[s("/MAT/LAW44/8"), s("cowper"), r20("7800.0")]);
     let out = c.check(&d);
     assert_error(
         &out,
@@ -760,7 +760,7 @@ fn part_names_unsupported_material() {
             line: n,
             keyword: "/PART/1",
             field: "mat_ID",
-            phrases: &["material 8 is not defined", "/MAT/LAW36/8", "not supported"],
+            phrases: &["material 8 is not defined", "/MAT/LAW44/8", "not supported"],
         },
     );
 }
@@ -1422,6 +1422,57 @@ fn failure_card_names_unknown_material_and_bad_flags() {
             keyword: "/FAIL/JOHNSON/1",
             field: "Ifail_so",
             phrases: &["7: expected one of"],
+        },
+    );
+}
+
+#[test]
+fn law36_names_an_undefined_curve_and_bad_rates() {
+    let law36 = |rates: &str| {
+        vec![
+            s("/MAT/LAW36/1"),
+            s("tabulated"),
+            r20("7.8e-6"),
+            r20("210") + &r20("0.3"),
+            i10(2) + &i10(0),
+            i10(0),
+            i10(77) + &i10(77),
+            r20("1") + &r20("1"),
+            rates.to_string(),
+        ]
+    };
+    // The material card replaces the deck's /MAT/LAW1/1.
+    let c = Case::new("law36-fct");
+    let mut d = base_deck();
+    let at = line_no(&d, "/MAT/LAW1/1") - 1;
+    d.drain(at..at + 6);
+    for (k, l) in law36(&(r20("0") + &r20("100"))).into_iter().enumerate() {
+        d.insert(at + k, l);
+    }
+    assert_error(
+        &c.check(&d),
+        Expect {
+            file: DECK,
+            line: at + 1,
+            keyword: "/MAT/LAW36/1",
+            field: "func_ID",
+            phrases: &["function 77 is not defined"],
+        },
+    );
+    let c = Case::new("law36-rates");
+    let mut d = base_deck();
+    d.drain(at..at + 6);
+    for (k, l) in law36(&(r20("100") + &r20("10"))).into_iter().enumerate() {
+        d.insert(at + k, l);
+    }
+    assert_error(
+        &c.check(&d),
+        Expect {
+            file: DECK,
+            line: at + 9,
+            keyword: "/MAT/LAW36/1",
+            field: "Eps_dot_2",
+            phrases: &["must increase strictly"],
         },
     );
 }

@@ -1,4 +1,4 @@
-//! /MAT/LAW1 (/MAT/ELAST) and /MAT/LAW2 (/MAT/PLAS_JOHNS).
+//! /MAT/LAW1 (/MAT/ELAST) and /MAT/LAW2 (/MAT/PLAS_JOHNS); /MAT/LAW36 in `material_law36.rs`.
 //! Other laws are reported as unsupported (the caller warns, or fails with --strict).
 
 use super::fields::Cards;
@@ -11,6 +11,10 @@ pub(super) fn parse_material(block: &Block, deck: &mut Deck) -> InputResult<bool
     let law = block.parts.get(1).map(String::as_str).unwrap_or("");
     let is_elastic = matches!(law, "LAW1" | "ELAST");
     let is_jc = matches!(law, "LAW2" | "PLAS_JOHNS");
+    if matches!(law, "LAW36" | "PLAS_TAB") {
+        super::material_law36::parse_law36(block, deck)?;
+        return Ok(true);
+    }
     if !is_elastic && !is_jc {
         return Ok(false);
     }

@@ -20,6 +20,7 @@ mod interfaces;
 pub mod keyword_policy;
 mod lines;
 mod list_end;
+mod material_law36;
 mod materials;
 mod mesh;
 mod parts;

@@ -72,6 +72,11 @@ pub const SUPPORTED: &[Supported] = &[
         "Johnson-Cook elastic-plastic, strain-rate term (ICC, Fsmooth, Fcut), EPS_p_max and SIG_max0",
     ),
     s(
+        "/MAT/LAW36 (/MAT/PLAS_TAB)",
+        &["/MAT/LAW36/1", "/MAT/PLAS_TAB/1"],
+        "tabulated plasticity: yield curves per strain rate (Fscale, F_smooth, F_cut), Eps_p_max; C_hard, VP = 1, fct_IDp, Fct_IDE/CE and Eps_t/Eps_m/Eps_f refused by name",
+    ),
+    s(
         "/FAIL/JOHNSON",
         &["/FAIL/JOHNSON/1"],
         "Johnson-Cook damage (D1-D5, EPS_0, EPSF_MIN) on solids, Ifail_so 1-4; on shells refused",
@@ -193,7 +198,7 @@ mod tests {
     #[test]
     fn keywords_nobody_reads_are_not_in_the_table() {
         for h in [
-            "/MAT/LAW36/1",
+            "/MAT/LAW44/1",
             "/INTER/TYPE19/1",
             "/PROP/TYPE8/1",
             "/RWALL/CYL/1",

@@ -134,6 +134,13 @@ fn build(deck: &Deck) -> Result<Model, InputError> {
     let lines = super::lines::resolve_lines(&deck.lines, &surfaces, &refs.surf_index, &ctx)?;
     let interfaces = read_interfaces(deck, &refs, &surfaces, &lines, &mut warnings)?;
 
+    let mut materials = super::failures::materials_with_failures(deck)?;
+    super::material_law36::resolve_curves(
+        &mut materials,
+        &deck.functions,
+        begin.work_units.time_si,
+    )?;
+
     // Masses.
     let mut model = Model {
         name: begin.run_name.clone(),
@@ -145,7 +152,7 @@ fn build(deck: &Deck) -> Result<Model, InputError> {
         nodes,
         elements,
         parts,
-        materials: super::failures::materials_with_failures(deck)?,
+        materials,
         properties,
         functions: deck.functions.clone(),
         node_groups: node_groups.clone(),

@@ -56,6 +56,9 @@ pub fn check_ish3n(r: &ResolvedShell) -> Result<(), String> {
 /// not apply to triangles, so a QEPH/QBAT part can still hold triangles).
 pub fn shell3_section(r: &ResolvedShell, m: &Material) -> Result<ShellSection, String> {
     check_ish3n(r)?;
+    if m.tension_damage().is_some() {
+        return Err("/MAT/LAW36: the tension damage (Eps_t, Eps_m, Eps_f) is not computed on 3-node shells yet".into());
+    }
     let mut q = r.clone();
     q.ishell = 1;
     ShellSection::new(&q, m)
@@ -309,6 +312,7 @@ pub fn shell3_step(
             [dxx, dyy, gxy],
             [kxx, kyy, kxy],
             dt,
+            None,
         );
         // Work of the mean resultants on the generalized strain increments:
         // the power of the corner forces, A(N:d + M:κ + Q·γ).
@@ -330,7 +334,7 @@ pub fn shell3_step(
     out.d_eplas = dwp * vol;
     st.eint += out.d_eint;
     st.eplas += out.d_eplas;
-    if nfailed == n_ip {
+    if nfailed == n_ip || (nfailed > 0 && sec.material.deletes_at_first_failed_point()) {
         st.deleted = true;
         out.failed = true;
         return out;

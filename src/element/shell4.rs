@@ -139,6 +139,11 @@ pub struct ShellSection {
     pub iplas: i64,
     /// Numerical damping dn (QEPH hourglass dampers and time step).
     pub dn: f64,
+    /// LAW36 tension damage and deletion [Eps_t, Eps_m, Eps_f] on the
+    /// points' largest in-plane principal strain (the element then keeps
+    /// its total strain).
+    #[serde(default)]
+    pub tension: Option<[f64; 3]>,
     pub material: Material,
     /// Point positions ζ_k ∈ [−½, ½] (fraction of the thickness, k = 0 at the bottom).
     pub zeta: [f64; MAX_IP],
@@ -274,6 +279,7 @@ impl ShellSection {
             ithick: r.ithick,
             iplas: r.iplas,
             dn: r.dn,
+            tension: m.tension_damage(),
             material: m.clone(),
             zeta,
             w_mem,
@@ -338,6 +344,9 @@ pub struct Shell4State {
     pub geo0: Option<Geom>,
     /// QEPH (Ishell 24): the twelve hourglass stresses (element frame).
     pub qeph: [f64; 12],
+    /// Total membrane strain and curvature [ε_xx, ε_yy, γ_xy, κ_xx, κ_yy,
+    /// κ_xy] (local frame), kept for LAW36's tension damage.
+    pub strain: [f64; 6],
 }
 
 /// What one element step returns.
@@ -560,6 +569,7 @@ pub(super) fn update_slots(
     d_m: [f64; 3],
     d_k: [f64; 3],
     dt: f64,
+    strain: Option<&[f64; 6]>,
 ) -> (f64, f64, usize) {
     if sec.global {
         let (lo, hi) = (sig[0], sig[1]);
@@ -596,8 +606,16 @@ pub(super) fn update_slots(
             (d_m[2] + z * d_k[2]) * dt,
         ];
         let mut s3 = [s[0], s[1], s[2]];
-        let r = law.plane_stress(&mut s3, ep, d, sec.iplas);
-        if r.failed {
+        let (lk, torn) = match (sec.tension, strain) {
+            (Some([et, em, ef]), Some(e)) => {
+                let e1 = principal_in_plane([e[0] + z * e[3], e[1] + z * e[4], e[2] + z * e[5]]);
+                let f = crate::material::tension_factor(et, em, e1);
+                (law.with_yield_scale(f), e1 > ef)
+            }
+            _ => (*law, false),
+        };
+        let r = lk.plane_stress(&mut s3, ep, d, sec.iplas);
+        if r.failed || torn {
             *s = [0.0; 5];
             nfailed += 1;
         } else {
@@ -608,6 +626,13 @@ pub(super) fn update_slots(
         dezz += wm * r.d_ezz;
     }
     (dwp, dezz, nfailed)
+}
+
+/// The largest principal value of an in-plane strain [ε_xx, ε_yy, γ_xy]
+/// (engineering shear).
+#[inline]
+fn principal_in_plane(e: [f64; 3]) -> f64 {
+    0.5 * (e[0] + e[1]) + 0.5 * ((e[0] - e[1]).powi(2) + e[2] * e[2]).sqrt()
 }
 
 /// Rotation (cos, sin) applied to plane tensors and vectors.
@@ -829,7 +854,25 @@ pub fn shell4_step(
             *s = [o[0], o[1], o[2], oyz + gs * dgyz, ozx + gs * dgzx];
         }
         ep0[..n_ip].copy_from_slice(eps_p);
-        update_slots(sec, &law, t, sig, eps_p, d_m, d_k, dt)
+        let strain = if sec.tension.is_some() {
+            // The total strain turns with the stresses, then takes this step's increment.
+            let e = &mut st.strain;
+            let (m, k) = (
+                rot_old.strain([e[0], e[1], e[2]]),
+                rot_old.strain([e[3], e[4], e[5]]),
+            );
+            *e = std::array::from_fn(|c| {
+                if c < 3 {
+                    m[c] + d_m[c] * dt
+                } else {
+                    k[c - 3] + d_k[c - 3] * dt
+                }
+            });
+            Some(&st.strain)
+        } else {
+            None
+        };
+        update_slots(sec, &law, t, sig, eps_p, d_m, d_k, dt, strain)
     } else {
         let failed = eps_p.iter().filter(|&&e| law.has_failed(e)).count();
         (0.0, 0.0, failed)
@@ -860,7 +903,7 @@ pub fn shell4_step(
         st.eint += out.d_eint;
         st.eplas += out.d_eplas;
     }
-    if nfailed == n_ip {
+    if nfailed == n_ip || (nfailed > 0 && mat.deletes_at_first_failed_point()) {
         st.deleted = true;
         out.failed = true;
         return out;

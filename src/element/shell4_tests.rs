@@ -1451,3 +1451,79 @@ fn qeph_hourglass_modes_store_energy_elastically() {
         }
     }
 }
+
+/// LAW36 tension damage on a shell stretched along x (ε_yy = 0): past
+/// Eps_t the yield stress (flat curve 0.2) is scaled by
+/// (Eps_m − ε₁)/(Eps_m − Eps_t), ε₁ the total strain ε_xx; past Eps_f the
+/// element is deleted.
+#[test]
+fn law36_tension_damage_reduces_the_yield_then_deletes() {
+    use crate::model::{RateCurve, TabulatedPlasticity, NO_LIMIT};
+    let spec = card(MaterialLaw::Tabulated(TabulatedPlasticity {
+        eps_p_max: NO_LIMIT,
+        eps_t: 0.01,
+        eps_m: 0.02,
+        eps_f: 0.018,
+        fsmooth: 0,
+        chard: 0.0,
+        f_cut: 0.0,
+        vp: 0,
+        fct_p: 0,
+        fscale_p: 1.0,
+        fct_e: 0,
+        e_inf: 0.0,
+        ce: 0.0,
+        curves: vec![RateCurve {
+            fct: 1,
+            fscale: 1.0,
+            eps_dot: 0.0,
+            x: vec![0.0, 1.0],
+            y: vec![0.2, 0.2],
+        }],
+    }));
+    let m = Material::from_card(&spec);
+    let sec = section(1, 3, 0.0, &m);
+    let mut x = [
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [1.0, 1.0, 0.0],
+        [0.0, 1.0, 0.0],
+    ];
+    let mut el = El::new(&sec, &x, 0.1);
+    let (rate, dt) = (1.0, 1e-5);
+    let mut exx = 0.0;
+    while exx < 0.017 {
+        let v: [[f64; 3]; 4] = std::array::from_fn(|i| [rate * x[i][0] / (1.0 + exx), 0.0, 0.0]);
+        for i in 0..4 {
+            x[i][0] += dt * v[i][0];
+        }
+        exx = (x[1][0] - x[0][0]).ln();
+        let o = el.step(&sec, &x, &v, &[[0.0; 3]; 4], dt);
+        assert!(!o.failed, "deleted at ε_xx {exx}");
+        if exx > 0.0125 {
+            let f = ((0.02 - exx) / 0.01).clamp(1e-20, 1.0);
+            for s in &el.sig {
+                let svm = vm(s);
+                assert!(
+                    (svm - 0.2 * f).abs() < 0.02 * 0.2,
+                    "ε {exx}: σ_vm {svm} vs {}",
+                    0.2 * f
+                );
+            }
+        }
+    }
+    // Past Eps_f = 0.018 the element goes.
+    let mut gone = false;
+    for _ in 0..200 {
+        let v: [[f64; 3]; 4] = std::array::from_fn(|i| [rate * x[i][0] / (1.0 + exx), 0.0, 0.0]);
+        for i in 0..4 {
+            x[i][0] += dt * v[i][0];
+        }
+        exx = (x[1][0] - x[0][0]).ln();
+        if el.step(&sec, &x, &v, &[[0.0; 3]; 4], dt).failed {
+            gone = true;
+            break;
+        }
+    }
+    assert!(gone && exx > 0.018 && exx < 0.0185, "deleted at ε_xx {exx}");
+}

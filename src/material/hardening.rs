@@ -10,21 +10,25 @@
 //! kernels, which write `&PointLaw`, do not change.
 
 use super::johnson_cook::Flow;
+use super::tabulated_flow::TabFlow;
 
 /// σ_y(ε_p) at one element and step, with the rate and thermal factors of the
 /// law already applied.
 #[derive(Clone, Copy, Debug)]
-pub enum Hardening {
+pub enum Hardening<'a> {
     /// LAW2: σ_y = min(a + b·ε_p^n, cap) (see `super::johnson_cook`).
     JohnsonCook(Flow),
+    /// LAW36: the law's curves at the element's strain rate (`super::law36`).
+    Tabulated(TabFlow<'a>),
 }
 
-impl Hardening {
+impl Hardening<'_> {
     /// Current yield stress σ_y(ε_p).
     #[inline]
     pub fn sig_y(&self, ep: f64) -> f64 {
         match self {
             Hardening::JohnsonCook(f) => f.sig_y(ep),
+            Hardening::Tabulated(f) => f.sig_y(ep),
         }
     }
 
@@ -33,6 +37,7 @@ impl Hardening {
     pub fn slope(&self, ep: f64) -> f64 {
         match self {
             Hardening::JohnsonCook(f) => f.slope(ep),
+            Hardening::Tabulated(f) => f.slope(ep),
         }
     }
 
@@ -41,6 +46,7 @@ impl Hardening {
     pub fn cap(&self) -> f64 {
         match self {
             Hardening::JohnsonCook(f) => f.cap,
+            Hardening::Tabulated(_) => crate::model::NO_LIMIT,
         }
     }
 
@@ -54,6 +60,7 @@ impl Hardening {
                 let y_low = f.a.min(f.cap);
                 (f.b >= 0.0).then_some(y_low)
             }
+            Hardening::Tabulated(f) => f.lower_bound(),
         }
     }
 }

@@ -91,7 +91,7 @@ pub fn ilyushin_equivalent(s_m: &[f64; 3], s_b: &[f64; 3]) -> f64 {
     (p2(s_m, s_m) + p2(&q, &q) + INV_SQRT3 * p2(s_m, &q).abs()).sqrt()
 }
 
-impl PointLaw {
+impl PointLaw<'_> {
     /// Global (N = 0) update of a section (see the module doc): `s_m` = N/t and
     /// `s_b` = 6M/t² in the local frame, updated in place from the membrane
     /// strain increment `de_m` and the surface bending strain increment
@@ -218,7 +218,8 @@ mod tests {
         let (e, nu) = (205.0, 0.3);
         let g = e / (2.0 * (1.0 + nu));
         for b in [0.0, 0.35] {
-            let law = jc(b).at(0.0, 298.0);
+            let mat = jc(b);
+            let law = mat.at(0.0, 298.0);
             for (dm, db) in [
                 ([4e-3, 0.0, 0.0], [0.0, 0.0, 0.0]),
                 ([0.0, 0.0, 0.0], [3e-3, -1e-3, 0.0]),
@@ -265,7 +266,8 @@ mod tests {
     /// Below yield the update is the elastic plate law, for any material.
     #[test]
     fn elastic_below_yield() {
-        let law = jc(0.35).at(0.0, 298.0);
+        let mat = jc(0.35);
+        let law = mat.at(0.0, 298.0);
         let (mut sm, mut sb, mut ep) = ([0.0; 3], [0.0; 3], 0.0);
         let r = law.section_global(
             &mut sm,

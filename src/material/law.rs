@@ -120,6 +120,18 @@ pub trait Law: Sized {
         f64::INFINITY
     }
 
+    /// Tension damage and deletion on the largest principal strain
+    /// [Eps_t, Eps_m, Eps_f] (LAW36), when the card gives them.
+    fn tension_damage(&self) -> Option<[f64; 3]> {
+        None
+    }
+
+    /// One failed point deletes a multi-point element (LAW36); otherwise
+    /// all its points must fail (LAW2's EPS_p_max on shells).
+    fn deletes_at_first_failed_point(&self) -> bool {
+        false
+    }
+
     /// True when a point with this plastic strain has failed.
     #[inline]
     fn has_failed(&self, _eps_p: f64) -> bool {
@@ -130,7 +142,7 @@ pub trait Law: Sized {
     /// temperature, prepared once per element and step; `None` for an
     /// elastic law.
     #[inline]
-    fn hardening(&self, _eps_dot: f64, _temp: f64) -> Option<Hardening> {
+    fn hardening(&self, _eps_dot: f64, _temp: f64) -> Option<Hardening<'_>> {
         None
     }
 

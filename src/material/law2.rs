@@ -143,7 +143,7 @@ impl Law for Law2 {
     /// σ_y = (a + b·ε_p^n)·q, capped, with q = rate factor × thermal factor
     /// (at least 1e-20) evaluated once for the element's rate and temperature.
     #[inline]
-    fn hardening(&self, eps_dot: f64, temp: f64) -> Option<Hardening> {
+    fn hardening(&self, eps_dot: f64, temp: f64) -> Option<Hardening<'_>> {
         let q = (jc::rate_factor(self.c, self.eps_dot_0, eps_dot)
             * jc::thermal_factor(self.rho_cp, self.t_r, self.t_melt, self.m, temp))
         .max(1e-20);

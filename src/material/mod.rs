@@ -15,9 +15,11 @@ mod johnson_cook;
 mod law;
 mod law1;
 mod law2;
+mod law36;
 mod point;
 mod registry;
 mod return_map;
+mod tabulated_flow;
 
 pub use fail_johnson::FailJohnson;
 pub use failure::Failure;
@@ -26,5 +28,6 @@ pub use ilyushin::ilyushin_equivalent;
 pub use law::{ElasticConstants, Law};
 pub use law1::Law1;
 pub use law2::Law2;
+pub use law36::{tension_factor, Law36};
 pub use point::{PlaneStressResult, PointLaw};
 pub use registry::{law_name, Material, LAWS};

@@ -24,15 +24,26 @@ pub struct PlaneStressResult {
 /// [`PointLaw::plane_stress`] or [`PointLaw::solid`] (or, for a section
 /// computed with global integration, `PointLaw::section_global`).
 #[derive(Clone, Copy, Debug)]
-pub struct PointLaw {
+pub struct PointLaw<'a> {
     pub(super) e: f64,
     pub(super) nu: f64,
     pub(super) g: f64,
     pub(super) eps_p_max: f64,
-    pub(super) hardening: Option<Hardening>,
+    pub(super) hardening: Option<Hardening<'a>>,
 }
 
-impl PointLaw {
+impl PointLaw<'_> {
+    /// The law with its yield stress and hardening slope scaled by `f`
+    /// (LAW36 tension damage; other laws unchanged).
+    #[inline]
+    pub fn with_yield_scale(&self, f: f64) -> Self {
+        let mut p = *self;
+        if let Some(Hardening::Tabulated(t)) = p.hardening {
+            p.hardening = Some(Hardening::Tabulated(t.scaled(f)));
+        }
+        p
+    }
+
     /// True when a point with this plastic strain has failed (ε_p ≥ EPS_p_max).
     #[inline]
     pub fn has_failed(&self, eps_p: f64) -> bool {

@@ -13,6 +13,7 @@
 use super::law::{ElasticConstants, Law};
 use super::law1::Law1;
 use super::law2::Law2;
+use super::law36::Law36;
 use super::point::{PlaneStressResult, PointLaw};
 use crate::model::MaterialSpec;
 use serde::{Deserialize, Serialize};
@@ -64,6 +65,8 @@ registry! {
     Elastic(Law1),
     /// LAW2: Johnson-Cook elasto-plastic.
     JohnsonCook(Law2),
+    /// LAW36: tabulated elasto-plastic.
+    Tabulated(Law36),
 }
 
 /// The name of law number `number` when the registry has it; otherwise the
@@ -194,6 +197,18 @@ impl Material {
         each_law!(self, l => l.reference_temperature())
     }
 
+    /// [Eps_t, Eps_m, Eps_f] of a law with tension damage (see [`Law::tension_damage`]).
+    #[inline]
+    pub fn tension_damage(&self) -> Option<[f64; 3]> {
+        each_law!(self, l => l.tension_damage())
+    }
+
+    /// One failed point deletes a multi-point element (see [`Law::deletes_at_first_failed_point`]).
+    #[inline]
+    pub fn deletes_at_first_failed_point(&self) -> bool {
+        each_law!(self, l => l.deletes_at_first_failed_point())
+    }
+
     /// True when a point with this plastic strain has failed (LAW2: ε_p ≥ EPS_p_max).
     #[inline]
     pub fn has_failed(&self, eps_p: f64) -> bool {
@@ -203,7 +218,7 @@ impl Material {
     /// The material at the given (filtered) strain rate and temperature,
     /// prepared for the integration points of one element and step.
     #[inline]
-    pub fn at(&self, eps_dot: f64, temp: f64) -> PointLaw {
+    pub fn at(&self, eps_dot: f64, temp: f64) -> PointLaw<'_> {
         let (e, nu, g) = (self.young(), self.poisson(), self.shear_modulus());
         each_law!(self, l => PointLaw {
             e,
@@ -601,9 +616,10 @@ mod tests {
     fn registry_maps_law_numbers_and_refuses_others_by_name() {
         assert_eq!(law_name(1), Ok("elastic"));
         assert_eq!(law_name(2), Ok("Johnson-Cook"));
-        let e = law_name(36).unwrap_err();
+        assert_eq!(law_name(36), Ok("tabulated plasticity"));
+        let e = law_name(44).unwrap_err();
         assert!(
-            e.contains("/MAT/LAW36")
+            e.contains("/MAT/LAW44")
                 && e.contains("LAW1 elastic")
                 && e.contains("LAW2 Johnson-Cook"),
             "{e}"

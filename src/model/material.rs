@@ -65,6 +65,53 @@ pub enum MaterialLaw {
     /// LAW2: Johnson-Cook elasto-plastic,
     /// σ_y = (a + b·ε_p^n)·(1 + c·ln(ε̇/ε̇₀))·(1 − T*^m), capped at SIG_max0.
     JohnsonCook(JohnsonCook),
+    /// LAW36 (/MAT/PLAS_TAB): tabulated yield curves σ_y(ε_p) per strain rate.
+    Tabulated(TabulatedPlasticity),
+}
+
+/// /MAT/LAW36 parameters (reference guide /MAT/LAW36; research note
+/// `docs/notes/law36_research.md`), defaults resolved; the curves' points are
+/// copied from their /FUNCT by the model builder.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct TabulatedPlasticity {
+    /// Plastic strain at failure (blank → ∞: `NO_LIMIT`).
+    pub eps_p_max: f64,
+    /// Tension damage: stress reduction from Eps_t to Eps_m of the largest
+    /// principal strain; deletion at Eps_f (blank → `NO_LIMIT`).
+    pub eps_t: f64,
+    pub eps_m: f64,
+    pub eps_f: f64,
+    /// F_smooth: 0, 1 rate interpolation linear in ε̇; 2 linear in ln ε̇.
+    pub fsmooth: i64,
+    /// Kinematic hardening fraction C_hard.
+    pub chard: f64,
+    /// Strain-rate filter frequency in the deck's time unit (0: none);
+    /// blank with several curves → 10 kHz, as the starter.
+    pub f_cut: f64,
+    /// VP: 1 = the plastic strain rate; otherwise the total strain rate.
+    pub vp: i64,
+    /// Yield factor function of the pressure (0 none) and its abscissa scale.
+    pub fct_p: Id,
+    pub fscale_p: f64,
+    /// Young's modulus evolution: its function (0 none), or E_inf and C_E.
+    pub fct_e: Id,
+    pub e_inf: f64,
+    pub ce: f64,
+    /// The yield curves, by increasing strain rate.
+    pub curves: Vec<RateCurve>,
+}
+
+/// One yield curve of LAW36: σ_y = Fscale·f(ε_p) at strain rate ε̇.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct RateCurve {
+    pub fct: Id,
+    pub fscale: f64,
+    pub eps_dot: f64,
+    /// The function's points (ε_p, f), filled by the model builder.
+    #[serde(default)]
+    pub x: Vec<f64>,
+    #[serde(default)]
+    pub y: Vec<f64>,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]

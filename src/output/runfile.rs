@@ -456,6 +456,7 @@ impl RunFile {
                 h5::text(match m.law {
                     MaterialLaw::Elastic => "LAW1 elastic",
                     MaterialLaw::JohnsonCook(_) => "LAW2 Johnson-Cook",
+                    MaterialLaw::Tabulated(_) => "LAW36 tabulated plasticity",
                 })
             })
             .collect();

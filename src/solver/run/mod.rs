@@ -183,6 +183,12 @@ fn cycle_zero(cx: &Ctx, s: &mut State, report: &mut Report) -> Result<(), RunErr
             ..Default::default()
         };
         report.row(cx, s, &e);
+        // The --energies CSV starts at t = 0 too (a deck driven by an
+        // imposed velocity has its kinetic energy from cycle 1 on).
+        if cx.opts.energies.is_some() {
+            s.energy_rows
+                .push([0.0, 0.0, s.dt, 0.0, ke0, ker0, 0.0, 0.0, 0.0]);
+        }
     }
     sample_history(cx, s);
     s.next_th += cx.th_period;
