@@ -3,7 +3,7 @@
 //! controls. Rank 0 builds it from the model and broadcasts it.
 
 use crate::model::{
-    Bcs, ConcentratedLoad, Gravity, ImposedMotion, InitialVelocity, Model, Part, Property,
+    Bcs, ConcentratedLoad, Damping, Gravity, ImposedMotion, InitialVelocity, Model, Part, Property,
     RigidBody, RigidWall,
 };
 use crate::model::{Engine, Function, Id, MaterialSpec, Units};
@@ -25,6 +25,8 @@ pub struct GlobalData {
     pub initial_velocities: Vec<InitialVelocity>,
     pub concentrated_loads: Vec<ConcentratedLoad>,
     pub gravity: Vec<Gravity>,
+    /// /DAMP, with the engine file's coefficients where it gives them.
+    pub dampings: Vec<Damping>,
     pub rigid_walls: Vec<RigidWall>,
     pub rigid_bodies: Vec<RigidBody>,
     /// Global ids of the nodes and of each element kind's elements.
@@ -44,6 +46,7 @@ pub struct GlobalData {
 
 impl GlobalData {
     pub fn from_model(m: &Model, engine: Engine) -> GlobalData {
+        let dampings = with_engine_coefficients(&m.dampings, &engine);
         GlobalData {
             name: m.name.clone(),
             title: m.title.clone(),
@@ -59,6 +62,7 @@ impl GlobalData {
             initial_velocities: m.initial_velocities.clone(),
             concentrated_loads: m.concentrated_loads.clone(),
             gravity: m.gravity.clone(),
+            dampings,
             rigid_walls: m.rigid_walls.clone(),
             rigid_bodies: m.rigid_bodies.clone(),
             node_ids: m.nodes.ids.clone(),
@@ -71,4 +75,17 @@ impl GlobalData {
             tied: Default::default(),
         }
     }
+}
+
+/// The /DAMP cards with the engine file's coefficients for the ids it names
+/// (an id the starter does not define is refused at `run`'s checks).
+fn with_engine_coefficients(d: &[Damping], engine: &Engine) -> Vec<Damping> {
+    let mut out = d.to_vec();
+    for o in &engine.dampings {
+        for c in out.iter_mut().filter(|c| c.card.id == o.id) {
+            c.card.alpha = o.alpha;
+            c.card.beta = o.beta;
+        }
+    }
+    out
 }

@@ -1476,3 +1476,60 @@ fn law36_names_an_undefined_curve_and_bad_rates() {
         },
     );
 }
+
+/// Spring hardening flags name the curves they need; a /DAMP gives one line
+/// of coefficients or six.
+#[test]
+fn spring_hardening_and_damp_coefficients_are_checked_at_their_card() {
+    let c = Case::new("spring-h4");
+    let mut d = base_deck();
+    let at = line_no(&d, "/PART/1") - 1;
+    let spring = [
+        s("/PROP/SPRING/9"),
+        s("spring"),
+        r20("1.0"),
+        r20("100.0"),
+        i10(5) + &i10(4),
+    ];
+    for (k, l) in spring.into_iter().enumerate() {
+        d.insert(at + k, l);
+    }
+    d.extend([
+        s("/FUNCT/5"),
+        s("curve"),
+        r20(0) + &r20(0),
+        r20(1) + &r20(1),
+    ]);
+    assert_error(
+        &c.check(&d),
+        Expect {
+            file: DECK,
+            line: at + 5,
+            keyword: "/PROP/SPRING/9",
+            field: "H",
+            phrases: &["H = 4", "fct_ID3"],
+        },
+    );
+    let c = Case::new("damp-lines");
+    let mut d = base_deck();
+    let at = line_no(&d, "/PART/1") - 1;
+    let damp = [
+        s("/DAMP/3"),
+        s("damping"),
+        r20("1.0") + &r20("0.0") + &i10(0),
+        r20("1.0") + &r20("0.0"),
+    ];
+    for (k, l) in damp.into_iter().enumerate() {
+        d.insert(at + k, l);
+    }
+    assert_error(
+        &c.check(&d),
+        Expect {
+            file: DECK,
+            line: at + 3,
+            keyword: "/DAMP/3",
+            field: "alpha",
+            phrases: &["2 lines", "expected 1"],
+        },
+    );
+}

@@ -6,8 +6,8 @@ use super::fields::{Card, Cards};
 use super::source::Block;
 use super::{header_id, header_id_opt, Deck, Id};
 use crate::model::{
-    BoundarySpec, ConcentratedLoadSpec, CrossSectionSpec, Dof, GravitySpec, ImposedMotionSpec,
-    InitialVelocitySpec, InputResult, RigidBodySpec, RigidWallSpec,
+    BoundarySpec, ConcentratedLoadSpec, CrossSectionSpec, DampingSpec, Dof, GravitySpec,
+    ImposedMotionSpec, InitialVelocitySpec, InputResult, RigidBodySpec, RigidWallSpec,
 };
 
 fn read_dir(c: &Card, col: usize, default: Option<Dof>) -> InputResult<Dof> {
@@ -30,6 +30,9 @@ pub(super) fn parse_condition(block: &Block, deck: &mut Deck) -> InputResult<boo
         "IMPVEL" | "IMPDISP" => imposed_motion(block, deck),
         "INIVEL" => initial_velocity(block, deck),
         "CLOAD" | "GRAV" => load(block, deck),
+        "DAMP" if block.parts.len() <= 3 && block.parts[1].trim().parse::<u64>().is_ok() => {
+            damping(block, deck)
+        }
         "RWALL" => rigid_wall(block, deck),
         "RBODY" => rigid_body(block, deck),
         "SECT" => section(block, deck),
@@ -451,4 +454,48 @@ mod trarot_tests {
         assert!(trarot("   121 000").is_err());
         assert!(trarot("").is_err());
     }
+}
+
+/// /DAMP/damp_ID (reference guide /DAMP, Starter): short format
+/// α (1-20) β (21-40) grnd_ID (41-50) skew_ID (51-60) Tstart (61-80)
+/// Tstop (81-100), or the full format: that line with αx βx, then one line
+/// αy βy ... αzz βzz per degree of freedom.
+fn damping(block: &Block, deck: &mut Deck) -> InputResult<bool> {
+    let id = header_id(block, 1, "damp_ID")?;
+    let mut cards = Cards::new(block);
+    let title = cards.title();
+    let c = cards.next("the card with alpha, beta, grnod_ID, skew_ID, Tstart, Tstop")?;
+    let mut pairs = vec![(c.real(1, "alpha", 0.0)?, c.real(21, "beta", 0.0)?)];
+    while let Some(l) = cards.next_nonblank() {
+        pairs.push((l.real(1, "alpha", 0.0)?, l.real(21, "beta", 0.0)?));
+    }
+    if pairs.iter().any(|&(a, b)| a < 0.0 || b < 0.0) {
+        return Err(c.err("alpha", "the damping coefficients must be >= 0"));
+    }
+    let (alpha, beta) = match pairs.len() {
+        1 => ([pairs[0].0; 6], [pairs[0].1; 6]),
+        6 => (
+            std::array::from_fn(|i| pairs[i].0),
+            std::array::from_fn(|i| pairs[i].1),
+        ),
+        n => {
+            return Err(c.err(
+                "alpha",
+                format!("{n} lines of coefficients: expected 1 (short format) or 6 (full format)"),
+            ))
+        }
+    };
+    let tstop = c.real(81, "Tstop", 0.0)?;
+    deck.dampings.push(DampingSpec {
+        id,
+        title,
+        alpha,
+        beta,
+        grnod: c.id_opt(41, "grnod_ID")?,
+        skew_id: c.id_opt(51, "skew_ID")?,
+        tstart: c.real(61, "Tstart", 0.0)?,
+        tstop: if tstop == 0.0 { 1e30 } else { tstop },
+        loc: c.loc(),
+    });
+    Ok(true)
 }

@@ -4,7 +4,9 @@
 
 use super::fields::{parse_int, Cards};
 use super::source::Block;
-use crate::model::{AnimationSpec, DtControl, Engine, InputError, InputResult, RunSpec, StopSpec};
+use crate::model::{
+    AnimationSpec, DampingOverride, DtControl, Engine, InputError, InputResult, RunSpec, StopSpec,
+};
 
 fn header_int(block: &Block, idx: usize, name: &str) -> InputResult<Option<i64>> {
     match block.parts.get(idx).map(|s| s.trim()) {
@@ -175,7 +177,58 @@ pub(crate) fn parse_engine_block(block: &Block, eng: &mut Engine) -> InputResult
             });
         }
         "TITLE" => eng.title = Some(cards.title()),
+        "DAMP" if block.parts.len() == 2 => eng.dampings.push(damping(block, &mut cards)?),
         _ => return Ok(false),
     }
     Ok(true)
+}
+
+/// Engine /DAMP/damp_ID: `α β` (list-directed) for every degree of freedom,
+/// or six lines, one `α β` pair per degree of freedom X, Y, Z, XX, YY, ZZ
+/// (reference guide /DAMP, Engine).
+fn damping(block: &Block, cards: &mut Cards) -> InputResult<DampingOverride> {
+    let id = header_int(block, 1, "damp_ID")?.unwrap_or(0);
+    if id <= 0 {
+        return Err(InputError::new(
+            block.loc.clone(),
+            &block.header,
+            "damp_ID",
+            "expected /DAMP/damp_ID with the id of a starter /DAMP",
+        ));
+    }
+    let mut pairs = Vec::new();
+    while let Some(c) = cards.next_nonblank() {
+        let a = c.tok_real(0, "alpha")?.unwrap_or(0.0);
+        let b = c.tok_real(1, "beta")?.unwrap_or(0.0);
+        if a < 0.0 || b < 0.0 {
+            return Err(c.err(
+                "alpha",
+                format!("{a} {b}: the damping coefficients must be >= 0"),
+            ));
+        }
+        pairs.push((a, b));
+    }
+    let (alpha, beta) = match pairs.len() {
+        1 => ([pairs[0].0; 6], [pairs[0].1; 6]),
+        6 => (
+            std::array::from_fn(|i| pairs[i].0),
+            std::array::from_fn(|i| pairs[i].1),
+        ),
+        n => {
+            return Err(InputError::new(
+                block.loc.clone(),
+                &block.header,
+                "alpha",
+                format!(
+                    "{n} lines: expected one line `alpha beta` or six, one per degree of freedom"
+                ),
+            ))
+        }
+    };
+    Ok(DampingOverride {
+        id: id as u64,
+        alpha,
+        beta,
+        loc: block.loc.clone(),
+    })
 }

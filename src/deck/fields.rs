@@ -137,12 +137,18 @@ impl<'a> Card<'a> {
         Ok(self.int_opt(col, 10, name)?.unwrap_or(default))
     }
 
-    /// Real field; `None` when blank.
+    /// Real field; `None` when blank. A field holding several numbers
+    /// separated by blanks (a neighbour's digits run into it) is read as its
+    /// first, as the reference reader's `%20lg` does; each must be a number.
     pub fn real_opt(&self, col: usize, width: usize, name: &str) -> InputResult<Option<f64>> {
         let t = self.text(col, width);
         if t.is_empty() {
             return Ok(None);
         }
+        let mut words = t.split_whitespace();
+        let first = words.next().unwrap_or(t);
+        let spill_ok = words.all(|w| parse_real(w).is_ok());
+        let t = if spill_ok { first } else { t };
         parse_real(t).map(Some).map_err(|m| {
             self.err(
                 name,

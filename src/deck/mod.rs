@@ -26,6 +26,7 @@ mod mesh;
 mod parts;
 mod resolve_sets;
 mod sets;
+mod spring_props;
 pub mod supported;
 mod to_model;
 
@@ -77,6 +78,7 @@ pub struct Deck {
     pub initial_velocities: Vec<InitialVelocitySpec>,
     pub concentrated_loads: Vec<ConcentratedLoadSpec>,
     pub gravity: Vec<GravitySpec>,
+    pub dampings: Vec<crate::model::DampingSpec>,
     pub rigid_walls: Vec<RigidWallSpec>,
     pub rigid_bodies: Vec<RigidBodySpec>,
     pub sections: Vec<CrossSectionSpec>,
@@ -255,9 +257,8 @@ pub(crate) fn read_starter_block(block: &Block, deck: &mut Deck) -> InputResult<
         "ADMAS" => parts::parse_admas(block, deck)?,
         "GRNOD" | "GRSHEL" | "SURF" | "SUBSET" => sets::parse_set(block, deck)?,
         "LINE" => lines::parse_line(block, deck)?,
-        "BCS" | "IMPVEL" | "IMPDISP" | "INIVEL" | "CLOAD" | "GRAV" | "RWALL" | "RBODY" | "SECT" => {
-            conditions::parse_condition(block, deck)?
-        }
+        "BCS" | "IMPVEL" | "IMPDISP" | "INIVEL" | "CLOAD" | "GRAV" | "DAMP" | "RWALL" | "RBODY"
+        | "SECT" => conditions::parse_condition(block, deck)?,
         "INTER" => interfaces::parse_interface(block, deck)?,
         _ => false,
     })

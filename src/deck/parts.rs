@@ -1,14 +1,16 @@
-//! /PART, /PROP/TYPE1 (SHELL), /PROP/TYPE14 (SOLID), /PROP/TYPE4 (SPRING),
-//! /PROP/TYPE13 (SPR_BEAM), /DEF_SHELL, /DEF_SOLID, /FUNCT, /ADMAS.
+//! /PART, /PROP/TYPE1 (SHELL), /PROP/TYPE14 (SOLID), the spring properties
+//! (TYPE4, TYPE8, TYPE13: `super::spring_props`), /DEF_SHELL, /DEF_SOLID,
+//! /FUNCT, /ADMAS.
 //! Values are kept as written (0 = "default"); `to_model` resolves the
 //! defaults that depend on other cards (/DEF_SHELL, the material law).
 
 use super::fields::{zero_default, Cards};
 use super::source::Block;
+use super::spring_props;
 use super::{header_id, header_id_opt, Deck, Id};
 use crate::model::{
     DefShell, DefSolid, Function, InputError, InputResult, Loc, PropertyKind, PropertySpec,
-    ShellProperty, SolidProperty, SpringBeamProperty, SpringProperty,
+    ShellProperty, SolidProperty,
 };
 use serde::{Deserialize, Serialize};
 
@@ -64,6 +66,7 @@ pub(super) fn parse_property(block: &Block, deck: &mut Deck) -> InputResult<bool
         "TYPE1" | "SHELL" => 1,
         "TYPE14" | "SOLID" => 14,
         "TYPE4" | "SPRING" => 4,
+        "TYPE8" | "SPR_GENE" => 8,
         "TYPE13" | "SPR_BEAM" => 13,
         _ => return Ok(false),
     };
@@ -74,8 +77,15 @@ pub(super) fn parse_property(block: &Block, deck: &mut Deck) -> InputResult<bool
     let kind = match which {
         1 => PropertyKind::Shell(read_shell(&mut cards)?),
         14 => PropertyKind::Solid(read_solid(&mut cards)?),
-        4 => PropertyKind::Spring(read_spring(&mut cards)?),
-        _ => PropertyKind::SpringBeam(read_spring_beam(&mut cards)?),
+        4 => PropertyKind::Spring(spring_props::read_spring(&mut cards, &mut deck.warnings)?),
+        8 => PropertyKind::GeneralSpring(spring_props::read_general_spring(
+            &mut cards,
+            &mut deck.warnings,
+        )?),
+        _ => PropertyKind::SpringBeam(spring_props::read_spring_beam(
+            &mut cards,
+            &mut deck.warnings,
+        )?),
     };
     if which == 1 {
         super::warn_surplus(&cards, "the card with N, Thick", &mut deck.warnings);
@@ -169,95 +179,6 @@ fn read_solid(cards: &mut Cards) -> InputResult<SolidProperty> {
         }
     }
     Ok(p)
-}
-
-fn read_spring(cards: &mut Cards) -> InputResult<SpringProperty> {
-    // Mass (1-20) sens_ID (51-60) Isflag (61-70) Ileng (71-80)
-    let c1 = cards.next("the card with Mass, sens_ID, Isflag, Ileng")?;
-    // K (1-20) C (21-40) A (41-60) B (61-80) D (81-100)
-    let c2 = cards.next("the card with K, C, A, B, D")?;
-    // fct_ID1 (1-10) H (11-20) fct_ID2 (21-30) fct_ID3 (31-40) delta_min (61-80) delta_max (81-100)
-    let c3 = cards.next_opt();
-    // Fscale (1-20) E (21-40) Ascale (41-60)
-    let c4 = cards.next_opt();
-    let mass = c1.real(1, "Mass", 0.0)?;
-    if mass < 0.0 {
-        return Err(c1.err("Mass", format!("{mass}: spring mass must be >= 0")));
-    }
-    let k = c2.real(1, "K", 0.0)?;
-    if k < 0.0 {
-        return Err(c2.err("K", format!("{k}: spring stiffness must be >= 0")));
-    }
-    let (fct_id1, h, fct_id2, fct_id3, delta_min, delta_max) = match c3 {
-        Some(c) => (
-            c.id_opt(1, "fct_ID1")?,
-            c.int(11, "H", 0)?,
-            c.id_opt(21, "fct_ID2")?,
-            c.id_opt(31, "fct_ID3")?,
-            c.real(61, "delta_min", 0.0)?,
-            c.real(81, "delta_max", 0.0)?,
-        ),
-        None => (0, 0, 0, 0, 0.0, 0.0),
-    };
-    let (fscale, e, ascale) = match c4 {
-        Some(c) => (
-            c.real(1, "Fscale", 0.0)?,
-            c.real(21, "E", 0.0)?,
-            c.real(41, "Ascale", 0.0)?,
-        ),
-        None => (0.0, 0.0, 0.0),
-    };
-    Ok(SpringProperty {
-        mass,
-        sens_id: c1.id_opt(51, "sens_ID")?,
-        isflag: c1.int(61, "Isflag", 0)?,
-        ileng: c1.int(71, "Ileng", 0)?,
-        k,
-        c: c2.real(21, "C", 0.0)?,
-        a: super::fields::one_if_zero(c2.real(41, "A", 0.0)?),
-        b: c2.real(61, "B", 0.0)?,
-        d: super::fields::one_if_zero(c2.real(81, "D", 0.0)?),
-        fct_id1,
-        h,
-        fct_id2,
-        fct_id3,
-        delta_min,
-        delta_max,
-        fscale: super::fields::one_if_zero(fscale),
-        e,
-        ascale: super::fields::one_if_zero(ascale),
-    })
-}
-
-fn read_spring_beam(cards: &mut Cards) -> InputResult<SpringBeamProperty> {
-    // Mass (1-20) Inertia (21-40) skew_ID (41-50) sens_ID (51-60) Isflag (61-70) Ifail (71-80) Ileng (81-90)
-    let c1 = cards.next("the card with Mass, Inertia, skew_ID, sens_ID, Isflag, Ifail, Ileng")?;
-    let mut k = [0.0; 6];
-    let mut c = [0.0; 6];
-    // Then per direction (tension, shear s, shear t, torsion, bending y, bending z)
-    // a card K, C, A, B, D and a card fct_ID1, H, fct_ID2, fct_ID3, fct_ID4, delta_min, delta_max,
-    // then one card Fscale, E, Ascale, Hscale: 3 cards per direction.
-    for d in 0..6 {
-        let Some(kc) = cards.next_opt() else { break };
-        k[d] = kc.real(1, "K", 0.0)?;
-        c[d] = kc.real(21, "C", 0.0)?;
-        if k[d] < 0.0 {
-            return Err(kc.err("K", format!("{}: spring stiffness must be >= 0", k[d])));
-        }
-        let _functions = cards.next_opt();
-        let _scales = cards.next_opt();
-    }
-    Ok(SpringBeamProperty {
-        mass: c1.real(1, "Mass", 0.0)?,
-        inertia: c1.real(21, "Inertia", 0.0)?,
-        skew_id: c1.id_opt(41, "skew_ID")?,
-        sens_id: c1.id_opt(51, "sens_ID")?,
-        isflag: c1.int(61, "Isflag", 0)?,
-        ifail: c1.int(71, "Ifail", 0)?,
-        ileng: c1.int(81, "Ileng", 0)?,
-        k,
-        c,
-    })
 }
 
 pub(super) fn parse_defaults(block: &Block, deck: &mut Deck) -> InputResult<()> {

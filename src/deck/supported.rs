@@ -62,7 +62,7 @@ pub const SUPPORTED: &[Supported] = &[
     s("/SH3N", &["/SH3N/1"], "3-node shells: the C0 triangle, Ish3n 1 and 2 (DKT18, DKT_S3 refused)"),
     s("/BRICK", &["/BRICK/1"], "8-node bricks: Isolid 1 and 2 (one point, viscous hourglass), 14 (HA8: 2×2×2 points, assumed strain, Icpre 0/1/2); others refused"),
     s("/TETRA4", &["/TETRA4/1"], "4-node tetrahedra (Itetra4 0, 1000)"),
-    s("/SPRING", &["/SPRING/1"], "springs of /PROP/TYPE4"),
+    s("/SPRING", &["/SPRING/1"], "springs of /PROP/TYPE4, TYPE8 and TYPE13"),
     s("/TRUSS, /BEAM", &["/TRUSS/1", "/BEAM/1"], "read; `run` refuses them (not computed yet)"),
     s("/PART", &["/PART/1"], "parts: property, material, subset"),
     s("/MAT/LAW1 (/MAT/ELAST)", &["/MAT/LAW1/1", "/MAT/ELAST/1"], "linear elastic"),
@@ -83,8 +83,9 @@ pub const SUPPORTED: &[Supported] = &[
     ),
     s("/PROP/TYPE1 (/PROP/SHELL)", &["/PROP/TYPE1/1", "/PROP/SHELL/1"], "shell sections: Ishell, Ismstr, Ithick, Iplas, N, thickness, hourglass coefficients"),
     s("/PROP/TYPE14 (/PROP/SOLID)", &["/PROP/TYPE14/1", "/PROP/SOLID/1"], "solid sections: Isolid, Icpre and Inpts (HA8), hourglass coefficients, dtmin"),
-    s("/PROP/TYPE4 (/PROP/SPRING)", &["/PROP/TYPE4/1", "/PROP/SPRING/1"], "axial springs: mass, stiffness, damping, function"),
-    s("/PROP/TYPE13 (/PROP/SPR_BEAM)", &["/PROP/TYPE13/1", "/PROP/SPR_BEAM/1"], "read; `run` refuses it (not computed yet)"),
+    s("/PROP/TYPE4 (/PROP/SPRING)", &["/PROP/TYPE4/1", "/PROP/SPRING/1"], "axial springs: K, C, the force curve with hardening H = 0, 1, 2, 4, 5, 6, 7, 8 and its unloading curve, the rate terms A + B ln(δ̇/D) + E g(δ̇/F) and Hscale h(δ̇/F), failure bounds, Ileng (sensor refused)"),
+    s("/PROP/TYPE8 (/PROP/SPR_GENE)", &["/PROP/TYPE8/1", "/PROP/SPR_GENE/1"], "general springs: six degrees of freedom in the global frame, each with the TYPE4 law; Ifail 0/1 (Fsmooth filter), Ifail2 0/1 (skew, Iequil 1, Ifail2 2, sensor refused)"),
+    s("/PROP/TYPE13 (/PROP/SPR_BEAM)", &["/PROP/TYPE13/1", "/PROP/SPR_BEAM/1"], "spring beams: tension, shears, torsion and bendings in the element's frame, each with the TYPE4 law, shear balanced by end moments; Ifail 0/1, Ifail2 0/2, Ileng (skew, Ifail2 1/3, sensor refused)"),
     s("/DEF_SHELL, /DEF_SOLID", &["/DEF_SHELL", "/DEF_SOLID"], "defaults for shell and solid sections"),
     s("/FUNCT", &["/FUNCT/1"], "tabulated functions"),
     s("/ADMAS", &["/ADMAS/0/1", "/ADMAS/1/1"], "added mass, types 0 (per node) and 1 (shared)"),
@@ -102,6 +103,7 @@ pub const SUPPORTED: &[Supported] = &[
     s("/IMPVEL, /IMPDISP", &["/IMPVEL/1", "/IMPDISP/1"], "imposed velocities and displacements (skew, sensor, frame, cylindrical and rotations refused)"),
     s("/INIVEL/TRA, /INIVEL/ROT", &["/INIVEL/TRA/1", "/INIVEL/ROT/1"], "initial velocities"),
     s("/CLOAD, /GRAV", &["/CLOAD/1", "/GRAV/1"], "concentrated loads and gravity (skew and sensor refused)"),
+    s("/DAMP", &["/DAMP/1"], "Rayleigh damping of a node group: α, β for every degree of freedom or one pair each, Tstart, Tstop; its work in the external work, the time step reduced (skew refused; /DAMP/INTER, VREL, FREQ_RANGE not read)"),
     s("/RWALL/PLANE", &["/RWALL/PLANE/1"], "rigid walls: fixed, moving with their node, or free with their own mass; friction"),
     s("/RBODY", &["/RBODY/1"], "rigid bodies; surf_ID: the /SURF/ELLIPS the body carries (sensor, skew, IKREM and other surfaces refused)"),
     s("/SECT", &["/SECT/1"], "read; its forces are not written yet (an output request: it changes nothing in the solution)"),
@@ -124,6 +126,7 @@ pub const SUPPORTED: &[Supported] = &[
     e("/TFILE", &["/TFILE/4"], "time-history period (0: every cycle)"),
     e("/RFILE", &["/RFILE/1", "/RFILE/OFF"], "restart file period"),
     e("/STOP", &["/STOP"], "Emax energy-error stop, NTH/NANIM checks"),
+    e("/DAMP", &["/DAMP/1"], "new α, β for a starter /DAMP from this run on"),
     e("/PARITH, /MON, /VERS, /PROC, /TITLE", &["/PARITH/ON", "/MON/ON", "/VERS/2019", "/PROC/1", "/TITLE"], "read; results are the same on any number of ranks and threads anyway"),
 ];
 
@@ -200,7 +203,7 @@ mod tests {
         for h in [
             "/MAT/LAW44/1",
             "/INTER/TYPE19/1",
-            "/PROP/TYPE8/1",
+            "/PROP/TYPE45/1",
             "/RWALL/CYL/1",
         ] {
             assert!(

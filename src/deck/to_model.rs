@@ -164,6 +164,7 @@ fn build(deck: &Deck) -> Result<Model, InputError> {
         initial_velocities: conditions.initial_velocities,
         concentrated_loads: conditions.concentrated_loads,
         gravity: conditions.gravity,
+        dampings: conditions.dampings,
         rigid_walls,
         rigid_bodies: Vec::new(),
         interfaces,
@@ -362,16 +363,19 @@ impl Refs<'_> {
         Ok(())
     }
 
-    /// The functions a spring property names must be defined.
+    /// The functions and skews a spring property names must be defined.
     fn check_spring_functions(&self, properties: &[Property]) -> Result<(), InputError> {
         for p in properties {
-            if let PropertyKind::Spring(s) = &p.card.kind {
-                for (f, name) in [
-                    (s.fct_id1, "fct_ID1"),
-                    (s.fct_id2, "fct_ID2"),
-                    (s.fct_id3, "fct_ID3"),
-                ] {
-                    self.check_fct(f, &p.card.loc, &format!("/PROP/SPRING/{}", p.card.id), name)?;
+            let (kw, dofs): (&str, &[SpringDof]) = match &p.card.kind {
+                PropertyKind::Spring(s) => ("SPRING", std::slice::from_ref(&s.dof)),
+                PropertyKind::GeneralSpring(s) => ("SPR_GENE", &s.dofs),
+                PropertyKind::SpringBeam(s) => ("SPR_BEAM", &s.dofs),
+                _ => continue,
+            };
+            let kw = format!("/PROP/{kw}/{}", p.card.id);
+            for d in dofs {
+                for (name, f) in d.functions() {
+                    self.check_fct(f, &p.card.loc, &kw, name)?;
                 }
             }
         }
@@ -405,6 +409,7 @@ struct Conditions {
     initial_velocities: Vec<InitialVelocity>,
     concentrated_loads: Vec<ConcentratedLoad>,
     gravity: Vec<Gravity>,
+    dampings: Vec<Damping>,
 }
 
 fn read_conditions(deck: &Deck, refs: &Refs, n_nodes: usize) -> Result<Conditions, InputError> {
@@ -447,8 +452,21 @@ fn read_conditions(deck: &Deck, refs: &Refs, n_nodes: usize) -> Result<Condition
             card: c.clone(),
         });
     }
+    let mut dampings = Vec::new();
+    for c in &deck.dampings {
+        let nodes = if c.grnod == 0 {
+            (0..n_nodes as u32).collect()
+        } else {
+            refs.group(c.grnod, &c.loc, &format!("/DAMP/{}", c.id), "grnod_ID")?
+        };
+        dampings.push(OnNodes {
+            nodes,
+            card: c.clone(),
+        });
+    }
     Ok(Conditions {
         bcs,
+        dampings,
         imposed_velocities,
         imposed_displacements,
         initial_velocities,
@@ -880,7 +898,14 @@ fn add_element(
     let ok = match (kind, prop.map(|p| &p.card.kind)) {
         (ElementKind::Shell4 | ElementKind::Shell3, Some(PropertyKind::Shell(_))) => true,
         (ElementKind::Brick8 | ElementKind::Tetra4, Some(PropertyKind::Solid(_))) => true,
-        (ElementKind::Spring, Some(PropertyKind::Spring(_) | PropertyKind::SpringBeam(_))) => true,
+        (
+            ElementKind::Spring,
+            Some(
+                PropertyKind::Spring(_)
+                | PropertyKind::GeneralSpring(_)
+                | PropertyKind::SpringBeam(_),
+            ),
+        ) => true,
         (ElementKind::Truss | ElementKind::Beam, _) => true,
         _ => false,
     };

@@ -12,4 +12,7 @@ pub mod hex8;
 pub mod shell3;
 pub mod shell4;
 pub mod spring;
+pub mod spring_beam;
+pub mod spring_general;
+pub mod spring_law;
 pub mod tet4;

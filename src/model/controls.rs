@@ -72,6 +72,8 @@ pub struct Engine {
     /// /STOP: Emax, Mmax, Nmax, NTH, NANIM, NERR_POSIT.
     pub stop: Option<StopSpec>,
     pub title: Option<String>,
+    /// /DAMP: new coefficients for starter /DAMP cards.
+    pub dampings: Vec<super::DampingOverride>,
     pub loc: Loc,
 }
 
@@ -97,6 +99,7 @@ impl Default for Engine {
             proc_: Vec::new(),
             stop: None,
             title: None,
+            dampings: Vec::new(),
             loc: Loc::default(),
         }
     }

@@ -88,6 +88,34 @@ pub struct ConcentratedLoadSpec {
     pub loc: Loc,
 }
 
+/// /DAMP: Rayleigh damping of a node group, mass-proportional α and
+/// stiffness-proportional β per degree of freedom (X, Y, Z, XX, YY, ZZ),
+/// active from Tstart to Tstop (reference guide /DAMP; research note
+/// `docs/notes/springs_research.md` §5).
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct DampingSpec {
+    pub id: Id,
+    pub title: String,
+    pub alpha: [f64; 6],
+    pub beta: [f64; 6],
+    /// 0 = every node.
+    pub grnod: Id,
+    pub skew_id: Id,
+    pub tstart: f64,
+    pub tstop: f64,
+    pub loc: Loc,
+}
+
+/// An engine-file /DAMP: new coefficients for the starter's /DAMP of the
+/// same id from this run on.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct DampingOverride {
+    pub id: Id,
+    pub alpha: [f64; 6],
+    pub beta: [f64; 6],
+    pub loc: Loc,
+}
+
 /// /GRAV: acceleration Fscale_y · f(t / Ascale_x) (constant Fscale_y if fct_ID = 0).
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct GravitySpec {

@@ -21,7 +21,7 @@
 
 use super::geometry::{hexa_volume, quad_area, tetra_volume, triangle_area};
 use super::{ElementSet, Model, NO_NODE};
-use crate::model::{ElementKind, InputError, Loc, PropertyKind};
+use crate::model::{ElementKind, InputError, Loc};
 use serde::{Deserialize, Serialize};
 
 #[derive(Clone, Debug, Default, Serialize, Deserialize)]
@@ -100,15 +100,26 @@ pub fn element_masses(
         let m = match set.kind {
             ElementKind::Shell4 | ElementKind::Shell3 => rho * set.thick[e] * measure,
             ElementKind::Brick8 | ElementKind::Tetra4 => rho * measure,
-            _ => match part.prop.map(|p| &model.properties[p as usize].card.kind) {
-                Some(PropertyKind::Spring(s)) => s.mass,
-                Some(PropertyKind::SpringBeam(s)) => s.mass,
-                _ => 0.0,
-            },
+            _ => spring_mass(model, set, e).0,
         };
         out.push(m);
     }
     Ok(out)
+}
+
+/// A spring element's mass and rotational inertia (its property's; 0 for
+/// the other elements).
+fn spring_mass(model: &Model, set: &ElementSet, e: usize) -> (f64, f64) {
+    if set.kind != ElementKind::Spring {
+        return (0.0, 0.0);
+    }
+    let n = set.nodes_of(e);
+    let x = |k: usize| model.nodes.x[n[k] as usize];
+    let l0 = crate::vec3::norm(crate::vec3::sub(x(1), x(0)));
+    model.parts[set.part[e] as usize]
+        .prop
+        .and_then(|p| model.properties[p as usize].card.kind.spring_mass(l0))
+        .unwrap_or((0.0, 0.0))
 }
 
 /// Share of an element's mass each node slot gets.
@@ -138,6 +149,7 @@ pub fn lump(model: &mut Model, masses: &[Vec<f64>]) {
                 _ => set.nodes_of(e),
             };
             let rot_per_mass = shell_rotational_factor(model, set, e);
+            let spring_inertia = 0.5 * spring_mass(model, set, e).1;
             let corners = (set.kind == ElementKind::Shell3).then(|| corner_shares(model, slots));
             for (i, &n) in slots.iter().enumerate() {
                 if n == NO_NODE {
@@ -148,6 +160,10 @@ pub fn lump(model: &mut Model, masses: &[Vec<f64>]) {
                 if rot_per_mass > 0.0 {
                     model.nodal_inertia[n as usize] += dm * rot_per_mass;
                     rot[p] += dm * rot_per_mass;
+                }
+                if spring_inertia > 0.0 {
+                    model.nodal_inertia[n as usize] += spring_inertia;
+                    rot[p] += spring_inertia;
                 }
                 let x = model.nodes.x[n as usize];
                 m[p] += dm;

@@ -224,6 +224,7 @@ pub type ImposedMotion = OnNodes<ImposedMotionSpec>;
 pub type InitialVelocity = OnNodes<InitialVelocitySpec>;
 pub type ConcentratedLoad = OnNodes<ConcentratedLoadSpec>;
 pub type Gravity = OnNodes<GravitySpec>;
+pub type Damping = OnNodes<DampingSpec>;
 
 /// The model: what every later stage reads.
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -247,6 +248,7 @@ pub struct Model {
     pub initial_velocities: Vec<InitialVelocity>,
     pub concentrated_loads: Vec<ConcentratedLoad>,
     pub gravity: Vec<Gravity>,
+    pub dampings: Vec<Damping>,
     pub rigid_walls: Vec<RigidWall>,
     pub rigid_bodies: Vec<RigidBody>,
     pub interfaces: Vec<Interface>,

@@ -22,7 +22,23 @@ pub enum PropertyKind {
     Shell(ShellProperty),
     Solid(SolidProperty),
     Spring(SpringProperty),
+    GeneralSpring(GeneralSpringProperty),
     SpringBeam(SpringBeamProperty),
+}
+
+impl PropertyKind {
+    /// A spring's mass and rotational inertia (each node takes half); with
+    /// Ileng = 1 they are per unit of the initial length `l0`. None for the
+    /// other properties.
+    pub fn spring_mass(&self, l0: f64) -> Option<(f64, f64)> {
+        let per = |ileng: i64| if ileng == 1 { l0 } else { 1.0 };
+        match self {
+            PropertyKind::Spring(s) => Some((s.mass * per(s.ileng), 0.0)),
+            PropertyKind::GeneralSpring(s) => Some((s.mass, s.inertia)),
+            PropertyKind::SpringBeam(s) => Some((s.mass * per(s.ileng), s.inertia * per(s.ileng))),
+            _ => None,
+        }
+    }
 }
 
 /// /PROP/TYPE1 (/PROP/SHELL), as written (0 = default).
@@ -71,34 +87,109 @@ pub struct SolidProperty {
     pub istrain: i64,
 }
 
-/// /PROP/TYPE4 (/PROP/SPRING): axial spring, linear or through functions.
+/// One degree of freedom of a spring property: the three cards
+/// `K C A B D` / `fct_ID1 H fct_ID2 fct_ID3 fct_ID4 δmin δmax` /
+/// `F E Ascale Hscale` shared by /PROP/TYPE4, TYPE8 and TYPE13 (reference
+/// guide /PROP/TYPE4; research note `docs/notes/springs_research.md` §1.1),
+/// with the reader's defaults applied: A, D, F, E, Ascale, Hscale 0 → 1;
+/// without fct_ID1 A = 1, B = 0, E = 0; a δ bound 0 → none (±∞).
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct SpringDof {
+    pub k: f64,
+    pub c: f64,
+    pub a: f64,
+    pub b: f64,
+    pub d: f64,
+    /// Force (or moment) versus displacement: loading curve.
+    pub fct_id1: Id,
+    /// Hardening flag H (0 elastic, 1 isotropic, 2 uncoupled, 4 kinematic,
+    /// 5 nonlinear unloading, 6 isotropic with nonlinear unloading, 7
+    /// elastic hysteresis, 8 function of the length).
+    pub h: i64,
+    /// g(δ̇/F), scaled by E.
+    pub fct_id2: Id,
+    /// Unloading, lower yield or residual-displacement curve (H = 4-7).
+    pub fct_id3: Id,
+    /// h(δ̇/F), scaled by Hscale.
+    pub fct_id4: Id,
+    pub delta_min: f64,
+    pub delta_max: f64,
+    /// Velocity scale F of g and h.
+    pub fscale: f64,
+    pub e: f64,
+    pub ascale: f64,
+    pub hscale: f64,
+}
+
+impl SpringDof {
+    /// A linear spring and dashpot with no function and no failure.
+    pub fn linear(k: f64, c: f64) -> Self {
+        SpringDof {
+            k,
+            c,
+            a: 1.0,
+            b: 0.0,
+            d: 1.0,
+            fct_id1: 0,
+            h: 0,
+            fct_id2: 0,
+            fct_id3: 0,
+            fct_id4: 0,
+            delta_min: f64::NEG_INFINITY,
+            delta_max: f64::INFINITY,
+            fscale: 1.0,
+            e: 0.0,
+            ascale: 1.0,
+            hscale: 1.0,
+        }
+    }
+
+    /// The functions it names: (field, id), ids 0 left out.
+    pub fn functions(&self) -> impl Iterator<Item = (&'static str, Id)> {
+        [
+            ("fct_ID1", self.fct_id1),
+            ("fct_ID2", self.fct_id2),
+            ("fct_ID3", self.fct_id3),
+            ("fct_ID4", self.fct_id4),
+        ]
+        .into_iter()
+        .filter(|(_, id)| *id != 0)
+    }
+}
+
+/// /PROP/TYPE4 (/PROP/SPRING): axial spring, one degree of freedom.
 #[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
 pub struct SpringProperty {
     pub mass: f64,
     pub sens_id: Id,
     pub isflag: i64,
     pub ileng: i64,
-    pub k: f64,
-    pub c: f64,
-    pub a: f64,
-    pub b: f64,
-    pub d: f64,
-    pub fct_id1: Id,
-    pub h: i64,
-    pub fct_id2: Id,
-    pub fct_id3: Id,
-    /// Failure elongations (0 → none).
-    pub delta_min: f64,
-    pub delta_max: f64,
-    pub fscale: f64,
-    pub e: f64,
-    pub ascale: f64,
+    pub dof: SpringDof,
 }
 
-/// /PROP/TYPE13 (/PROP/SPR_BEAM): six-degree-of-freedom spring beam.
-/// Read: mass, inertia and per-direction K, C (six blocks of three cards:
-/// K C A B D / fct_ID1 H fct_ID2 fct_ID3 fct_ID4 δmin δmax / F E Ascale Hscale).
-/// The function and scale cards are not interpreted yet.
+/// /PROP/TYPE8 (/PROP/SPR_GENE): general spring, six degrees of freedom
+/// (X, Y, Z, RX, RY, RZ of its skew) each with its own [`SpringDof`].
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct GeneralSpringProperty {
+    pub mass: f64,
+    pub inertia: f64,
+    pub skew_id: Id,
+    pub sens_id: Id,
+    pub isflag: i64,
+    /// 0: uni-directional failure; 1: multi-directional Σ(δ/δlim)² > 1.
+    pub ifail: i64,
+    /// What the failure bounds limit: 0 displacement, 1 force, 2 energy.
+    pub ifail2: i64,
+    pub iequil: i64,
+    pub dofs: [SpringDof; 6],
+    /// Filter of the multi-directional criterion (Fsmooth ≠ 0: on, Fcut).
+    pub fsmooth: i64,
+    pub fcut: f64,
+}
+
+/// /PROP/TYPE13 (/PROP/SPR_BEAM): spring beam, six degrees of freedom in a
+/// frame that follows the element (tension, shear XY, shear XZ, torsion,
+/// bending Y, bending Z).
 #[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
 pub struct SpringBeamProperty {
     pub mass: f64,
@@ -108,10 +199,13 @@ pub struct SpringBeamProperty {
     pub isflag: i64,
     pub ifail: i64,
     pub ileng: i64,
-    /// Stiffness per direction (tension, shear s, shear t, torsion, bending y, bending z).
-    pub k: [f64; 6],
-    /// Damping per direction.
-    pub c: [f64; 6],
+    pub ifail2: i64,
+    pub dofs: [SpringDof; 6],
+    /// Reference velocities of the velocity-dependent failure (Ifail2 = 1).
+    pub v0: f64,
+    pub omega0: f64,
+    /// Per direction: c, n, α, β of the failure criterion.
+    pub fail: [[f64; 4]; 6],
 }
 
 /// /DEF_SHELL: global shell defaults (used where a /PROP/SHELL field is 0).

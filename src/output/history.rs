@@ -42,7 +42,7 @@ use super::{Context, LoopState};
 use crate::element::blocks::Block;
 use crate::global::GlobalData;
 use crate::model::geometry::{hexa_volume, quad_area, tetra_volume, triangle_area};
-use crate::model::{ElementKind, PropertyKind};
+use crate::model::ElementKind;
 use crate::parallel::exact_sum::{sum_over_ranks, ExactSum};
 use serde::{Deserialize, Serialize};
 
@@ -190,11 +190,15 @@ pub(crate) fn element_masses(g: &GlobalData, x0: &[[f64; 3]], b: &dyn Block) -> 
                 ElementKind::Shell3 => rho * le.thick[e] * triangle_area([p(0), p(1), p(2)]),
                 ElementKind::Brick8 => rho * hexa_volume(std::array::from_fn(p)),
                 ElementKind::Tetra4 => rho * tetra_volume([p(0), p(1), p(2), p(3)]),
-                _ => match part.prop.map(|q| &g.properties[q as usize].card.kind) {
-                    Some(PropertyKind::Spring(s)) => s.mass,
-                    Some(PropertyKind::SpringBeam(s)) => s.mass,
-                    _ => 0.0,
-                },
+                _ => part
+                    .prop
+                    .and_then(|q| {
+                        g.properties[q as usize]
+                            .card
+                            .kind
+                            .spring_mass(crate::vec3::norm(crate::vec3::sub(p(1), p(0))))
+                    })
+                    .map_or(0.0, |(m, _)| m),
             }
         })
         .collect()

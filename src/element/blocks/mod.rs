@@ -26,7 +26,7 @@ pub use hex8::Hex8Block;
 pub use registry::make_block;
 pub use shell3::Shell3Block;
 pub use shell4_bt::Shell4Block;
-pub use spring::SpringBlock;
+pub use spring::{SpringBlock, SpringKernel};
 pub use tet4::Tet4Block;
 
 use super::SLOT;

@@ -78,7 +78,21 @@ pub const FORMULATIONS: &[Formulation] = &[
         flag: "/PROP/TYPE",
         numbers: &[4],
         name: "axial spring",
-        build: spring::build,
+        build: spring::build_axial,
+    },
+    Formulation {
+        kind: ElementKind::Spring,
+        flag: "/PROP/TYPE",
+        numbers: &[8],
+        name: "general spring (six degrees of freedom)",
+        build: spring::build_general,
+    },
+    Formulation {
+        kind: ElementKind::Spring,
+        flag: "/PROP/TYPE",
+        numbers: &[13],
+        name: "spring beam",
+        build: spring::build_beam,
     },
 ];
 
@@ -142,8 +156,10 @@ fn formulation_number(
             let prop = &props[part.prop.ok_or("spring part without property")? as usize];
             match prop.card.kind {
                 PropertyKind::Spring(_) => Ok(4),
+                PropertyKind::GeneralSpring(_) => Ok(8),
+                PropertyKind::SpringBeam(_) => Ok(13),
                 _ => Err(format!(
-                    "/PROP/{}: only /PROP/TYPE4 springs are computed by the engine yet",
+                    "/PROP/{}: a spring part needs a spring property (/PROP/TYPE4, TYPE8 or TYPE13)",
                     prop.card.id
                 )),
             }

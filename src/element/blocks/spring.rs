@@ -1,30 +1,99 @@
-//! Axial springs (Radioss /PROP/TYPE4; kernel in `crate::element::spring`).
+//! Springs: one block per spring property type (/PROP/TYPE4 axial,
+//! TYPE8 general, TYPE13 spring beam), each over its kernel in
+//! `crate::element` (`spring`, `spring_general`, `spring_beam`).
 
 use super::common::{decode_state, gather, settle_common};
 use super::{Block, BlockInput, ElemOut, ElemRow, ElemStep};
 use crate::domain::LocalElements;
-use crate::element::spring::{self, SpringState};
+use crate::element::spring::{AxialSpring, SpringOut, SpringState};
+use crate::element::spring_beam::SpringBeam;
+use crate::element::spring_general::GeneralSpring;
 use crate::element::SLOT;
-use crate::model::{ElementKind, Function, PropertyKind, SpringProperty};
-use crate::model::{Part, Property};
+use crate::model::{ElementKind, Function, Part, Property, PropertyKind};
 use rayon::prelude::*;
 use std::collections::HashMap;
 
-pub struct SpringBlock {
+/// What a spring kernel needs of one element at one step.
+pub struct SpringIn<'a> {
+    pub x: &'a [[f64; 3]; 2],
+    pub v: &'a [[f64; 3]; 2],
+    pub vr: &'a [[f64; 3]; 2],
+    pub l0: f64,
+    pub dt: f64,
+    pub masses: [f64; 2],
+}
+
+/// One spring property type's kernel.
+pub trait SpringKernel: Send + Sync + Sized + 'static {
+    /// The kernel of a property, or why it is not computed.
+    fn of(prop: &Property, functions: &[Function]) -> Result<Self, String>;
+    fn init(x: &[[f64; 3]; 2]) -> SpringState;
+    fn step(&self, i: SpringIn, st: &mut SpringState) -> SpringOut;
+}
+
+fn wrong_type(prop: &Property) -> String {
+    format!("/PROP/{}: not a spring property of this type", prop.card.id)
+}
+
+impl SpringKernel for AxialSpring {
+    fn of(prop: &Property, functions: &[Function]) -> Result<Self, String> {
+        let PropertyKind::Spring(s) = &prop.card.kind else {
+            return Err(wrong_type(prop));
+        };
+        AxialSpring::new(s, functions).map_err(|e| format!("/PROP/SPRING/{}: {e}", prop.card.id))
+    }
+    fn init(x: &[[f64; 3]; 2]) -> SpringState {
+        AxialSpring::init(x)
+    }
+    fn step(&self, i: SpringIn, st: &mut SpringState) -> SpringOut {
+        AxialSpring::step(self, i.x, i.v, i.l0, i.dt, i.masses, st)
+    }
+}
+
+impl SpringKernel for GeneralSpring {
+    fn of(prop: &Property, functions: &[Function]) -> Result<Self, String> {
+        let PropertyKind::GeneralSpring(s) = &prop.card.kind else {
+            return Err(wrong_type(prop));
+        };
+        GeneralSpring::new(s, functions)
+            .map_err(|e| format!("/PROP/SPR_GENE/{}: {e}", prop.card.id))
+    }
+    fn init(x: &[[f64; 3]; 2]) -> SpringState {
+        GeneralSpring::init(x)
+    }
+    fn step(&self, i: SpringIn, st: &mut SpringState) -> SpringOut {
+        GeneralSpring::step(self, i.x, i.vr, i.dt, st)
+    }
+}
+
+impl SpringKernel for SpringBeam {
+    fn of(prop: &Property, functions: &[Function]) -> Result<Self, String> {
+        let PropertyKind::SpringBeam(s) = &prop.card.kind else {
+            return Err(wrong_type(prop));
+        };
+        SpringBeam::new(s, functions).map_err(|e| format!("/PROP/SPR_BEAM/{}: {e}", prop.card.id))
+    }
+    fn init(x: &[[f64; 3]; 2]) -> SpringState {
+        SpringBeam::init(x)
+    }
+    fn step(&self, i: SpringIn, st: &mut SpringState) -> SpringOut {
+        SpringBeam::step(self, i.x, i.v, i.vr, i.l0, i.dt, st)
+    }
+}
+
+pub struct SpringBlock<K: SpringKernel> {
     le: LocalElements,
-    props: Vec<SpringProperty>,
-    fcts: Vec<Option<Function>>,
-    prop_of: Vec<u16>,
+    kernels: Vec<K>,
+    kernel_of: Vec<u16>,
     l0: Vec<f64>,
     state: Vec<SpringState>,
     alive: Vec<bool>,
     steps: Vec<ElemStep>,
-    /// Nodal masses of each spring's two nodes, for its time step.
+    /// Nodal masses of each spring's two nodes (the step of a massless spring).
     masses: Vec<[f64; 2]>,
 }
 
-impl SpringBlock {
-    #[allow(clippy::too_many_arguments)]
+impl<K: SpringKernel> SpringBlock<K> {
     pub fn new(
         le: LocalElements,
         x: &[[f64; 3]],
@@ -33,50 +102,29 @@ impl SpringBlock {
         props: &[Property],
         functions: &[Function],
     ) -> Result<Self, String> {
-        let mut sp = Vec::new();
-        let mut fcts = Vec::new();
+        let mut kernels = Vec::new();
         let mut of_part: HashMap<u32, u16> = HashMap::new();
-        let mut prop_of = Vec::new();
+        let mut kernel_of = Vec::new();
         for &p in &le.part {
-            let s = match of_part.get(&p) {
-                Some(&s) => s,
+            let k = match of_part.get(&p) {
+                Some(&k) => k,
                 None => {
                     let part = &parts[p as usize];
                     let prop = &props[part.prop.ok_or("spring part without property")? as usize];
-                    let PropertyKind::Spring(s) = &prop.card.kind else {
-                        return Err(format!(
-                            "/PROP/{}: only /PROP/TYPE4 springs are computed by the engine yet",
-                            prop.card.id
-                        ));
-                    };
-                    let f1 = if s.fct_id1 == 0 {
-                        None
-                    } else {
-                        functions.iter().find(|f| f.id == s.fct_id1).cloned()
-                    };
-                    spring::spring_check(s, f1.as_ref())
-                        .map_err(|e| format!("/PROP/SPRING/{}: {e}", prop.card.id))?;
-                    sp.push(s.clone());
-                    fcts.push(f1);
-                    of_part.insert(p, (sp.len() - 1) as u16);
-                    (sp.len() - 1) as u16
+                    kernels.push(K::of(prop, functions)?);
+                    of_part.insert(p, (kernels.len() - 1) as u16);
+                    (kernels.len() - 1) as u16
                 }
             };
-            prop_of.push(s);
+            kernel_of.push(k);
         }
         let n = le.global.len();
-        let l0 = (0..n)
-            .map(|e| {
-                let a = gather::<2>(&le, e, x);
-                ((a[1][0] - a[0][0]).powi(2)
-                    + (a[1][1] - a[0][1]).powi(2)
-                    + (a[1][2] - a[0][2]).powi(2))
-                .sqrt()
-            })
+        let corners: Vec<[[f64; 3]; 2]> = (0..n).map(|e| gather::<2>(&le, e, x)).collect();
+        let l0 = corners
+            .iter()
+            .map(|a| crate::vec3::norm(crate::vec3::sub(a[1], a[0])))
             .collect();
-        let state = (0..n)
-            .map(|e| spring::spring_init(&gather::<2>(&le, e, x)))
-            .collect();
+        let state = corners.iter().map(K::init).collect();
         let masses = (0..n)
             .map(|e| {
                 [
@@ -87,9 +135,8 @@ impl SpringBlock {
             .collect();
         Ok(SpringBlock {
             le,
-            props: sp,
-            fcts,
-            prop_of,
+            kernels,
+            kernel_of,
             l0,
             state,
             alive: vec![true; n],
@@ -99,7 +146,7 @@ impl SpringBlock {
     }
 }
 
-impl Block for SpringBlock {
+impl<K: SpringKernel> Block for SpringBlock<K> {
     fn kind(&self) -> ElementKind {
         ElementKind::Spring
     }
@@ -113,15 +160,14 @@ impl Block for SpringBlock {
         &mut self,
         x: &[[f64; 3]],
         v: &[[f64; 3]],
-        _vr: &[[f64; 3]],
+        vr: &[[f64; 3]],
         dt: f64,
         contrib: &mut [[f64; SLOT]],
     ) {
-        let (le, props, fcts, prop_of, l0, masses) = (
+        let (le, kernels, kernel_of, l0, masses) = (
             &self.le,
-            &self.props,
-            &self.fcts,
-            &self.prop_of,
+            &self.kernels,
+            &self.kernel_of,
             &self.l0,
             &self.masses,
         );
@@ -140,31 +186,25 @@ impl Block for SpringBlock {
                     };
                     return;
                 }
-                let p = prop_of[e] as usize;
-                let o = spring::spring_step(
-                    &props[p],
-                    fcts[p].as_ref(),
-                    &gather::<2>(le, e, x),
-                    &gather::<2>(le, e, v),
-                    l0[e],
-                    dt,
-                    st,
-                );
-                for k in 0..2 {
-                    c[k] = [o.f[k][0], o.f[k][1], o.f[k][2], 0.0, 0.0, 0.0];
-                }
-                // Two masses on a spring: ω² = k(1/m1 + 1/m2), Δt = (2/ω)(√(1+ξ²) − ξ).
-                let [m1, m2] = masses[e];
-                let dt_e = if o.k_eff > 0.0 && m1 > 0.0 && m2 > 0.0 {
-                    let mu = m1 * m2 / (m1 + m2);
-                    let w = (o.k_eff / mu).sqrt();
-                    let xi = o.c_eff / (2.0 * (o.k_eff * mu).sqrt());
-                    (2.0 / w) * ((1.0 + xi * xi).sqrt() - xi)
+                let (xe, ve) = (gather::<2>(le, e, x), gather::<2>(le, e, v));
+                let we = if vr.is_empty() {
+                    [[0.0; 3]; 2]
                 } else {
-                    f64::INFINITY
+                    gather::<2>(le, e, vr)
                 };
+                let input = SpringIn {
+                    x: &xe,
+                    v: &ve,
+                    vr: &we,
+                    l0: l0[e],
+                    dt,
+                    masses: masses[e],
+                };
+                let o = kernels[kernel_of[e] as usize].step(input, st);
+                c[0] = o.f[0];
+                c[1] = o.f[1];
                 *out = ElemStep {
-                    dt: dt_e,
+                    dt: o.dt,
                     failed: o.failed,
                     bad: false,
                 };
@@ -182,17 +222,11 @@ impl Block for SpringBlock {
     fn rows(&self) -> Vec<ElemRow> {
         (0..self.le.global.len())
             .map(|e| {
+                let s = &self.state[e];
+                let deleted = if self.alive[e] { 0.0 } else { 1.0 };
                 (
                     self.le.global[e],
-                    [
-                        self.state[e].force,
-                        0.0,
-                        0.0,
-                        0.0,
-                        0.0,
-                        self.state[e].eint,
-                        if self.alive[e] { 0.0 } else { 1.0 },
-                    ],
+                    [s.force(), 0.0, 0.0, 0.0, 0.0, s.eint, deleted],
                 )
             })
             .collect()
@@ -202,7 +236,7 @@ impl Block for SpringBlock {
             .iter()
             .zip(&self.alive)
             .map(|(s, &alive)| ElemOut {
-                von_mises: s.force.abs(),
+                von_mises: s.force().abs(),
                 eps_p: 0.0,
                 thick: 0.0,
                 eint: s.eint,
@@ -223,9 +257,8 @@ impl Block for SpringBlock {
     }
 }
 
-/// The registry's builder for this formulation.
-pub(super) fn build(input: BlockInput) -> Result<Box<dyn Block>, String> {
-    Ok(Box::new(SpringBlock::new(
+fn build<K: SpringKernel>(input: BlockInput) -> Result<Box<dyn Block>, String> {
+    Ok(Box::new(SpringBlock::<K>::new(
         input.le,
         input.x,
         input.mass,
@@ -233,4 +266,17 @@ pub(super) fn build(input: BlockInput) -> Result<Box<dyn Block>, String> {
         input.props,
         input.functions,
     )?))
+}
+
+/// The registry's builders, one per property type.
+pub(super) fn build_axial(input: BlockInput) -> Result<Box<dyn Block>, String> {
+    build::<AxialSpring>(input)
+}
+
+pub(super) fn build_general(input: BlockInput) -> Result<Box<dyn Block>, String> {
+    build::<GeneralSpring>(input)
+}
+
+pub(super) fn build_beam(input: BlockInput) -> Result<Box<dyn Block>, String> {
+    build::<SpringBeam>(input)
 }

@@ -17,9 +17,10 @@ pub(super) fn velocities(cx: &Ctx, s: &mut State, dt_v: f64) {
         .iter()
         .map(|(nodes, _)| nodes.iter().map(|&l| s.v[l as usize]).collect())
         .collect();
+    let prior = imposed_prior(cx, s);
     accelerate(cx, s, dt_v);
     rigid_bodies(cx, s, dt_v);
-    imposed_motion(cx, s);
+    imposed_motion(cx, s, &prior);
     rigid_walls(cx, s, &before);
     boundary_conditions(s);
     // Tied secondary nodes follow their main nodes (after every other condition).
@@ -57,29 +58,37 @@ fn tied_transfer(cx: &Ctx, s: &mut State) {
     }
 }
 
-/// Accelerations and velocities at n+½.
+/// Accelerations (damped where a /DAMP asks) and velocities at n+½.
 fn accelerate(cx: &Ctx, s: &mut State, dt_v: f64) {
     let (mass, inertia) = (&cx.mass, &cx.inertia);
     for l in 0..cx.n {
         if cx.is_main[l] {
             continue;
         }
-        if mass[l] > 0.0 && !cx.tied_tr[l] {
-            for k in 0..3 {
-                if !s.fixed[l][k] {
-                    s.v[l][k] += (s.fext[l][k] - s.fint[l][k] + s.fcont[l][k] + s.ftie[l][k])
-                        / mass[l]
-                        * dt_v;
-                }
+        // Per degree of freedom: the mass that moves it (0: it does not move).
+        let mut m = [0.0; 6];
+        let mut a = [0.0; 6];
+        for k in 0..3 {
+            if mass[l] > 0.0 && !cx.tied_tr[l] && !s.fixed[l][k] {
+                m[k] = mass[l];
+                a[k] = (s.fext[l][k] - s.fint[l][k] + s.fcont[l][k] + s.ftie[l][k]) / mass[l];
+            }
+            if inertia[l] > 0.0 && !cx.tied_rot[l] && !s.fixed[l][3 + k] {
+                m[3 + k] = inertia[l];
+                a[3 + k] = (s.fext[l][3 + k] - s.fint[l][3 + k] + s.ftie[l][3 + k]) / inertia[l];
             }
         }
-        if inertia[l] > 0.0 && !cx.tied_rot[l] {
-            for k in 0..3 {
-                if !s.fixed[l][3 + k] {
-                    s.vr[l][k] += (s.fext[l][3 + k] - s.fint[l][3 + k] + s.ftie[l][3 + k])
-                        / inertia[l]
-                        * dt_v;
-                }
+        if cx.damp_of[l].is_some() && !cx.in_body[l] {
+            let (v, w) = (s.v[l], s.vr[l]);
+            let v6 = [v[0], v[1], v[2], w[0], w[1], w[2]];
+            super::damping::damp(cx, s, l, &mut a, v6, m, dt_v);
+        }
+        for k in 0..3 {
+            if m[k] > 0.0 {
+                s.v[l][k] += a[k] * dt_v;
+            }
+            if m[3 + k] > 0.0 {
+                s.vr[l][k] += a[3 + k] * dt_v;
             }
         }
     }
@@ -195,49 +204,80 @@ fn constrain_body(cx: &Ctx, s: &mut State, b: usize) {
     }
 }
 
+/// The velocity of every imposed degree of freedom before this step's
+/// acceleration (v^{n−½}), in the order `imposed_motion` visits them.
+fn imposed_prior(cx: &Ctx, s: &State) -> Vec<f64> {
+    let of = |l: u32, d: usize| {
+        let l = l as usize;
+        if d < 3 {
+            s.v[l][d]
+        } else {
+            s.vr[l][d - 3]
+        }
+    };
+    cx.impvel
+        .iter()
+        .chain(&cx.impdisp)
+        .flat_map(|(nodes, c)| nodes.iter().map(move |&l| of(l, c.card.dir.index())))
+        .collect()
+}
+
 /// Imposed velocities at t + ½Δt; imposed displacements: the velocity that
 /// reaches u(t + Δt) at the end of the step. The reaction that imposes
-/// them does work, counted as external work as Radioss counts it (EXT-WORK):
-/// f·v·Δt with f = m (v_imposed − v_free)/Δt, the velocity after the step,
-/// as for the loads and the rigid walls.
-fn imposed_motion(cx: &Ctx, s: &mut State) {
+/// them does work, counted as external work (EXT-WORK): f·v·Δt with
+/// f = m (v_imposed − v_free)/Δt and v the velocity after the step, as for
+/// the loads and the rigid walls, less ½m(v_imposed − v^{n−½})² where the
+/// imposed velocity jumps: a jump from v₀ to v₁ then does ½m(v₁² − v₀²),
+/// the kinetic energy it gives, as Radioss counts it (`prior`: the
+/// velocities before the step, from `imposed_prior`).
+fn imposed_motion(cx: &Ctx, s: &mut State, prior: &[f64]) {
     let (t, dt) = (s.t, s.dt);
     let th = t + 0.5 * dt;
+    let mut i = 0;
     for (nodes, c) in &cx.impvel {
-        let Some(val) = cx.imposed(c, th) else {
-            continue;
-        };
+        let val = cx.imposed(c, th);
         let d = c.card.dir.index();
         for &l in nodes {
-            impose(cx, s, l as usize, d, val);
+            if let Some(val) = val {
+                impose(cx, s, l as usize, d, val, prior[i]);
+            }
+            i += 1;
         }
     }
     for (nodes, c) in &cx.impdisp {
-        let Some(u) = cx.imposed(c, t + dt) else {
-            continue;
-        };
+        let u = cx.imposed(c, t + dt);
         let d = c.card.dir.index();
         for &l in nodes {
             let l = l as usize;
             // A rigid body's main node moves with its body (`constrain_body`).
-            if d < 3 && cx.is_main[l] {
-                continue;
+            if let Some(u) = u.filter(|_| d >= 3 || !cx.is_main[l]) {
+                impose(
+                    cx,
+                    s,
+                    l,
+                    d,
+                    (u - (s.x[l][d] - cx.sd.x[l][d])) / dt,
+                    prior[i],
+                );
             }
-            impose(cx, s, l, d, (u - (s.x[l][d] - cx.sd.x[l][d])) / dt);
+            i += 1;
         }
     }
 }
 
 /// Sets a node's velocity (d < 3) or rotational velocity (d − 3) to
-/// `val`; the reaction's work joins this rank's external work (owned nodes).
-fn impose(cx: &Ctx, s: &mut State, l: usize, d: usize, val: f64) {
+/// `val` (it was `before` at n−½); the reaction's work joins this rank's
+/// external work (owned nodes).
+fn impose(cx: &Ctx, s: &mut State, l: usize, d: usize, val: f64, before: f64) {
     let (slot, m) = if d < 3 {
         (&mut s.v[l][d], cx.mass[l])
     } else {
         (&mut s.vr[l][d - 3], cx.inertia[l])
     };
     if cx.owned[l] {
+        let jump = val - before;
         s.w_ext.add(m * (val - *slot) * val);
+        s.w_ext.add(-0.5 * m * jump * jump);
     }
     *slot = val;
 }

@@ -7,6 +7,7 @@
 //! contact at n+1), `time_step` (global minimum), then the listing
 //! (`report`), the output hooks (`crate::output`) and, at the end, `files`.
 
+mod damping;
 mod energy;
 mod files;
 mod forces;

@@ -229,6 +229,30 @@ fn check_supported(m: &Model) -> Result<(), String> {
             return unsupported("/GRAV with a skew system or sensor", &c.card.loc);
         }
     }
+    for c in &m.dampings {
+        if c.card.skew_id != 0 {
+            return unsupported("/DAMP with a skew system", &c.card.loc);
+        }
+    }
+    for o in m.engine.iter().flat_map(|e| &e.dampings) {
+        if !m.dampings.iter().any(|d| d.card.id == o.id) {
+            return Err(format!(
+                "{}: /DAMP/{}: no starter /DAMP has this id (the engine file changes the coefficients of a starter /DAMP)",
+                o.loc, o.id
+            ));
+        }
+    }
+    let mut damped = std::collections::HashMap::new();
+    for c in &m.dampings {
+        for &n in &c.nodes {
+            if let Some(first) = damped.insert(n, c.card.id) {
+                return Err(format!(
+                    "{}: /DAMP/{}: node {} is in /DAMP/{first} too: a node takes one /DAMP",
+                    c.card.loc, c.card.id, m.nodes.ids[n as usize]
+                ));
+            }
+        }
+    }
     for r in &m.rigid_bodies {
         if r.card.sens_id != 0 || r.card.skew_id != 0 || r.card.ikrem != 0 {
             return unsupported("/RBODY with a sensor, skew or IKREM", &r.card.loc);

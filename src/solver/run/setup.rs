@@ -75,6 +75,8 @@ pub(super) struct Ctx<'a> {
     pub impvel: OnLocal<'a, model::ImposedMotion>,
     pub cloads: OnLocal<'a, model::ConcentratedLoad>,
     pub gravity: OnLocal<'a, model::Gravity>,
+    /// Which /DAMP damps each local node (`super::damping`).
+    pub damp_of: Vec<Option<u16>>,
     pub fct_index: HashMap<u64, usize>,
     /// Each block's first slot in the element contributions (and the end).
     pub offsets: Vec<usize>,
@@ -140,6 +142,8 @@ pub(super) struct State {
     pub w_ext: ExactSum,
     pub wall_work: ExactSum,
     pub e_contact: ExactSum,
+    /// /DAMP: the last undamped accelerations.
+    pub damping: DampState,
     /// Kinetic energy at t = 0 (the energy error's reference).
     pub e0: f64,
     /// Idel: which of this rank's elements were alive at the last look.
@@ -159,7 +163,7 @@ pub(super) struct State {
 
 impl<'a> Ctx<'a> {
     /// Local nodes of global nodes this rank holds (others left out).
-    fn locals(&self, nodes: &[u32]) -> Vec<u32> {
+    pub(super) fn locals(&self, nodes: &[u32]) -> Vec<u32> {
         nodes
             .iter()
             .filter_map(|gn| self.local_of.get(gn).copied())
@@ -221,6 +225,7 @@ pub(super) fn context<'a>(
         impvel: Vec::new(),
         cloads: Vec::new(),
         gravity: Vec::new(),
+        damp_of: Vec::new(),
         fct_index: g
             .functions
             .iter()
@@ -351,6 +356,21 @@ fn on_local_cards<'a>(cx: &mut Ctx<'a>) {
         .map(|c| (cx.locals(&c.nodes), c))
         .collect();
     cx.gravity = g.gravity.iter().map(|c| (cx.locals(&c.nodes), c)).collect();
+    // Which /DAMP damps each local node (`super::damping`).
+    cx.damp_of = vec![None; cx.n];
+    for (i, d) in g.dampings.iter().enumerate() {
+        for l in cx.locals(&d.nodes) {
+            cx.damp_of[l as usize] = Some(i as u16);
+        }
+    }
+}
+
+/// /DAMP: the last undamped acceleration of each degree of freedom of this
+/// rank's nodes (the β term of `super::damping`), once it has one.
+#[derive(Default)]
+pub(super) struct DampState {
+    pub prev: Vec<[f64; 6]>,
+    pub primed: Vec<bool>,
 }
 
 /// The loop's state at t = 0 before any force: initial velocities, rigid
@@ -425,6 +445,7 @@ pub(super) fn initial_state(
         w_ext: ExactSum::default(),
         wall_work: ExactSum::default(),
         e_contact: ExactSum::default(),
+        damping: Default::default(),
         bodies_v_before: Vec::new(),
         e0: 0.0,
         history: Vec::new(),

@@ -70,19 +70,28 @@ pub(super) fn global_step(cx: &Ctx, s: &State, found: Found) -> Result<Step, Run
             }
         },
     );
-    if !d.is_finite() {
+    let contacts: Vec<ContactStep> = all.into_iter().map(|a| a.4).collect();
+    let step = if d.is_finite() {
+        Step {
+            dt: d,
+            what: crate::model::ElementKind::ALL[ki].listing_name(),
+            id,
+        }
+    } else if s.step.dt > 0.0 {
+        // Every element has failed: the step grows by 10% a cycle from the
+        // last one, as the reference engine's does (the nodes fly on).
+        Step {
+            dt: s.step.dt * 1.1 / cx.g.engine.dt_scale,
+            ..s.step
+        }
+    } else {
         return Err(RunError::Physics(format!(
             "no element left to set the time step at cycle {cycle}, time {t:e}"
         )));
-    }
-    let contacts: Vec<ContactStep> = all.into_iter().map(|a| a.4).collect();
-    let step = Step {
-        dt: d,
-        what: crate::model::ElementKind::ALL[ki].listing_name(),
-        id,
     };
     let mut step = with_contact(step, &contacts);
     step.dt *= cx.g.engine.dt_scale;
+    step.dt *= super::damping::step_factor(cx, s.t, step.dt);
     Ok(step)
 }
 

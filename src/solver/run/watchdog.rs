@@ -30,6 +30,9 @@ use crate::element::blocks::Block;
 use crate::error::RunError;
 use crate::output::history::{element_masses, part_sums};
 
+/// Cycles before the energy error is held to its limit.
+const START_UP_CYCLES: u64 = 10;
+
 /// The limit, where it comes from, and the energies of the last check.
 pub(super) struct Watchdog {
     /// Fraction; infinite: no limit.
@@ -88,7 +91,11 @@ impl Watchdog {
             err.abs() > self.limit
         };
         let last = self.last.replace((s.cycle, now));
-        if !past {
+        // The first cycles' balance is the staggered scheme's start-up: the
+        // work of the loads and imposed motions lags the internal energy by
+        // one step (½FΔu), which is all there is while the energies are a
+        // few steps old.
+        if !past || s.cycle < START_UP_CYCLES {
             return Ok(());
         }
         let (since, before) = last.unwrap_or((0, Vec::new()));
