@@ -1,8 +1,9 @@
 //! Walks `../shared/decks/openradioss-qa` (issue 13): every deck runs or is
 //! refused by name — none runs to exit 0 with energies more than 50% off
 //! its OpenRadioss listing, and every deck that runs is within 10% unless
-//! `KNOWN_OFF` says why not (SOLIDES_..._H101 is held to it: 0.9% today). Prints one
-//! line per deck: status, worst deviation, seconds.
+//! `KNOWN_OFF` says why not (SOLIDES_..._H101 is held to it: 0.9% today), and
+//! every deck that runs gives byte-identical final states on 1 and 2 ranks.
+//! Prints one line per deck: status, worst deviation, seconds, 1 = 2 ranks.
 //!
 //! The deviation of a run: at every row of the reference engine listing,
 //! our I-ENERGY and K-ENERGY T (every cycle, `--energies`, read at the
@@ -93,6 +94,8 @@ struct Outcome {
     status: String,
     worst: Option<f64>,
     seconds: f64,
+    /// A deck that ran: its final state on 2 ranks is byte-identical to 1 rank's.
+    ranks_equal: Option<bool>,
 }
 
 fn run_deck(folder: &Path) -> Outcome {
@@ -109,10 +112,12 @@ fn run_deck(folder: &Path) -> Outcome {
             status: "no starter deck or reference listing".into(),
             worst: None,
             seconds: 0.0,
+            ranks_equal: None,
         };
     };
     let dir = common::scratch(&format!("qa-{deck}"));
     let csv = dir.join("energies.csv");
+    let (final1, final2) = (dir.join("final1.csv"), dir.join("final2.csv"));
     let started = Instant::now();
     let out = common::crashsim(&[
         "run",
@@ -121,6 +126,8 @@ fn run_deck(folder: &Path) -> Outcome {
         dir.to_str().unwrap(),
         "--energies",
         csv.to_str().unwrap(),
+        "--final-state",
+        final1.to_str().unwrap(),
         "--quiet",
     ]);
     let seconds = started.elapsed().as_secs_f64();
@@ -136,12 +143,31 @@ fn run_deck(folder: &Path) -> Outcome {
         Some(3) => (format!("stopped: {first}"), None),
         c => (format!("failed ({c:?}): {first}"), None),
     };
+    let ranks_equal = worst.map(|_| {
+        let two = dir.join("two");
+        let out2 = common::mpirun(
+            2,
+            &[
+                "run",
+                starter.to_str().unwrap(),
+                "--out",
+                two.to_str().unwrap(),
+                "--final-state",
+                final2.to_str().unwrap(),
+                "--quiet",
+            ],
+        );
+        out2.status.success()
+            && std::fs::read(&final1).ok().is_some()
+            && std::fs::read(&final1).ok() == std::fs::read(&final2).ok()
+    });
     let _ = std::fs::remove_dir_all(&dir);
     Outcome {
         deck,
         status,
         worst,
         seconds,
+        ranks_equal,
     }
 }
 
@@ -156,13 +182,24 @@ fn every_qa_deck_runs_or_is_refused_by_name_and_none_runs_far_off() {
     folders.sort();
     assert!(folders.len() >= 30, "{} decks", folders.len());
     let outcomes: Vec<Outcome> = folders.iter().map(|f| run_deck(f)).collect();
-    println!("{:<60} {:>9} {:>8}  status", "deck", "worst", "seconds");
+    println!(
+        "{:<60} {:>9} {:>8} {:>5}  status",
+        "deck", "worst", "seconds", "1=2"
+    );
     for o in &outcomes {
         let worst = o
             .worst
             .map_or("-".to_string(), |w| format!("{:.1}%", 100.0 * w));
+        let same = match o.ranks_equal {
+            Some(true) => "yes",
+            Some(false) => "NO",
+            None => "-",
+        };
         let status: String = o.status.chars().take(160).collect();
-        println!("{:<60} {worst:>9} {:>8.1}  {status}", o.deck, o.seconds);
+        println!(
+            "{:<60} {worst:>9} {:>8.1} {same:>5}  {status}",
+            o.deck, o.seconds
+        );
     }
     let ran = outcomes.iter().filter(|o| o.worst.is_some()).count();
     println!("{ran} of {} decks ran to their end", outcomes.len());
@@ -175,12 +212,13 @@ fn every_qa_deck_runs_or_is_refused_by_name_and_none_runs_far_off() {
             let known = KNOWN_OFF.iter().any(|(d, _)| *d == o.deck);
             o.worst.is_some_and(|w| w > 0.5 || (w > 0.1 && !known))
                 || o.status.starts_with("failed")
+                || o.ranks_equal == Some(false)
                 || o.status.starts_with("refused without")
         })
         .collect();
     assert!(
         bad.is_empty(),
-        "far off (over 10%, or over 50% for a known deck), failed, or refused without naming a keyword: {:?}",
+        "far off (over 10%, or over 50% for a known deck), failed, 1 and 2 ranks not byte-identical, or refused without naming a keyword: {:?}",
         bad.iter()
             .map(|o| (&o.deck, &o.status, o.worst))
             .collect::<Vec<_>>()

@@ -177,6 +177,27 @@ pub(crate) fn parse_engine_block(block: &Block, eng: &mut Engine) -> InputResult
             });
         }
         "TITLE" => eng.title = Some(cards.title()),
+        "DTIX" => {
+            // ΔT_ini ΔT_max (reference guide /DTIX, Engine).
+            let c = cards.next("the card with DT_ini, DT_max")?;
+            let ini = c.tok_real(0, "DT_ini")?.unwrap_or(0.0);
+            let max = c.tok_real(1, "DT_max")?.unwrap_or(0.0);
+            if ini < 0.0 || max < 0.0 {
+                return Err(c.err("DT_ini", format!("{ini} {max}: expected time steps >= 0")));
+            }
+            eng.dtix = (ini, max);
+        }
+        "RBODY" if p1 == "ON" => {
+            // The rigid bodies to switch on (rbody_IDs, list-directed; 0: none).
+            while let Some(c) = cards.next_nonblank() {
+                for i in 0..c.tokens().len() {
+                    let id = c.tok_int(i, "rbody_ID")?.unwrap_or(0);
+                    if id != 0 {
+                        eng.rbody_on.push((id, c.loc()));
+                    }
+                }
+            }
+        }
         "DAMP" if block.parts.len() == 2 => eng.dampings.push(damping(block, &mut cards)?),
         _ => return Ok(false),
     }

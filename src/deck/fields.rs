@@ -138,8 +138,9 @@ impl<'a> Card<'a> {
     }
 
     /// Real field; `None` when blank. A field holding several numbers
-    /// separated by blanks (a neighbour's digits run into it) is read as its
-    /// first, as the reference reader's `%20lg` does; each must be a number.
+    /// separated by blanks (a neighbour's digits run into it, cut at the
+    /// column) is read as its first, as the reference reader's `%20lg` does;
+    /// the others must start as numbers do (digit, sign or point).
     pub fn real_opt(&self, col: usize, width: usize, name: &str) -> InputResult<Option<f64>> {
         let t = self.text(col, width);
         if t.is_empty() {
@@ -147,7 +148,8 @@ impl<'a> Card<'a> {
         }
         let mut words = t.split_whitespace();
         let first = words.next().unwrap_or(t);
-        let spill_ok = words.all(|w| parse_real(w).is_ok());
+        let spill_ok = parse_real(first).is_ok()
+            && words.all(|w| w.starts_with(|c: char| c.is_ascii_digit() || "+-.".contains(c)));
         let t = if spill_ok { first } else { t };
         parse_real(t).map(Some).map_err(|m| {
             self.err(

@@ -151,13 +151,21 @@ fn read_curves(cards: &mut Cards, n: usize) -> InputResult<Vec<RateCurve>> {
 
 /// Copies each LAW36 curve's points from its /FUNCT and resolves F_cut's
 /// default (10 kHz in the deck's time unit with several curves, as the
-/// starter); an unknown function is an error at the material card.
+/// starter; LAW44's with Fsmooth too); an unknown function is an error at
+/// the material card.
 pub(super) fn resolve_curves(
     mats: &mut [MaterialSpec],
     functions: &[Function],
     time_si: f64,
 ) -> Result<(), InputError> {
     for m in mats.iter_mut() {
+        if let MaterialLaw::CowperSymonds(c) = &mut m.law {
+            // LAW44: Fsmooth without F_cut filters at 10 kHz.
+            if c.fsmooth != 0 && c.f_cut == 0.0 {
+                c.f_cut = 1e4 * time_si;
+            }
+            continue;
+        }
         let MaterialLaw::Tabulated(t) = &mut m.law else {
             continue;
         };

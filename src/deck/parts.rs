@@ -76,7 +76,16 @@ pub(super) fn parse_property(block: &Block, deck: &mut Deck) -> InputResult<bool
     let title = cards.title();
     let kind = match which {
         1 => PropertyKind::Shell(read_shell(&mut cards)?),
-        14 => PropertyKind::Solid(read_solid(&mut cards)?),
+        14 => {
+            let mut p = read_solid(&mut cards)?;
+            // Input versions before 2019 read Isolid 12 as 17 (H8C), as the
+            // reference reader's older formats do (research note
+            // docs/notes/law44_isolid12_research.md §2).
+            if p.isolid == 12 && deck.begin.as_ref().is_some_and(|b| b.invers < 2019) {
+                p.isolid = 17;
+            }
+            PropertyKind::Solid(p)
+        }
         4 => PropertyKind::Spring(spring_props::read_spring(&mut cards, &mut deck.warnings)?),
         8 => PropertyKind::GeneralSpring(spring_props::read_general_spring(
             &mut cards,

@@ -74,7 +74,12 @@ pub const SUPPORTED: &[Supported] = &[
     s(
         "/MAT/LAW36 (/MAT/PLAS_TAB)",
         &["/MAT/LAW36/1", "/MAT/PLAS_TAB/1"],
-        "tabulated plasticity: yield curves per strain rate (Fscale, F_smooth, F_cut), Eps_p_max; C_hard, VP = 1, fct_IDp, Fct_IDE/CE and Eps_t/Eps_m/Eps_f refused by name",
+        "tabulated plasticity: yield curves per strain rate (Fscale, F_smooth, F_cut), Eps_p_max, the tension damage Eps_t/Eps_m/Eps_f on 4-node shells; C_hard, VP = 1, fct_IDp, Fct_IDE/CE (and the tension damage on triangles and solids) refused by name",
+    ),
+    s(
+        "/MAT/LAW44 (/MAT/COWPER)",
+        &["/MAT/LAW44/1", "/MAT/COWPER/1"],
+        "Cowper-Symonds elastic-plastic: (a + b ε_p^n)(1 + (ε̇/c)^(1/p)), SIG_max0 with ICC, the total (VP 2) or deviatoric (VP 3) strain rate, Fsmooth/F_cut, EPS_p_max; Chard ignored on solids as the reference engine does (refused on shells), VP 1, fct_IDy, εt1/εt2 refused by name",
     ),
     s(
         "/FAIL/JOHNSON",
@@ -82,7 +87,7 @@ pub const SUPPORTED: &[Supported] = &[
         "Johnson-Cook damage (D1-D5, EPS_0, EPSF_MIN) on solids, Ifail_so 1-4; on shells refused",
     ),
     s("/PROP/TYPE1 (/PROP/SHELL)", &["/PROP/TYPE1/1", "/PROP/SHELL/1"], "shell sections: Ishell, Ismstr, Ithick, Iplas, N, thickness, hourglass coefficients"),
-    s("/PROP/TYPE14 (/PROP/SOLID)", &["/PROP/TYPE14/1", "/PROP/SOLID/1"], "solid sections: Isolid, Icpre and Inpts (HA8), hourglass coefficients, dtmin"),
+    s("/PROP/TYPE14 (/PROP/SOLID)", &["/PROP/TYPE14/1", "/PROP/SOLID/1"], "solid sections: Isolid 1, 2 (one point), 12 (S8), 14 (HA8), 17 (H8C; an input version before 2019 reads 12 as 17), Icpre and Inpts, hourglass coefficients, dtmin"),
     s("/PROP/TYPE4 (/PROP/SPRING)", &["/PROP/TYPE4/1", "/PROP/SPRING/1"], "axial springs: K, C, the force curve with hardening H = 0, 1, 2, 4, 5, 6, 7, 8 and its unloading curve, the rate terms A + B ln(δ̇/D) + E g(δ̇/F) and Hscale h(δ̇/F), failure bounds, Ileng (sensor refused)"),
     s("/PROP/TYPE8 (/PROP/SPR_GENE)", &["/PROP/TYPE8/1", "/PROP/SPR_GENE/1"], "general springs: six degrees of freedom in the global frame, each with the TYPE4 law; Ifail 0/1 (Fsmooth filter), Ifail2 0/1 (skew, Iequil 1, Ifail2 2, sensor refused)"),
     s("/PROP/TYPE13 (/PROP/SPR_BEAM)", &["/PROP/TYPE13/1", "/PROP/SPR_BEAM/1"], "spring beams: tension, shears, torsion and bendings in the element's frame, each with the TYPE4 law, shear balanced by end moments; Ifail 0/1, Ifail2 0/2, Ileng (skew, Ifail2 1/3, sensor refused)"),
@@ -127,6 +132,8 @@ pub const SUPPORTED: &[Supported] = &[
     e("/RFILE", &["/RFILE/1", "/RFILE/OFF"], "restart file period"),
     e("/STOP", &["/STOP"], "Emax energy-error stop, NTH/NANIM checks"),
     e("/DAMP", &["/DAMP/1"], "new α, β for a starter /DAMP from this run on"),
+    e("/DTIX", &["/DTIX"], "the first time step at most DT_ini, every step at most DT_max (the step of a model without elements)"),
+    e("/RBODY/ON", &["/RBODY/ON"], "the rigid bodies it names must exist; they are active from the start, so it switches nothing (/RBODY/OFF not read)"),
     e("/PARITH, /MON, /VERS, /PROC, /TITLE", &["/PARITH/ON", "/MON/ON", "/VERS/2019", "/PROC/1", "/TITLE"], "read; results are the same on any number of ranks and threads anyway"),
 ];
 
@@ -201,7 +208,7 @@ mod tests {
     #[test]
     fn keywords_nobody_reads_are_not_in_the_table() {
         for h in [
-            "/MAT/LAW44/1",
+            "/MAT/LAW27/1",
             "/INTER/TYPE19/1",
             "/PROP/TYPE45/1",
             "/RWALL/CYL/1",

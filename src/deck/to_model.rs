@@ -842,11 +842,22 @@ fn add_rigid_bodies(
                 model.nodal_inertia[n as usize],
             );
         }
+        // A body of massless nodes (a deck of rigid bodies and no element)
+        // or of collinear point masses: a negligible mass and principal
+        // inertia where there is none, as the reference engine (its listing
+        // gives such a model a TOTAL MASS of 1e-19), so that no motion
+        // divides by zero.
+        const NEGLIGIBLE: f64 = 1e-20;
+        for j in inertia.iter_mut().take(3) {
+            if *j <= 0.0 {
+                *j = NEGLIGIBLE;
+            }
+        }
         model.rigid_bodies.push(RigidBody {
             card: c.clone(),
             main_node,
             secondary_nodes,
-            mass: m,
+            mass: if m > 0.0 { m } else { NEGLIGIBLE },
             center,
             inertia,
         });

@@ -162,9 +162,44 @@ pub fn partition(
         elem_ptr: &ptr,
         elem_nodes: &nodes,
     };
+    if mesh.n_elems() < nranks {
+        return Ok(fewer_elements_than_ranks(&mesh, model, nranks)?);
+    }
     let weights = element_weights(model)?;
     let p = part::partition(&mesh, &weights, &part::Options::new(nranks))?;
     let r = part::report(&mesh, &weights, &p)?;
+    Ok((p, r))
+}
+
+/// A model with fewer elements than ranks (one spring on 2 ranks, rigid
+/// bodies and no element at all): element e on rank e, the other ranks
+/// empty, as the reference engine runs such decks on any number of
+/// domains. Nodes no element touches live on rank 0 (`split`).
+fn fewer_elements_than_ranks(
+    mesh: &part::Mesh,
+    model: &Model,
+    nranks: usize,
+) -> Result<(part::Partition, part::Report), part::PartitionError> {
+    let n = mesh.n_elems();
+    let p = part::Partition {
+        nparts: nranks,
+        part: (0..n as u32).collect(),
+    };
+    if n > 0 {
+        let r = part::report(mesh, &element_weights(model)?, &p)?;
+        return Ok((p, r));
+    }
+    let empty = part::RankReport {
+        elements: 0,
+        nodes: 0,
+        shared_nodes: 0,
+        weight: 0,
+    };
+    let r = part::Report {
+        per_rank: vec![empty; nranks],
+        edge_cut: 0,
+        imbalance: 0.0,
+    };
     Ok((p, r))
 }
 

@@ -48,18 +48,34 @@ use serde::{Deserialize, Serialize};
 /// the research note §1.1): Inpts 0 → 222 (the only rule computed), Icpre
 /// −1 → 2 for an elasto-plastic law and 0 otherwise, 3 → 0; Iframe forced
 /// co-rotational; h unused; Ismstr 2, 4 (−1 → 4).
+///
+/// Isolid 12 (S8) and 17 (H8C) are the same 2×2×2 element without the
+/// assumed strain: the exact derivatives at every point ([`full_b`]); 12
+/// has no volumetric treatment (Icpre forced 0), 17 the constant pressure
+/// by default (Icpre 0/−1 → 1, 3 → 0; research note
+/// `docs/notes/law44_isolid12_research.md` §2). All three run in the
+/// co-rotational element frame.
 pub fn ha8_section(r: &ResolvedSolid, m: &Material) -> Result<SolidSection, String> {
-    if !matches!(r.inpts, 0 | 222) {
+    let isolid = r.isolid;
+    if isolid == 14 && !matches!(r.inpts, 0 | 222) {
         return Err(format!(
             "Isolid = 14 with Inpts = {}: only the 2×2×2 rule (Inpts = 222) is computed",
             r.inpts
         ));
     }
-    let icpre = match r.icpre {
-        -1 if m.is_plastic() => 2,
-        -1 | 0 | 3 => 0,
-        v @ (1 | 2) => v,
-        v => {
+    let icpre = match (isolid, r.icpre) {
+        (12, _) => 0,
+        (17, -1 | 0 | 1) => 1,
+        (17, 3) => 0,
+        (17, v) => {
+            return Err(format!(
+                "Isolid = 17 with Icpre = {v}: expected -1, 0, 1 or 3"
+            ))
+        }
+        (_, -1) if m.is_plastic() => 2,
+        (_, -1 | 0 | 3) => 0,
+        (_, v @ (1 | 2)) => v,
+        (_, v) => {
             return Err(format!(
                 "Isolid = 14 with Icpre = {v}: expected -1, 0, 1, 2 or 3"
             ))
@@ -69,7 +85,7 @@ pub fn ha8_section(r: &ResolvedSolid, m: &Material) -> Result<SolidSection, Stri
     plain.isolid = 1;
     plain.iframe = 1;
     let mut sec = SolidSection::new(&plain, m)?;
-    sec.isolid = 14;
+    sec.isolid = isolid;
     sec.h = 0.0;
     sec.icpre = icpre;
     Ok(sec)
@@ -157,7 +173,7 @@ fn col(j: &[[f64; 3]; 3], k: usize) -> [f64; 3] {
     [j[0][k], j[1][k], j[2][k]]
 }
 
-fn mat_vec(m: &[[f64; 3]; 3], v: [f64; 3]) -> [f64; 3] {
+pub(crate) fn mat_vec(m: &[[f64; 3]; 3], v: [f64; 3]) -> [f64; 3] {
     [dot(m[0], v), dot(m[1], v), dot(m[2], v)]
 }
 
@@ -175,7 +191,7 @@ pub(crate) struct Ha8Geometry {
 }
 
 /// Centre Jacobian columns j_ξ, j_η, j_ζ (8 × ∂x/∂ξ at the centre).
-fn centre_columns(x: &[[f64; 3]; 8]) -> [[f64; 3]; 3] {
+pub(crate) fn centre_columns(x: &[[f64; 3]; 8]) -> [[f64; 3]; 3] {
     let mut c = [[0.0; 3]; 3];
     for (a, n) in NAT.iter().enumerate() {
         for k in 0..3 {
@@ -293,7 +309,7 @@ pub(crate) fn element_frame(x: &[[f64; 3]; 8]) -> [[f64; 3]; 3] {
 }
 
 /// Nodes and velocities in the element frame (positions about node 1).
-fn to_frame(r: &[[f64; 3]; 3], x: &[[f64; 3]; 8]) -> [[f64; 3]; 8] {
+pub(crate) fn to_frame(r: &[[f64; 3]; 3], x: &[[f64; 3]; 8]) -> [[f64; 3]; 8] {
     let mut out = [[0.0; 3]; 8];
     for a in 0..8 {
         out[a] = mat_vec(r, [x[a][0] - x[0][0], x[a][1] - x[0][1], x[a][2] - x[0][2]]);
@@ -301,7 +317,7 @@ fn to_frame(r: &[[f64; 3]; 3], x: &[[f64; 3]; 8]) -> [[f64; 3]; 8] {
     out
 }
 
-fn vel_to_frame(r: &[[f64; 3]; 3], v: &[[f64; 3]; 8]) -> [[f64; 3]; 8] {
+pub(crate) fn vel_to_frame(r: &[[f64; 3]; 3], v: &[[f64; 3]; 8]) -> [[f64; 3]; 8] {
     let mut out = [[0.0; 3]; 8];
     for a in 0..8 {
         out[a] = mat_vec(r, v[a]);
@@ -378,10 +394,35 @@ fn mean_dilatation(m: &mut [[[f64; 3]; 8]; 6], g: &Ha8Geometry) {
     }
 }
 
+/// The standard strain-rate matrix of one point (Isolid 12, 17): the
+/// exact derivatives ∂N_a/∂x = b_a + Σ_α γ_aα ∇φ_α in every row.
+pub(crate) fn full_b(g: &Ha8Geometry, p: usize) -> [[[f64; 3]; 8]; 6] {
+    let mut m = [[[0.0; 3]; 8]; 6];
+    for a in 0..8 {
+        let d: [f64; 3] = std::array::from_fn(|i| {
+            g.b[a][i]
+                + (0..4)
+                    .map(|al| g.gam[al][a] * g.dphi[p][al][i])
+                    .sum::<f64>()
+        });
+        m[0][a] = [d[0], 0.0, 0.0];
+        m[1][a] = [0.0, d[1], 0.0];
+        m[2][a] = [0.0, 0.0, d[2]];
+        m[3][a] = [d[1], d[0], 0.0];
+        m[4][a] = [0.0, d[2], d[1]];
+        m[5][a] = [d[2], 0.0, d[0]];
+    }
+    m
+}
+
 /// The point matrices of a configuration for this section.
 fn point_matrices(sec: &SolidSection, g: &Ha8Geometry, nu: f64) -> [[[[f64; 3]; 8]; 6]; 8] {
     std::array::from_fn(|p| {
-        let mut m = bbar(g, p, nu);
+        let mut m = if sec.isolid == 14 {
+            bbar(g, p, nu)
+        } else {
+            full_b(g, p)
+        };
         if sec.icpre == 1 {
             mean_dilatation(&mut m, g);
         }
@@ -416,17 +457,9 @@ fn update_points(
             }
         }
     }
-    let trc = dc[0][0] + dc[1][1] + dc[2][2];
     let mat = &sec.material;
-    let mean = trc / 3.0;
-    let dev2: f64 = (0..3)
-        .flat_map(|i| (0..3).map(move |j| (i, j)))
-        .map(|(i, j)| {
-            let d = dc[i][j] - if i == j { mean } else { 0.0 };
-            d * d
-        })
-        .sum();
-    st.eps_dot = mat.filter_strain_rate(st.eps_dot, (2.0 / 3.0 * dev2).sqrt(), dt);
+    let d6 = [dc[0][0], dc[1][1], dc[2][2], dc[0][1], dc[1][2], dc[2][0]];
+    st.eps_dot = mat.filter_strain_rate(st.eps_dot, mat.solid_strain_rate(&d6), dt);
     let temp = mat.temperature(st.eint / volm);
     let (mut work, mut wplas, mut failed) = (0.0, 0.0, false);
     for (p, m) in point_matrices(sec, &g, nu).iter().enumerate() {
@@ -445,7 +478,7 @@ fn update_points(
         work += w * g.vol_p[p];
         wplas += wp * g.vol_p[p];
     }
-    Some((work, wplas, failed, (-trc).max(0.0)))
+    Some((work, wplas, failed, (-(d6[0] + d6[1] + d6[2])).max(0.0)))
 }
 
 /// One explicit step of one HA8 brick: stresses from x^{n+1} and v^{n+½},
@@ -642,6 +675,76 @@ mod tests {
                     "Icpre 1 point {p} comp {k}"
                 );
             }
+        }
+    }
+
+    /// S8 / H8C (Isolid 12, 17): the standard matrix reproduces every
+    /// linear field exactly at every point (patch test), with and without
+    /// the constant pressure.
+    #[test]
+    fn full_integration_passes_the_patch_test() {
+        let x = distorted();
+        let g = geometry(&x).unwrap();
+        let l = [[0.3, -0.2, 0.5], [0.1, -0.4, 0.25], [-0.35, 0.15, 0.2]];
+        let v: [[f64; 3]; 8] = std::array::from_fn(|a| mat_vec(&l, x[a]));
+        let exact = [
+            l[0][0],
+            l[1][1],
+            l[2][2],
+            l[0][1] + l[1][0],
+            l[1][2] + l[2][1],
+            l[2][0] + l[0][2],
+        ];
+        for isolid in [12, 17] {
+            let mut s = sec(0.3, 0);
+            s.isolid = isolid;
+            s.icpre = if isolid == 17 { 1 } else { 0 };
+            for (p, m) in point_matrices(&s, &g, 0.0).iter().enumerate() {
+                let d = rate(m, &v);
+                for k in 0..6 {
+                    assert!(
+                        (d[k] - exact[k]).abs() < 1e-12,
+                        "Isolid {isolid} point {p} comp {k}"
+                    );
+                }
+            }
+        }
+    }
+
+    /// S8 and H8C in pure bending (ν = 0): the trilinear field u = −κxz,
+    /// w = 0 carries the parasitic shear γ_xz = −κx, so the energy is the
+    /// beam's ½EIκ²l times 1 + (G/E)(l/h)², exactly (the 2×2×2 rule
+    /// integrates it): the locking that HA8's assumed strain removes.
+    #[test]
+    fn full_integration_bending_energy_has_the_parasitic_shear() {
+        for (isolid, lx) in [(12, 4.0), (17, 4.0), (12, 0.5)] {
+            let mut s = sec(0.0, 0);
+            s.isolid = isolid;
+            s.icpre = if isolid == 17 { 1 } else { 0 };
+            let (ly, lz) = (1.0, 0.5);
+            let x: [[f64; 3]; 8] = std::array::from_fn(|a| {
+                [
+                    0.5 * lx * NAT[a][0],
+                    0.5 * ly * NAT[a][1],
+                    0.5 * lz * NAT[a][2],
+                ]
+            });
+            let mut st = ha8_init(&s, &x);
+            let (kappa, dt) = (1e-6, 1.0);
+            let v: [[f64; 3]; 8] =
+                std::array::from_fn(|a| [-kappa * x[a][2] * x[a][0] / dt, 0.0, 0.0]);
+            let xn: [[f64; 3]; 8] =
+                std::array::from_fn(|a| std::array::from_fn(|i| x[a][i] + dt * v[a][i]));
+            ha8_step(&s, &xn, &v, dt, &mut st);
+            let e = s.material.young();
+            let beam = 0.5 * e * kappa * kappa * lx * ly * lz.powi(3) / 12.0;
+            let analytic = beam * (1.0 + 0.5 * (lx / lz).powi(2));
+            let rel = (st.eint - analytic) / analytic;
+            assert!(
+                rel.abs() < 0.02,
+                "Isolid {isolid} l {lx}: {} vs {analytic} ({rel})",
+                st.eint
+            );
         }
     }
 

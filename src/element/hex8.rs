@@ -280,7 +280,7 @@ pub(crate) const HG_BASE: [[f64; 8]; 4] = [
 
 /// Largest face area of a hexahedron, ½|d₁₃ × d₂₄| per face (reference engine SLEN).
 #[inline]
-fn hex_max_face_area(x: &[[f64; 3]; 8]) -> f64 {
+pub(crate) fn hex_max_face_area(x: &[[f64; 3]; 8]) -> f64 {
     const FACES: [[usize; 4]; 6] = [
         [0, 1, 2, 3],
         [4, 5, 6, 7],
@@ -409,11 +409,8 @@ pub(crate) fn solid_point_update(
         ];
         rotate_stress(sig, &w, dt);
         let old = *sig;
-        // Equivalent (von Mises) rate of the deviatoric part: √(⅔ D′:D′).
-        let m = tr / 3.0;
-        let (a, b, c) = (d[0] - m, d[1] - m, d[2] - m);
-        let dd = a * a + b * b + c * c + 2.0 * (d[3] * d[3] + d[4] * d[4] + d[5] * d[5]);
-        let raw = (2.0 / 3.0 * dd).sqrt();
+        // The law's strain rate (the deviatoric equivalent √(⅔ D′:D′) for most).
+        let raw = mat.solid_strain_rate(&d);
         *eps_dot = mat.filter_strain_rate(*eps_dot, raw, dt);
         let temp = mat.temperature(eint / vol_mid);
         let deps = [
@@ -651,6 +648,7 @@ pub(crate) mod tests {
             qb,
             h,
             dtmin: 0.0,
+            dn: 0.0,
         }
     }
 

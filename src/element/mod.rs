@@ -8,6 +8,7 @@ pub const SLOT: usize = 6;
 
 pub mod blocks;
 pub mod ha8;
+pub mod heph;
 pub mod hex8;
 pub mod shell3;
 pub mod shell4;

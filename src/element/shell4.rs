@@ -236,6 +236,9 @@ impl ShellSection {
 
     /// The section with N = 0 computed by `n0` (any other N as given).
     pub fn build(r: &ResolvedShell, m: &Material, n0: N0Rule) -> Result<ShellSection, String> {
+        if let Some(why) = m.shell_refusal() {
+            return Err(why);
+        }
         match r.ishell {
             1..=4 | 24 => {}
             12 => return Err("Ishell = 12 (QBAT) is not supported yet: the engine computes Ishell = 1, 2, 3, 4 (Belytschko-Tsay) and 24 (QEPH)".into()),

@@ -35,6 +35,17 @@ pub struct RigidBodyState {
     pub rot: [[f64; 3]; 3],
 }
 
+impl RigidBodyState {
+    /// ½ ωᵀ J ω with J the body's inertia turned to its orientation.
+    pub fn rotational_energy(&self) -> f64 {
+        let (w, r) = (self.omega, &self.rot);
+        // ω in the body's initial axes: Rᵀω.
+        let wb: V3 = [0, 1, 2].map(|i| r[0][i] * w[0] + r[1][i] * w[1] + r[2][i] * w[2]);
+        let jw = mat_vec(&sym(&self.j0), wb);
+        0.5 * (wb[0] * jw[0] + wb[1] * jw[1] + wb[2] * jw[2])
+    }
+}
+
 fn sym(j: &[f64; 6]) -> [[f64; 3]; 3] {
     [[j[0], j[3], j[5]], [j[3], j[1], j[4]], [j[5], j[4], j[2]]]
 }

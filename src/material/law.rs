@@ -88,6 +88,20 @@ pub trait Law: Sized {
         false
     }
 
+    /// What the engine cannot compute on shells with these parameters, by
+    /// name (LAW44's kinematic hardening); `None` when shells are fine.
+    fn shell_refusal(&self) -> Option<String> {
+        None
+    }
+
+    /// A solid's raw strain rate from its rate of deformation
+    /// d = [Dxx Dyy Dzz Dxy Dyz Dzx] (tensor shears): the deviatoric
+    /// equivalent √(⅔ D′:D′) unless the law says otherwise.
+    #[inline]
+    fn solid_strain_rate(&self, d: &[f64; 6]) -> f64 {
+        deviatoric_rate(d)
+    }
+
     /// The element strain rate the law uses this step, from the previous
     /// (filtered) rate and this step's raw rate.
     #[inline]
@@ -156,4 +170,14 @@ pub trait Law: Sized {
         let el = self.elastic();
         (el.e / el.rho_ref).sqrt()
     }
+}
+
+/// The deviatoric equivalent strain rate √(⅔ D′:D′) of
+/// d = [Dxx Dyy Dzz Dxy Dyz Dzx] (tensor shears).
+#[inline]
+pub fn deviatoric_rate(d: &[f64; 6]) -> f64 {
+    let m = (d[0] + d[1] + d[2]) / 3.0;
+    let (a, b, c) = (d[0] - m, d[1] - m, d[2] - m);
+    let dd = a * a + b * b + c * c + 2.0 * (d[3] * d[3] + d[4] * d[4] + d[5] * d[5]);
+    (2.0 / 3.0 * dd).sqrt()
 }

@@ -14,6 +14,7 @@ use super::law::{ElasticConstants, Law};
 use super::law1::Law1;
 use super::law2::Law2;
 use super::law36::Law36;
+use super::law44::Law44;
 use super::point::{PlaneStressResult, PointLaw};
 use crate::model::MaterialSpec;
 use serde::{Deserialize, Serialize};
@@ -67,6 +68,8 @@ registry! {
     JohnsonCook(Law2),
     /// LAW36: tabulated elasto-plastic.
     Tabulated(Law36),
+    /// LAW44: Cowper-Symonds elasto-plastic.
+    CowperSymonds(Law44),
 }
 
 /// The name of law number `number` when the registry has it; otherwise the
@@ -195,6 +198,17 @@ impl Material {
     #[inline]
     pub fn reference_temperature(&self) -> f64 {
         each_law!(self, l => l.reference_temperature())
+    }
+
+    /// What the engine cannot compute on shells (see [`Law::shell_refusal`]).
+    pub fn shell_refusal(&self) -> Option<String> {
+        each_law!(self, l => l.shell_refusal())
+    }
+
+    /// The raw strain rate of a solid (see [`Law::solid_strain_rate`]).
+    #[inline]
+    pub fn solid_strain_rate(&self, d: &[f64; 6]) -> f64 {
+        each_law!(self, l => l.solid_strain_rate(d))
     }
 
     /// [Eps_t, Eps_m, Eps_f] of a law with tension damage (see [`Law::tension_damage`]).
@@ -617,9 +631,10 @@ mod tests {
         assert_eq!(law_name(1), Ok("elastic"));
         assert_eq!(law_name(2), Ok("Johnson-Cook"));
         assert_eq!(law_name(36), Ok("tabulated plasticity"));
-        let e = law_name(44).unwrap_err();
+        assert_eq!(law_name(44), Ok("Cowper-Symonds"));
+        let e = law_name(27).unwrap_err();
         assert!(
-            e.contains("/MAT/LAW44")
+            e.contains("/MAT/LAW27")
                 && e.contains("LAW1 elastic")
                 && e.contains("LAW2 Johnson-Cook"),
             "{e}"

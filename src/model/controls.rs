@@ -48,6 +48,14 @@ pub struct Engine {
     /// /DT: time-step scale factor (0 → 0.9) and minimum time step.
     pub dt_scale: f64,
     pub dt_min: f64,
+    /// /DTIX: the first time step at most `dtix.0`, every step at most
+    /// `dtix.1` (0: no bound).
+    #[serde(default)]
+    pub dtix: (f64, f64),
+    /// /RBODY/ON: the rigid bodies it names (they are active from the start:
+    /// checked to exist, nothing to switch).
+    #[serde(default)]
+    pub rbody_on: Vec<(i64, Loc)>,
     /// /DT/<type>/<action> cards: (type, action, scale, min).
     pub dt_controls: Vec<DtControl>,
     /// /PRINT/n/nline: listing every |n| cycles; header every nline lines.
@@ -100,6 +108,8 @@ impl Default for Engine {
             stop: None,
             title: None,
             dampings: Vec::new(),
+            dtix: (0.0, 0.0),
+            rbody_on: Vec::new(),
             loc: Loc::default(),
         }
     }

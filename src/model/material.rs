@@ -67,6 +67,37 @@ pub enum MaterialLaw {
     JohnsonCook(JohnsonCook),
     /// LAW36 (/MAT/PLAS_TAB): tabulated yield curves σ_y(ε_p) per strain rate.
     Tabulated(TabulatedPlasticity),
+    /// LAW44 (/MAT/COWPER): σ_y = (a + b·ε_p^n)·(1 + (ε̇/c)^(1/p)).
+    CowperSymonds(CowperSymonds),
+}
+
+/// /MAT/LAW44 parameters (reference guide /MAT/LAW44; research notes
+/// `docs/notes/fail_johnson_law44_research.md` §B and
+/// `docs/notes/law44_isolid12_research.md` §1), defaults resolved: p 0 → 1,
+/// ICC 0 → 1, VP 0 → 2, SIG_max0, EPS_p_max, εt1, εt2 0 → no limit; F_cut
+/// with Fsmooth and no F_cut: 10 kHz in the deck's time unit (the model
+/// builder resolves it).
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct CowperSymonds {
+    pub a: f64,
+    pub b: f64,
+    pub n: f64,
+    pub chard: f64,
+    pub sig_max0: f64,
+    /// Rate scale c (0: no rate effect) and exponent p.
+    pub c: f64,
+    pub p: f64,
+    pub icc: i64,
+    pub fsmooth: i64,
+    pub f_cut: f64,
+    /// Strain rate: 1 plastic, 2 total, 3 deviatoric.
+    pub vp: i64,
+    pub eps_p_max: f64,
+    pub eps_t1: f64,
+    pub eps_t2: f64,
+    /// Yield curve (0: none) and its scale.
+    pub fct_idy: Id,
+    pub fscale_y: f64,
 }
 
 /// /MAT/LAW36 parameters (reference guide /MAT/LAW36; research note

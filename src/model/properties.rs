@@ -92,6 +92,9 @@ pub struct ResolvedSolid {
     pub qb: f64,
     pub h: f64,
     pub dtmin: f64,
+    /// Hourglass viscous coefficient of HEPH (Isolid 24) as given (0 blank).
+    #[serde(default)]
+    pub dn: f64,
 }
 
 /// Isolid 0 → /DEF_SOLID → 1; Ismstr → 4; Iframe → 1; Itetra4 → 1000;
@@ -108,5 +111,6 @@ pub fn resolve_solid(p: &SolidProperty, d: Option<&DefSolid>) -> ResolvedSolid {
         qb: p.qb,
         h: p.h,
         dtmin: p.dtmin,
+        dn: p.dn,
     }
 }

@@ -457,6 +457,7 @@ impl RunFile {
                     MaterialLaw::Elastic => "LAW1 elastic",
                     MaterialLaw::JohnsonCook(_) => "LAW2 Johnson-Cook",
                     MaterialLaw::Tabulated(_) => "LAW36 tabulated plasticity",
+                    MaterialLaw::CowperSymonds(_) => "LAW44 Cowper-Symonds",
                 })
             })
             .collect();

@@ -104,6 +104,16 @@ impl HourglassEnergy for crate::element::ha8::Ha8State {
         self.eplas
     }
 }
+impl HourglassEnergy for crate::element::heph::HephState {
+    /// Its physical stabilization is internal energy (`eint`), not a
+    /// numerical hourglass energy.
+    fn hourglass_energy(&self) -> f64 {
+        0.0
+    }
+    fn plastic_work(&self) -> f64 {
+        self.eplas
+    }
+}
 pub(super) fn hourglass_of<S: HourglassEnergy>(s: &S) -> f64 {
     s.hourglass_energy()
 }

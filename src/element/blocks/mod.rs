@@ -12,6 +12,7 @@
 
 mod common;
 mod ha8;
+mod heph;
 mod hex8;
 pub mod registry;
 mod sections;

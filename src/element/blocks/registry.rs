@@ -12,7 +12,7 @@
 
 use super::sections::{part_material, shell_property, solid_property};
 use super::sections::{SHELL_WITHOUT_MATERIAL, SOLID_WITHOUT_MATERIAL};
-use super::{ha8, hex8, shell3, shell4_bt, spring, tet4};
+use super::{ha8, heph, hex8, shell3, shell4_bt, spring, tet4};
 use super::{Block, BlockInput, BuildBlock};
 use crate::domain::LocalElements;
 use crate::model::{ElementKind, Function, MaterialSpec, Part, Property, PropertyKind};
@@ -67,6 +67,20 @@ pub const FORMULATIONS: &[Formulation] = &[
         build: ha8::build,
     },
     Formulation {
+        kind: ElementKind::Brick8,
+        flag: "Isolid",
+        numbers: &[12, 17],
+        name: "S8 / H8C fully integrated brick (2×2×2; H8C with constant pressure)",
+        build: ha8::build,
+    },
+    Formulation {
+        kind: ElementKind::Brick8,
+        flag: "Isolid",
+        numbers: &[24],
+        name: "HEPH one-point brick with physical hourglass stabilization",
+        build: heph::build,
+    },
+    Formulation {
         kind: ElementKind::Tetra4,
         flag: "Itetra4",
         numbers: &[0, 1000],
@@ -106,7 +120,7 @@ pub fn refusal(kind: ElementKind, n: i64) -> String {
         (ElementKind::Shell3, 31) => "Ish3n = 31 (DKT_S3) is not supported: the engine computes the C0 triangle (Ish3n = 1, 2)".into(),
         (ElementKind::Shell3, v) => format!("Ish3n = {v}: expected 1 or 2 (C0 triangle)"),
         (ElementKind::Brick8, v) => format!(
-            "Isolid = {v} is not supported: the engine computes bricks with Isolid = 1 (Belytschko viscous hourglass), 2 (Hallquist viscous hourglass) or 14 (HA8, fully integrated)"
+            "Isolid = {v} is not supported: the engine computes bricks with Isolid = 1 (Belytschko viscous hourglass), 2 (Hallquist viscous hourglass), 12 (S8), 14 (HA8), 17 (H8C, fully integrated) or 24 (HEPH)"
         ),
         (ElementKind::Tetra4, v) => format!(
             "Itetra4 = {v}: only the standard 4-node tetrahedron (Itetra4 = 0 or 1000) is supported"
@@ -306,7 +320,7 @@ mod tests {
             (ElementKind::Shell4, 12, "Ishell = 12 (QBAT) is not supported yet: the engine computes Ishell = 1, 2, 3, 4 (Belytschko-Tsay) and 24 (QEPH)"),
             (ElementKind::Shell4, 7, "Ishell = 7: expected 1, 2, 3, 4 (Belytschko-Tsay) or 24 (QEPH)"),
             (ElementKind::Shell3, 30, "Ish3n = 30 (DKT18) is not supported: the engine computes the C0 triangle (Ish3n = 1, 2)"),
-            (ElementKind::Brick8, 17, "Isolid = 17 is not supported: the engine computes bricks with Isolid = 1 (Belytschko viscous hourglass), 2 (Hallquist viscous hourglass) or 14 (HA8, fully integrated)"),
+            (ElementKind::Brick8, 18, "Isolid = 18 is not supported: the engine computes bricks with Isolid = 1 (Belytschko viscous hourglass), 2 (Hallquist viscous hourglass), 12 (S8), 14 (HA8), 17 (H8C, fully integrated) or 24 (HEPH)"),
             (ElementKind::Tetra4, 3, "Itetra4 = 3: only the standard 4-node tetrahedron (Itetra4 = 0 or 1000) is supported"),
         ];
         for (kind, n, message) in refused {
@@ -335,11 +349,11 @@ mod tests {
         );
         let le = all_of(&m, ElementKind::Brick8);
         let prop = m.parts[le.part[0] as usize].prop.unwrap() as usize;
-        m.properties[prop].solid.as_mut().unwrap().isolid = 24;
+        m.properties[prop].solid.as_mut().unwrap().isolid = 18;
         assert!(blocks(&m, &le)
             .err()
             .unwrap()
-            .starts_with("Isolid = 24 is not supported"));
+            .starts_with("Isolid = 18 is not supported"));
     }
 
     #[test]

@@ -33,6 +33,12 @@ pub(super) fn kinetic(
         if lb.main_local.is_some() {
             let vb = bodies[b].v;
             e[0].add(0.5 * lb.main_mass * (vb[0] * vb[0] + vb[1] * vb[1] + vb[2] * vb[2]));
+            // The inertia the card adds (Jxx … Jxz), turned with the body;
+            // its nodes' own rotational energy is in the nodal sums above.
+            e[1].add(added_rotational(
+                &cx.g.rigid_bodies[b].card.inertia,
+                &bodies[b],
+            ));
         }
     }
     if cx.world.rank() == 0 {
@@ -44,6 +50,23 @@ pub(super) fn kinetic(
     }
     sum_over_ranks(cx.world, &mut e);
     (e[0].value(), e[1].value())
+}
+
+/// ½ ωᵀ (R J Rᵀ) ω of a body's added inertia J (xx, yy, zz, xy, yz, xz).
+fn added_rotational(j: &[f64; 6], body: &RigidBodyState) -> f64 {
+    if j.iter().all(|&x| x == 0.0) {
+        return 0.0;
+    }
+    let w = body.omega;
+    // ω in the body's initial axes: Rᵀω.
+    let r = &body.rot;
+    let wb: [f64; 3] = std::array::from_fn(|i| r[0][i] * w[0] + r[1][i] * w[1] + r[2][i] * w[2]);
+    let jw = [
+        j[0] * wb[0] + j[3] * wb[1] + j[5] * wb[2],
+        j[3] * wb[0] + j[1] * wb[1] + j[4] * wb[2],
+        j[5] * wb[0] + j[4] * wb[1] + j[2] * wb[2],
+    ];
+    0.5 * (wb[0] * jw[0] + wb[1] * jw[1] + wb[2] * jw[2])
 }
 
 /// The kinetic energies at t^n: from `State::at_n` when the cycle has

@@ -189,6 +189,7 @@ fn constrain_body(cx: &Ctx, s: &mut State, b: usize) {
     }
     let counts = lb.main_local.is_some_and(|l| cx.owned[l as usize]);
     let body = &mut s.bodies[b];
+    let spin_before = body.rotational_energy();
     for (k, val) in imposed.iter().enumerate() {
         let Some(val) = *val else {
             continue;
@@ -201,6 +202,10 @@ fn constrain_body(cx: &Ctx, s: &mut State, b: usize) {
         } else {
             body.omega[k - 3] = val;
         }
+    }
+    // An imposed spin does the work of the rotational energy it changes.
+    if counts && imposed[3..].iter().any(Option::is_some) {
+        s.w_ext.add(body.rotational_energy() - spin_before);
     }
 }
 

@@ -234,6 +234,13 @@ fn check_supported(m: &Model) -> Result<(), String> {
             return unsupported("/DAMP with a skew system", &c.card.loc);
         }
     }
+    for (id, loc) in m.engine.iter().flat_map(|e| &e.rbody_on) {
+        if !m.rigid_bodies.iter().any(|r| r.card.id as i64 == *id) {
+            return Err(format!(
+                "{loc}: /RBODY/ON: rigid body {id} is not defined in the starter deck"
+            ));
+        }
+    }
     for o in m.engine.iter().flat_map(|e| &e.dampings) {
         if !m.dampings.iter().any(|d| d.card.id == o.id) {
             return Err(format!(

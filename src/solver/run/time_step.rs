@@ -77,6 +77,13 @@ pub(super) fn global_step(cx: &Ctx, s: &State, found: Found) -> Result<Step, Run
             what: crate::model::ElementKind::ALL[ki].listing_name(),
             id,
         }
+    } else if cx.g.engine.dtix.1 > 0.0 {
+        // No element (a model of rigid bodies): /DTIX's largest step.
+        Step {
+            dt: cx.g.engine.dtix.1 / cx.g.engine.dt_scale,
+            what: "FIXED",
+            id: 0,
+        }
     } else if s.step.dt > 0.0 {
         // Every element has failed: the step grows by 10% a cycle from the
         // last one, as the reference engine's does (the nodes fly on).
@@ -92,6 +99,14 @@ pub(super) fn global_step(cx: &Ctx, s: &State, found: Found) -> Result<Step, Run
     let mut step = with_contact(step, &contacts);
     step.dt *= cx.g.engine.dt_scale;
     step.dt *= super::damping::step_factor(cx, s.t, step.dt);
+    // /DTIX: the first step at most ΔT_ini, every step at most ΔT_max.
+    let (ini, max) = cx.g.engine.dtix;
+    if s.cycle == 0 && ini > 0.0 {
+        step.dt = step.dt.min(ini);
+    }
+    if max > 0.0 {
+        step.dt = step.dt.min(max);
+    }
     Ok(step)
 }
 
