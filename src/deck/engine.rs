@@ -5,7 +5,7 @@
 use super::fields::{parse_int, Cards};
 use super::source::Block;
 use crate::model::{
-    AnimationSpec, DampingOverride, DtControl, Engine, InputError, InputResult, RunSpec, StopSpec,
+    AnimationSpec, DampingOverride, Engine, InputError, InputResult, RunSpec, StopSpec,
 };
 
 fn header_int(block: &Block, idx: usize, name: &str) -> InputResult<Option<i64>> {
@@ -58,6 +58,9 @@ pub(crate) fn parse_engine_block(block: &Block, eng: &mut Engine) -> InputResult
                 loc: c.loc(),
             });
         }
+        // /DT/<type>/<action> (per-type steps, nodal steps with added mass,
+        // AMS) is not computed: left to the keyword policy, which names it.
+        "DT" if !p1.is_empty() => return Ok(false),
         "DT" => {
             let c = cards.next_nonblank();
             let (scale, min) = match c {
@@ -74,18 +77,8 @@ pub(crate) fn parse_engine_block(block: &Block, eng: &mut Engine) -> InputResult
                     format!("scale {scale}, minimum {min}: expected values >= 0"),
                 ));
             }
-            if p1.is_empty() {
-                eng.dt_scale = if scale == 0.0 { 0.9 } else { scale };
-                eng.dt_min = min;
-            } else {
-                eng.dt_controls.push(DtControl {
-                    target: p1.to_string(),
-                    action: block.parts.get(2).cloned().unwrap_or_default(),
-                    scale: if scale == 0.0 { 0.9 } else { scale },
-                    min,
-                    loc: block.loc.clone(),
-                });
-            }
+            eng.dt_scale = if scale == 0.0 { 0.9 } else { scale };
+            eng.dt_min = min;
         }
         "PRINT" => {
             eng.print_every = header_int(block, 1, "Nprint")?.unwrap_or(0);

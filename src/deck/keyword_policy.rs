@@ -21,6 +21,10 @@ pub const SAFE_TO_SKIP: &[(&str, &str)] = &[
         "ACCEL",
         "an accelerometer: an output request, it changes nothing in the solution",
     ),
+    (
+        "OUTP",
+        "a state-file output request (/OUTP/...): it changes nothing in the solution",
+    ),
 ];
 
 /// Why a keyword that no parser reads may be skipped, or `None` when it is unsupported.

@@ -125,7 +125,7 @@ pub const SUPPORTED: &[Supported] = &[
     s("/ANALY, /SPMD, /IOFLAG, /SHFRA/V4, /SHFRA/V5", &["/ANALY", "/SPMD", "/IOFLAG", "/SHFRA/V4"], "read; they change nothing in the solution (N2D3D other than 0 refused)"),
     s("/RANDOM", &["/RANDOM"], "Random-Noise 0 only: a noise that would move the nodes is an unsupported keyword"),
     e("/RUN", &["/RUN/NAME/1"], "end time"),
-    e("/DT", &["/DT", "/DT/NODA/CST"], "time step scale and minimum; /DT/... controls"),
+    e("/DT", &["/DT"], "time step scale and minimum (the per-type controls /DT/<type>/<action>, nodal steps with added mass and /DT/AMS are not computed: refused by name)"),
     e("/PRINT", &["/PRINT/-100/55"], "listing period"),
     e("/ANIM/DT, /ANIM/*", &["/ANIM/DT", "/ANIM/ELEM/VONM"], "state period of the run file"),
     e("/TFILE", &["/TFILE/4"], "time-history period (0: every cycle)"),

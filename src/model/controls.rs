@@ -56,8 +56,6 @@ pub struct Engine {
     /// checked to exist, nothing to switch).
     #[serde(default)]
     pub rbody_on: Vec<(i64, Loc)>,
-    /// /DT/<type>/<action> cards: (type, action, scale, min).
-    pub dt_controls: Vec<DtControl>,
     /// /PRINT/n/nline: listing every |n| cycles; header every nline lines.
     pub print_every: i64,
     pub print_lines: i64,
@@ -91,7 +89,6 @@ impl Default for Engine {
             run: None,
             dt_scale: 0.9,
             dt_min: 0.0,
-            dt_controls: Vec::new(),
             print_every: 0,
             print_lines: 55,
             anim_start: 0.0,
@@ -122,16 +119,6 @@ pub struct RunSpec {
     pub number: i64,
     pub restart_letter: Option<String>,
     pub tstop: f64,
-    pub loc: Loc,
-}
-
-/// A time-step control on a class of entities (Radioss: /DT/...).
-#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
-pub struct DtControl {
-    pub target: String,
-    pub action: String,
-    pub scale: f64,
-    pub min: f64,
     pub loc: Loc,
 }
 
