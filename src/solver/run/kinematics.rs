@@ -165,8 +165,11 @@ fn rigid_bodies(cx: &Ctx, s: &mut State, dt_v: f64) {
 /// The /BCS and /IMPVEL of a rigid body's main node act on the body (as in
 /// Radioss): its velocity (translations) or spin (rotations, global frame)
 /// in those directions is zero or imposed at t + ½Δt. The reaction's work
-/// on the translations, m (v_imposed − v_free)·v_imposed, is external work,
-/// counted once, on the rank that owns the main node.
+/// on the translations, m (v_imposed − v_free)·v_imposed less
+/// ½m(v_imposed − v^{n−½})² where the imposed velocity jumps (as for nodes,
+/// `imposed_motion`), is external work, counted once, on the rank that owns
+/// the main node; an imposed spin does the work of the rotational energy it
+/// changes.
 fn constrain_body(cx: &Ctx, s: &mut State, b: usize) {
     let lb = &cx.local_bodies[b];
     let mut imposed: [Option<f64>; 6] = lb.main_fixed.map(|f| f.then_some(0.0));
@@ -188,6 +191,7 @@ fn constrain_body(cx: &Ctx, s: &mut State, b: usize) {
         }
     }
     let counts = lb.main_local.is_some_and(|l| cx.owned[l as usize]);
+    let v_prior = s.bodies_v_before[b].0;
     let body = &mut s.bodies[b];
     let spin_before = body.rotational_energy();
     for (k, val) in imposed.iter().enumerate() {
@@ -196,7 +200,9 @@ fn constrain_body(cx: &Ctx, s: &mut State, b: usize) {
         };
         if k < 3 {
             if counts {
+                let jump = val - v_prior[k];
                 s.w_ext.add(body.mass * (val - body.v[k]) * val);
+                s.w_ext.add(-0.5 * body.mass * jump * jump);
             }
             body.v[k] = val;
         } else {
