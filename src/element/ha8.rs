@@ -543,9 +543,7 @@ pub fn ha8_step(
     // Bulk viscosity (MQVISCB) from the centre dilatation.
     let mut q = 0.0;
     if compress > 0.0 {
-        let rho = sec.material.rho() * st.vol0 / vol;
-        let al = vol.cbrt();
-        q = rho * al * compress * (sec.qa * sec.qa * al * compress + sec.qb * sec.c);
+        q = super::hex8::bulk_viscosity(sec, st.vol0, vol, compress);
         out.d_eint += q * compress * vol * dt;
     }
     out.d_eint *= factor;

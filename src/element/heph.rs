@@ -202,9 +202,7 @@ pub fn heph_step(
     // Bulk viscosity from the centre dilatation (as the one-point brick).
     let mut q = 0.0;
     if compress > 0.0 {
-        let rho = mat.rho() * st.vol0 / vol;
-        let al = vol.cbrt();
-        q = rho * al * compress * (sec.qa * sec.qa * al * compress + sec.qb * sec.c);
+        q = super::hex8::bulk_viscosity(sec, st.vol0, vol, compress);
         out.d_eint += q * compress * vol * dt;
     }
     // Hourglass forces: F̂ = F J + c_v q̇ (note eq. 22), Q of eq. 24.

@@ -439,12 +439,9 @@ pub(crate) fn solid_point_update(
         out.d_eint = p * vol_mid * dt;
         out.d_eplas = wp * vol_mid;
     }
-    // Bulk viscosity (MQVISCB): q = ρ l ḋ (qa² l ḋ + qb c), l = V^{1/3}.
     let mut q = 0.0;
     if compress > 0.0 && !out.failed {
-        let rho = mat.rho() * vol0 / vol;
-        let al = vol.cbrt();
-        q = rho * al * compress * (sec.qa * sec.qa * al * compress + sec.qb * sec.c);
+        q = bulk_viscosity(sec, vol0, vol, compress);
         out.d_eint += q * compress * vol_mid * dt;
     }
     out.sig_f = *sig;
@@ -503,6 +500,15 @@ pub fn hex8_init(_sec: &SolidSection, x: &[[f64; 3]; 8]) -> Hex8State {
         vol,
         ..Default::default()
     }
+}
+
+/// Bulk viscosity (MQVISCB) of a brick compressing at the rate `compress`
+/// (> 0): q = ρ l ḋ (qa² l ḋ + qb c), l = V^{1/3}, ρ = ρ_I V₀/V. Shared by
+/// every brick formulation (`super::ha8`, `super::heph`).
+pub(crate) fn bulk_viscosity(sec: &SolidSection, vol0: f64, vol: f64, compress: f64) -> f64 {
+    let rho = sec.material.rho() * vol0 / vol;
+    let al = vol.cbrt();
+    rho * al * compress * (sec.qa * sec.qa * al * compress + sec.qb * sec.c)
 }
 
 /// One explicit step of one brick: stress from x^{n+1} and v^{n+½}, internal
