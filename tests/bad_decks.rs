@@ -1533,3 +1533,52 @@ fn spring_hardening_and_damp_coefficients_are_checked_at_their_card() {
         },
     );
 }
+
+/// /FAIL/TAB names what it needs: at least one failure-strain function
+/// (N_rate), and functions the deck defines.
+#[test]
+fn fail_tab_rates_and_functions_are_checked_at_their_card() {
+    let c = Case::new("fail-tab-nrate");
+    let mut d = base_deck();
+    let at = line_no(&d, "/PART/1") - 1;
+    let card = [
+        s("/FAIL/TAB/1"),
+        i10(1) + &i10(1) + &i10(0),
+        r20("1.0") + &r20("0.0") + &r20("1.0"),
+    ];
+    for (k, l) in card.into_iter().enumerate() {
+        d.insert(at + k, l);
+    }
+    assert_error(
+        &c.check(&d),
+        Expect {
+            file: DECK,
+            line: at + 2,
+            keyword: "/FAIL/TAB/1",
+            field: "N_rate",
+            phrases: &["N_rate >= 1"],
+        },
+    );
+    let c = Case::new("fail-tab-fct");
+    let mut d = base_deck();
+    let at = line_no(&d, "/PART/1") - 1;
+    let card = [
+        s("/FAIL/TAB/1"),
+        i10(1) + &i10(1) + &i10(1),
+        r20("1.0") + &r20("0.0") + &r20("1.0"),
+        i10(77) + &r20("1.0") + &r20("0.0"),
+    ];
+    for (k, l) in card.into_iter().enumerate() {
+        d.insert(at + k, l);
+    }
+    assert_error(
+        &c.check(&d),
+        Expect {
+            file: DECK,
+            line: at + 1,
+            keyword: "/FAIL/TAB/1",
+            field: "fct_ID",
+            phrases: &["function 77", "/FUNCT"],
+        },
+    );
+}

@@ -1,6 +1,6 @@
-//! /FAIL/JOHNSON (Johnson-Cook failure), attached to the material of the same
-//! id. Other failure models stay unsupported (the keyword policy refuses them
-//! by name).
+//! /FAIL/JOHNSON (Johnson-Cook failure) and /FAIL/TAB (tabulated failure,
+//! `failure_tab.rs`), attached to the material of the same id. Other failure
+//! models stay unsupported (the keyword policy refuses them by name).
 //!
 //! Card (reference guide /FAIL/JOHNSON, no title line):
 //! 1. D1 (1-20), D2 (21-40), D3 (41-60), D4 (61-80), D5 (81-100)
@@ -14,7 +14,8 @@ use super::id_index::IdIndex;
 use super::source::Block;
 use super::{header_id, header_id_opt, Deck};
 use crate::model::{
-    FailureModel, FailureSpec, InputError, InputResult, JohnsonFailure, MaterialSpec,
+    FailureModel, FailureSpec, Function, Id, InputError, InputResult, JohnsonFailure, Loc,
+    MaterialSpec, TabFailure,
 };
 
 /// A failure card read, before it is attached to its material.
@@ -24,10 +25,23 @@ pub struct FailureCard {
     pub spec: FailureSpec,
 }
 
-/// Reads /FAIL/JOHNSON/mat_ID; false for another failure model.
+/// Reads /FAIL/JOHNSON/mat_ID and /FAIL/TAB/mat_ID; false for another
+/// failure model.
 pub(super) fn parse_failure(block: &Block, deck: &mut Deck) -> InputResult<bool> {
-    if block.parts.get(1).map(String::as_str) != Some("JOHNSON") {
-        return Ok(false);
+    match block.parts.get(1).map(String::as_str) {
+        Some("JOHNSON") => {}
+        Some("TAB") => {
+            let (mat_id, model) = super::failure_tab::read_fail_tab(block, deck)?;
+            deck.failures.push(FailureCard {
+                mat_id,
+                spec: FailureSpec {
+                    model,
+                    loc: block.loc.clone(),
+                },
+            });
+            return Ok(true);
+        }
+        _ => return Ok(false),
     }
     let mat_id = header_id(block, 2, "mat_ID")?;
     header_id_opt(block, 3, "unit_ID")?;
@@ -77,8 +91,9 @@ pub(super) fn parse_failure(block: &Block, deck: &mut Deck) -> InputResult<bool>
     Ok(true)
 }
 
-/// The deck's materials with their failure cards attached; a card whose
-/// material is not defined is an error at the card.
+/// The deck's materials with their failure cards attached (the curves of a
+/// /FAIL/TAB filled from their /FUNCT); a card whose material or function
+/// is not defined is an error at the card.
 pub(super) fn materials_with_failures(deck: &Deck) -> Result<Vec<MaterialSpec>, InputError> {
     let mut mats = deck.materials.clone();
     let index = IdIndex::build(
@@ -87,8 +102,46 @@ pub(super) fn materials_with_failures(deck: &Deck) -> Result<Vec<MaterialSpec>, 
         "/MAT",
     )?;
     for f in &deck.failures {
-        let m = index.resolve(f.mat_id, &f.spec.loc, "/FAIL/JOHNSON", "mat_ID")?;
-        mats[m as usize].failures.push(f.spec.clone());
+        let kw = match f.spec.model {
+            FailureModel::Johnson(_) => "/FAIL/JOHNSON",
+            FailureModel::Tab(_) => "/FAIL/TAB",
+        };
+        let m = index.resolve(f.mat_id, &f.spec.loc, kw, "mat_ID")?;
+        let mut spec = f.spec.clone();
+        if let FailureModel::Tab(t) = &mut spec.model {
+            let kw = format!("/FAIL/TAB/{}", f.mat_id);
+            fill_tab_curves(t, &deck.functions, &spec.loc, &kw)?;
+        }
+        mats[m as usize].failures.push(spec);
     }
     Ok(mats)
+}
+
+/// Copies the points of a /FAIL/TAB's functions into its curves.
+fn fill_tab_curves(
+    t: &mut TabFailure,
+    functions: &[Function],
+    loc: &Loc,
+    kw: &str,
+) -> InputResult<()> {
+    let points = |fct: Id, field: &str| -> InputResult<(Vec<f64>, Vec<f64>)> {
+        match functions.iter().find(|f| f.id == fct) {
+            Some(f) => Ok((f.x.clone(), f.y.clone())),
+            None => Err(InputError::new(
+                loc.clone(),
+                kw,
+                field,
+                format!("function {fct} is not defined in the deck; expected a /FUNCT id"),
+            )),
+        }
+    };
+    for r in t.rates.iter_mut() {
+        (r.x, r.y) = points(r.fct, "fct_ID")?;
+    }
+    for (c, field) in [(&mut t.size, "fct_IDel"), (&mut t.temperature, "fct_IDt")] {
+        if c.fct > 0 {
+            (c.x, c.y) = points(c.fct, field)?;
+        }
+    }
+    Ok(())
 }

@@ -14,6 +14,7 @@ pub mod source;
 mod conditions;
 mod controls;
 pub(crate) mod engine;
+mod failure_tab;
 mod failures;
 mod id_index;
 mod interfaces;

@@ -86,6 +86,11 @@ pub const SUPPORTED: &[Supported] = &[
         &["/FAIL/JOHNSON/1"],
         "Johnson-Cook damage (D1-D5, EPS_0, EPSF_MIN) on solids, Ifail_so 1-4; on shells refused",
     ),
+    s(
+        "/FAIL/TAB",
+        &["/FAIL/TAB/1"],
+        "tabulated failure: ε_f(η) per strain rate (linear in ε̇), element-size and temperature factors, damage exponent n and Dcrit; card layout by input version (110, 120/130); shells (Ifail_sh 1, 2, 3 with P_thickfail; element deleted at once) and solids (Ifail_so 1, 2; no size factor); Ixfem refused; D (softening) read and, as in the reference engine, not applied",
+    ),
     s("/PROP/TYPE1 (/PROP/SHELL)", &["/PROP/TYPE1/1", "/PROP/SHELL/1"], "shell sections: Ishell, Ismstr, Ithick, Iplas, N, thickness, hourglass coefficients"),
     s("/PROP/TYPE14 (/PROP/SOLID)", &["/PROP/TYPE14/1", "/PROP/SOLID/1"], "solid sections: Isolid 1, 2 (one point), 12 (S8), 14 (HA8), 17 (H8C; an input version before 2019 reads 12 as 17), Icpre and Inpts, hourglass coefficients, dtmin"),
     s("/PROP/TYPE4 (/PROP/SPRING)", &["/PROP/TYPE4/1", "/PROP/SPRING/1"], "axial springs: K, C, the force curve with hardening H = 0, 1, 2, 4, 5, 6, 7, 8 and its unloading curve, the rate terms A + B ln(δ̇/D) + E g(δ̇/F) and Hscale h(δ̇/F), failure bounds, Ileng (sensor refused)"),

@@ -40,7 +40,7 @@
 //! No hourglass control is needed: 8 points integrate every mode.
 
 use super::hex8::{cross, dot, solid_time_step, Hex8Out, SolidSection};
-use crate::material::Material;
+use crate::material::{FailAt, Material};
 use crate::model::ResolvedSolid;
 use serde::{Deserialize, Serialize};
 
@@ -471,7 +471,12 @@ fn update_points(
         let mut gone = mat.has_failed(*ep);
         if let (Some(f), false) = (&sec.failure, gone) {
             let tstar = mat.homologous_temperature(temp);
-            gone = f.solid(sig, &mut st.dmg_p[p], *ep - ep0, st.eps_dot, tstar);
+            let at = FailAt {
+                rate: st.eps_dot,
+                tstar,
+                ..Default::default()
+            };
+            gone = f.solid(sig, &mut st.dmg_p[p], *ep - ep0, &at);
         }
         failed |= gone;
         let w: f64 = (0..6).map(|k| 0.5 * (old[k] + sig[k]) * deps[k]).sum();

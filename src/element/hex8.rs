@@ -52,7 +52,7 @@
 //!
 //! No heap allocation: everything is fixed-size on the stack.
 
-use crate::material::{Failure, Material};
+use crate::material::{FailAt, Failure, Material};
 use crate::model::ResolvedSolid;
 use serde::{Deserialize, Serialize};
 
@@ -426,7 +426,12 @@ pub(crate) fn solid_point_update(
         out.failed = mat.has_failed(*eps_p);
         if let (Some(f), false) = (&sec.failure, out.failed) {
             let tstar = mat.homologous_temperature(temp);
-            out.failed = f.solid(sig, dmg, *eps_p - ep0, *eps_dot, tstar);
+            let at = FailAt {
+                rate: *eps_dot,
+                tstar,
+                ..Default::default()
+            };
+            out.failed = f.solid(sig, dmg, *eps_p - ep0, &at);
         }
         if out.failed {
             *sig = [0.0; 6];

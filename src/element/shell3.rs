@@ -38,7 +38,7 @@
 //! No heap allocation: everything is fixed-size on the stack.
 
 use super::shell4::{shell4_resultants, update_slots, ShellSection};
-use crate::material::Material;
+use crate::material::{FailAt, Material};
 use crate::model::ResolvedShell;
 
 /// Refuses the 3-node formulations this kernel does not compute.
@@ -80,6 +80,9 @@ pub struct Shell3State {
     pub eps_dot: f64,
     /// All points have failed: the element is deleted.
     pub deleted: bool,
+    /// Initial characteristic (time-step) length, for a failure model's
+    /// element-size factor.
+    pub len0: f64,
 }
 
 /// What one element step returns.
@@ -195,6 +198,7 @@ pub fn shell3_init(_sec: &ShellSection, x: &[[f64; 3]; 3], thick: f64) -> Shell3
     Shell3State {
         thick,
         area0: 0.5 * dot(n, n).sqrt(),
+        len0: Geom::new(x).map_or(0.0, |g| g.char_length()),
         ..Default::default()
     }
 }
@@ -215,6 +219,7 @@ pub fn shell3_step(
     st: &mut Shell3State,
     sig: &mut [[f64; 5]],
     eps_p: &mut [f64],
+    dmg: &mut [f64],
 ) -> Shell3Out {
     let mut out = Shell3Out {
         dt: f64::INFINITY,
@@ -295,7 +300,7 @@ pub fn shell3_step(
     let temp = mat.temperature(st.eint / vol);
     let gs = mat.shear_modulus() * sec.ashear;
     let (dgyz, dgzx) = (gyz * dt, gxz * dt);
-    let (dwp, dezz, nfailed);
+    let (dwp, dezz, deleted);
     if dt > 0.0 {
         let (n0, m0, q0) = shell4_resultants(sec, t, sig);
         for s in sig[..n_ip].iter_mut() {
@@ -303,12 +308,19 @@ pub fn shell3_step(
             s[4] += gs * dgzx;
         }
         let law = mat.at(st.eps_dot, temp);
-        (dwp, dezz, nfailed) = update_slots(
+        let at = FailAt {
+            rate: st.eps_dot,
+            len0: st.len0,
+            tstar: mat.homologous_temperature(temp),
+        };
+        (dwp, dezz, deleted) = update_slots(
             sec,
             &law,
             t,
             &mut sig[..n_ip],
             &mut eps_p[..n_ip],
+            &mut dmg[..n_ip],
+            &at,
             [dxx, dyy, gxy],
             [kxx, kyy, kxy],
             dt,
@@ -329,12 +341,13 @@ pub fn shell3_step(
                 + (q0[1] + q1[1]) * gyz);
     } else {
         (dwp, dezz) = (0.0, 0.0);
-        nfailed = (0..n_ip).filter(|&k| mat.has_failed(eps_p[k])).count();
+        let nfailed = (0..n_ip).filter(|&k| mat.has_failed(eps_p[k])).count();
+        deleted = nfailed == n_ip || (nfailed > 0 && mat.deletes_at_first_failed_point());
     }
     out.d_eplas = dwp * vol;
     st.eint += out.d_eint;
     st.eplas += out.d_eplas;
-    if nfailed == n_ip || (nfailed > 0 && sec.material.deletes_at_first_failed_point()) {
+    if deleted {
         st.deleted = true;
         out.failed = true;
         return out;
@@ -410,6 +423,7 @@ mod tests {
         st: Shell3State,
         sig: [[f64; 5]; 10],
         ep: [f64; 10],
+        dmg: [f64; 10],
     }
 
     impl El {
@@ -418,6 +432,7 @@ mod tests {
                 st: shell3_init(sec, x, t),
                 sig: [[0.0; 5]; 10],
                 ep: [0.0; 10],
+                dmg: [0.0; 10],
             }
         }
         fn step(
@@ -428,7 +443,8 @@ mod tests {
             vr: &[[f64; 3]; 3],
             dt: f64,
         ) -> Shell3Out {
-            shell3_step(sec, x, v, vr, dt, &mut self.st, &mut self.sig, &mut self.ep)
+            let (st, sig, ep, dmg) = (&mut self.st, &mut self.sig, &mut self.ep, &mut self.dmg);
+            shell3_step(sec, x, v, vr, dt, st, sig, ep, dmg)
         }
     }
 

@@ -106,7 +106,7 @@
 //!
 //! No heap allocation: everything is fixed-size on the stack.
 
-use crate::material::{Material, PointLaw};
+use crate::material::{FailAt, Failure, Material, PointLaw};
 use crate::model::ResolvedShell;
 use serde::{Deserialize, Serialize};
 
@@ -145,6 +145,10 @@ pub struct ShellSection {
     #[serde(default)]
     pub tension: Option<[f64; 3]>,
     pub material: Material,
+    /// The material's failure model (/FAIL/TAB on shells), if any: its
+    /// damage per point lives beside the stresses.
+    #[serde(default)]
+    pub failure: Option<Failure>,
     /// Point positions ζ_k ∈ [−½, ½] (fraction of the thickness, k = 0 at the bottom).
     pub zeta: [f64; MAX_IP],
     /// Membrane weights (N = tΣ w_mem σ_k; they sum to 1).
@@ -284,6 +288,7 @@ impl ShellSection {
             dn: r.dn,
             tension: m.tension_damage(),
             material: m.clone(),
+            failure: None,
             zeta,
             w_mem,
             w_bend,
@@ -350,6 +355,9 @@ pub struct Shell4State {
     /// Total membrane strain and curvature [ε_xx, ε_yy, γ_xy, κ_xx, κ_yy,
     /// κ_xy] (local frame), kept for LAW36's tension damage.
     pub strain: [f64; 6],
+    /// Initial characteristic (time-step) length, for a failure model's
+    /// element-size factor.
+    pub len0: f64,
 }
 
 /// What one element step returns.
@@ -508,10 +516,17 @@ fn char_length(sec: &ShellSection, g: &Geom, tri: bool) -> f64 {
 /// Element state at t = 0.
 pub fn shell4_init(sec: &ShellSection, x: &[[f64; 3]; 4], thick: f64) -> Shell4State {
     let n = cross(sub(x[2], x[0]), sub(x[3], x[1]));
+    let tri = x[2] == x[3];
+    let len0 = match Geom::new(x) {
+        Some(g) if sec.ishell == 24 && !tri => qeph::char_length(sec, &g),
+        Some(g) => char_length(sec, &g, tri),
+        None => 0.0,
+    };
     Shell4State {
         thick,
         area0: 0.5 * dot(n, n).sqrt(),
-        tri: x[2] == x[3],
+        tri,
+        len0,
         geo0: if sec.ismstr == 1 { Geom::new(x) } else { None },
         ..Default::default()
     }
@@ -559,9 +574,13 @@ pub fn shell4_resultants(
 ///   s_b = ½(σ_1 − σ_0) with Δε = d_m Δt and the surface bending strain
 ///   ½t d_k Δt; the slots become s_m ∓ s_b and both keep the section's ε̄_p.
 ///
-/// A failed slot gets zero stress (transverse shear included). Returns the
-/// plastic work per unit volume Σ w_N Δw_p, the thickness strain increment
-/// Σ w_N Δε_zz and the number of failed slots.
+/// A failed slot gets zero stress (transverse shear included). With a
+/// failure model (`sec.failure`, /FAIL/TAB) each point's damage `dmg` grows
+/// with its plastic increment at the failure strain of `at`; a failed point
+/// carries no stress (Ifail_sh 1, 2) or keeps it (3). Returns the plastic
+/// work per unit volume Σ w_N Δw_p, the thickness strain increment Σ w_N Δε_zz
+/// and whether the element is deleted: all points failed (or the first one,
+/// LAW36's EPS_p_max) by the law, or the failure model's deletion rule.
 #[allow(clippy::too_many_arguments)]
 pub(super) fn update_slots(
     sec: &ShellSection,
@@ -569,11 +588,13 @@ pub(super) fn update_slots(
     t: f64,
     sig: &mut [[f64; 5]],
     eps_p: &mut [f64],
+    dmg: &mut [f64],
+    at: &FailAt,
     d_m: [f64; 3],
     d_k: [f64; 3],
     dt: f64,
     strain: Option<&[f64; 6]>,
-) -> (f64, f64, usize) {
+) -> (f64, f64, bool) {
     if sec.global {
         let (lo, hi) = (sig[0], sig[1]);
         let mut s_m = [0.0; 3];
@@ -592,16 +613,26 @@ pub(super) fn update_slots(
         if r.failed {
             sig[0] = [0.0; 5];
             sig[1] = [0.0; 5];
-            return (r.d_wplas, r.d_ezz, 2);
+            return (r.d_wplas, r.d_ezz, true);
         }
         for c in 0..3 {
             sig[0][c] = s_m[c] - s_b[c];
             sig[1][c] = s_m[c] + s_b[c];
         }
-        return (r.d_wplas, r.d_ezz, 0);
+        return (r.d_wplas, r.d_ezz, false);
     }
+    let fail = sec.failure.as_ref().and_then(Failure::shell);
     let (mut dwp, mut dezz, mut nfailed) = (0.0, 0.0, 0);
+    let (mut w_broken, mut nbroken) = (0.0, 0);
     for (k, (s, ep)) in sig.iter_mut().zip(eps_p.iter_mut()).enumerate() {
+        let wm = sec.w_mem[k];
+        if fail.is_some_and(|f| f.has_failed(dmg[k]) && f.zeroes_shell_point()) {
+            // A failed point of Ifail_sh 1, 2 stays off: no stress, no work.
+            *s = [0.0; 5];
+            w_broken += wm;
+            nbroken += 1;
+            continue;
+        }
         let z = sec.zeta[k] * t;
         let d = [
             (d_m[0] + z * d_k[0]) * dt,
@@ -617,18 +648,30 @@ pub(super) fn update_slots(
             }
             _ => (*law, false),
         };
+        let ep0 = *ep;
         let r = lk.plane_stress(&mut s3, ep, d, sec.iplas);
         if r.failed || torn {
             *s = [0.0; 5];
             nfailed += 1;
         } else {
             s[..3].copy_from_slice(&s3);
+            if let Some(f) = fail {
+                if f.shell(&s3, &mut dmg[k], *ep - ep0, at) {
+                    if f.zeroes_shell_point() {
+                        *s = [0.0; 5];
+                    }
+                    w_broken += wm;
+                    nbroken += 1;
+                }
+            }
         }
-        let wm = sec.w_mem[k];
         dwp += wm * r.d_wplas;
         dezz += wm * r.d_ezz;
     }
-    (dwp, dezz, nfailed)
+    let n_ip = sig.len();
+    let by_law = nfailed == n_ip || (nfailed > 0 && sec.material.deletes_at_first_failed_point());
+    let by_model = fail.is_some_and(|f| f.deletes_shell(w_broken, nbroken, n_ip));
+    (dwp, dezz, by_law || by_model)
 }
 
 /// The largest principal value of an in-plane strain [ε_xx, ε_yy, γ_xy]
@@ -710,6 +753,7 @@ pub fn shell4_step(
     st: &mut Shell4State,
     sig: &mut [[f64; 5]],
     eps_p: &mut [f64],
+    dmg: &mut [f64],
 ) -> Shell4Out {
     let mut out = Shell4Out {
         dt: f64::INFINITY,
@@ -816,7 +860,7 @@ pub fn shell4_step(
     let (gxz, gyz) = rot_inc.vector(gxz, gyz);
 
     let t = st.thick;
-    if dt > 0.0 && kc.rate {
+    if dt > 0.0 && (kc.rate || sec.failure.is_some()) {
         let (a, b, g) = (d_m[0], d_m[1], d_m[2]);
         let em = a * a + b * b + a * b + 0.25 * g * g;
         let (a, b, g) = (d_k[0], d_k[1], d_k[2]);
@@ -842,7 +886,7 @@ pub fn shell4_step(
     let mut mo = [0.0; 3];
     let mut qo = [0.0; 2];
     let mut ep0 = [0.0; MAX_IP];
-    let (dwp, dezz, nfailed) = if dt > 0.0 {
+    let (dwp, dezz, deleted) = if dt > 0.0 {
         // Old stresses turned to this step's frame; transverse shear elastic.
         for (k, s) in sig.iter_mut().enumerate() {
             let (wm, wb) = (sec.w_mem[k], sec.w_bend[k]);
@@ -875,10 +919,17 @@ pub fn shell4_step(
         } else {
             None
         };
-        update_slots(sec, &law, t, sig, eps_p, d_m, d_k, dt, strain)
+        let at = FailAt {
+            rate: st.eps_dot,
+            len0: st.len0,
+            tstar: mat.homologous_temperature(temp),
+        };
+        let dmg = &mut dmg[..n_ip];
+        update_slots(sec, &law, t, sig, eps_p, dmg, &at, d_m, d_k, dt, strain)
     } else {
         let failed = eps_p.iter().filter(|&&e| law.has_failed(e)).count();
-        (0.0, 0.0, failed)
+        let deleted = failed == n_ip || (failed > 0 && mat.deletes_at_first_failed_point());
+        (0.0, 0.0, deleted)
     };
     for (k, s) in sig.iter().enumerate() {
         let (wm, wb) = (sec.w_mem[k], sec.w_bend[k]);
@@ -906,7 +957,7 @@ pub fn shell4_step(
         st.eint += out.d_eint;
         st.eplas += out.d_eplas;
     }
-    if nfailed == n_ip || (nfailed > 0 && mat.deletes_at_first_failed_point()) {
+    if deleted {
         st.deleted = true;
         out.failed = true;
         return out;

@@ -129,6 +129,7 @@ struct El {
     st: Shell4State,
     sig: Vec<[f64; 5]>,
     ep: Vec<f64>,
+    dmg: Vec<f64>,
 }
 
 impl El {
@@ -137,6 +138,7 @@ impl El {
             st: shell4_init(sec, x, thick),
             sig: vec![[0.0; 5]; sec.n_ip],
             ep: vec![0.0; sec.n_ip],
+            dmg: vec![0.0; sec.n_ip],
         }
     }
     fn step(
@@ -147,7 +149,8 @@ impl El {
         vr: &[[f64; 3]; 4],
         dt: f64,
     ) -> Shell4Out {
-        shell4_step(sec, x, v, vr, dt, &mut self.st, &mut self.sig, &mut self.ep)
+        let (st, sig, ep, dmg) = (&mut self.st, &mut self.sig, &mut self.ep, &mut self.dmg);
+        shell4_step(sec, x, v, vr, dt, st, sig, ep, dmg)
     }
 }
 
@@ -1264,6 +1267,7 @@ fn n0_energy_balance_in_plastic_bending() {
                 st: el.st,
                 sig: el.sig.clone(),
                 ep: el.ep.clone(),
+                dmg: el.dmg.clone(),
             };
             let before = (res(&g0, &more).1[0], more.st.eplas);
             uniaxial_bending(&g0, &mut more, 0.3, 0, 1);

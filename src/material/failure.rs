@@ -1,9 +1,10 @@
 //! The failure-model registry: one variant of [`Failure`] per model, one file
-//! per model (`fail_johnson.rs`). A material carries at most one model today;
+//! per model (`fail_johnson.rs`, `fail_tab.rs`). A material carries at most one model today;
 //! the element sections hold it and call it per integration point after the
 //! material update (the damage lives in the element state).
 
 use super::fail_johnson::FailJohnson;
+use super::fail_tab::{FailAt, FailTab};
 use crate::model::{FailureModel, FailureSpec};
 use serde::{Deserialize, Serialize};
 
@@ -12,6 +13,8 @@ use serde::{Deserialize, Serialize};
 pub enum Failure {
     /// /FAIL/JOHNSON.
     Johnson(FailJohnson),
+    /// /FAIL/TAB.
+    Tab(FailTab),
 }
 
 impl Failure {
@@ -22,6 +25,7 @@ impl Failure {
             [] => Ok(None),
             [one] => match &one.model {
                 FailureModel::Johnson(j) => Ok(Some(Failure::Johnson(FailJohnson::new(j)?))),
+                FailureModel::Tab(t) => Ok(Some(Failure::Tab(FailTab::new(t)?))),
             },
             _ => Err(format!(
                 "{} failure models on one material: only one /FAIL card per material is computed",
@@ -30,19 +34,45 @@ impl Failure {
         }
     }
 
-    /// One solid point after its material update (see [`FailJohnson::solid`]):
-    /// true when the element is to be deleted.
+    /// One solid point after its material update (see [`FailJohnson::solid`],
+    /// [`FailTab::solid`]): true when the element is to be deleted. Solids
+    /// do not keep their initial length: `at.len0` is not used, and a
+    /// /FAIL/TAB with an element-size function is refused on solids
+    /// ([`Failure::solid_refusal`]).
     #[inline]
-    pub fn solid(
-        &self,
-        sig: &mut [f64; 6],
-        dmg: &mut f64,
-        dep: f64,
-        rate: f64,
-        tstar: f64,
-    ) -> bool {
+    pub fn solid(&self, sig: &mut [f64; 6], dmg: &mut f64, dep: f64, at: &FailAt) -> bool {
         match self {
-            Failure::Johnson(f) => f.solid(sig, dmg, dep, rate, tstar),
+            Failure::Johnson(f) => f.solid(sig, dmg, dep, at.rate, at.tstar),
+            Failure::Tab(f) => f.solid(sig, dmg, dep, at),
+        }
+    }
+
+    /// What the engine cannot compute of this model on solids, by name.
+    pub fn solid_refusal(&self) -> Option<String> {
+        match self {
+            Failure::Tab(f) if f.has_size_function() => Some(
+                "/FAIL/TAB with an element-size function (fct_IDel, Fscale_el) on solids is not computed yet (shells only)".into(),
+            ),
+            _ => None,
+        }
+    }
+
+    /// The model on shells: `None` where shells refuse it (by name, from
+    /// [`Failure::shell_refusal`]).
+    pub fn shell(&self) -> Option<&FailTab> {
+        match self {
+            Failure::Tab(f) => Some(f),
+            Failure::Johnson(_) => None,
+        }
+    }
+
+    /// What the engine cannot compute of this model on shells, by name.
+    pub fn shell_refusal(&self) -> Option<String> {
+        match self {
+            Failure::Johnson(_) => Some(
+                "/FAIL/JOHNSON on shell elements is not computed yet (solids only; /FAIL/TAB works on both)".into(),
+            ),
+            Failure::Tab(_) => None,
         }
     }
 }

@@ -8,6 +8,7 @@
 //! Ilyushin) update of `ilyushin.rs`.
 
 mod fail_johnson;
+mod fail_tab;
 mod failure;
 mod hardening;
 mod ilyushin;
@@ -23,6 +24,7 @@ mod return_map;
 mod tabulated_flow;
 
 pub use fail_johnson::FailJohnson;
+pub use fail_tab::{shell_triaxiality, FailAt, FailTab};
 pub use failure::Failure;
 pub use hardening::Hardening;
 pub use ilyushin::ilyushin_equivalent;

@@ -36,6 +36,51 @@ pub struct FailureSpec {
 pub enum FailureModel {
     /// /FAIL/JOHNSON: Johnson-Cook damage D = Σ Δε_p / ε_f(σ*, ε̇, T*).
     Johnson(JohnsonFailure),
+    /// /FAIL/TAB: tabulated failure strain ε_f(η, ε̇)·g(L/L_ref)·h(T*),
+    /// damage D = Σ w(D)·Δε_p/ε_f, the point fails at Dcrit.
+    Tab(TabFailure),
+}
+
+/// /FAIL/TAB parameters (reference guide /FAIL/TAB; research note
+/// `docs/notes/fail_tab_research.md` §2), defaults resolved as the starter:
+/// Ifail_sh, Ifail_so 0 → 1, Dcrit 0 → 1, D = 1 → 0.999, n 0 → 1,
+/// Fscale_el, FscaleT 0 → 1, EI_ref 0 → 1; a blank P_thickfail stays 0 (the
+/// deletion rule then asks for every point). The curves' points are copied
+/// from their /FUNCT by the model builder.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct TabFailure {
+    /// Shells: 1 = deleted when one point fails (its stress zeroed); 2 = the
+    /// failed point's stress zeroed, deleted when all have failed; 3 = the
+    /// stress kept, deleted when the failed points' thickness fraction
+    /// reaches P_thickfail.
+    pub ifail_sh: i64,
+    /// Solids: 1 = deleted when one point fails; 2 = the deviatoric stress vanishes.
+    pub ifail_so: i64,
+    /// Fraction of the thickness whose points must fail (Ifail_sh 3; 0 = all).
+    pub p_thickfail: f64,
+    pub dcrit: f64,
+    /// Damage parameter D (read; the old engine applies no softening).
+    pub d: f64,
+    /// Damage exponent n of w = n·D^(1−1/n).
+    pub n: f64,
+    /// ε_f(η) = Fscale_i·f_i(η) at strain rate ε̇_i, by increasing rate.
+    pub rates: Vec<RateCurve>,
+    /// Element-size factor g(L/EI_ref)·Fscale_el (fct 0: 1).
+    pub size: ScaleCurve,
+    pub el_ref: f64,
+    /// Temperature factor h(T*)·FscaleT (fct 0: 1).
+    pub temperature: ScaleCurve,
+}
+
+/// A scale function Fscale·f(x) of a failure card (fct 0: the constant Fscale).
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct ScaleCurve {
+    pub fct: Id,
+    pub fscale: f64,
+    #[serde(default)]
+    pub x: Vec<f64>,
+    #[serde(default)]
+    pub y: Vec<f64>,
 }
 
 /// /FAIL/JOHNSON parameters (reference guide /FAIL/JOHNSON; defaults as the

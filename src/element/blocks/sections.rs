@@ -91,13 +91,20 @@ pub(super) fn shell_sections(
         let part = &parts[p as usize];
         let prop = shell_property(part, props)?;
         let card = part_material(part, mats, SHELL_WITHOUT_MATERIAL)?;
-        if let Some(f) = card.failures.first() {
-            return Err(format!(
-                "{}: a failure model on shell elements is not computed yet (only on solids)",
-                f.loc
-            ));
+        let mut section = new_section(prop, &Material::from_card(card))?;
+        section.failure = Failure::of_material(&card.failures)?;
+        if let (Some(f), Some(spec)) = (&section.failure, card.failures.first()) {
+            if let Some(why) = f.shell_refusal() {
+                return Err(format!("{}: {why}", spec.loc));
+            }
+            if section.global {
+                return Err(format!(
+                    "{}: a failure model on a shell section with global integration (N = 0) is not computed; give N >= 1 integration points",
+                    spec.loc
+                ));
+            }
         }
-        new_section(prop, &Material::from_card(card))
+        Ok(section)
     })
 }
 
@@ -116,6 +123,11 @@ pub(super) fn solid_sections(
         let card = part_material(part, mats, SOLID_WITHOUT_MATERIAL)?;
         let mut section = new_section(prop, &Material::from_card(card))?;
         section.failure = Failure::of_material(&card.failures)?;
+        if let (Some(f), Some(spec)) = (&section.failure, card.failures.first()) {
+            if let Some(why) = f.solid_refusal() {
+                return Err(format!("{}: {why}", spec.loc));
+            }
+        }
         Ok(section)
     })
 }

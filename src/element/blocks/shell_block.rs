@@ -11,6 +11,8 @@ macro_rules! shell_block {
             state: Vec<$state>,
             sig: Vec<[f64; 5]>,
             eps_p: Vec<f64>,
+            /// Damage of the failure model per point (0 without one).
+            dmg: Vec<f64>,
             nip: usize,
             alive: Vec<bool>,
             steps: Vec<ElemStep>,
@@ -43,6 +45,7 @@ macro_rules! shell_block {
                     state,
                     sig: vec![[0.0; 5]; n * nip],
                     eps_p: vec![0.0; n * nip],
+                    dmg: vec![0.0; n * nip],
                     nip,
                     alive: vec![true; n],
                     steps: vec![ElemStep::default(); n],
@@ -75,10 +78,11 @@ macro_rules! shell_block {
                     .zip(self.state.par_iter_mut())
                     .zip(self.sig.par_chunks_mut(nip))
                     .zip(self.eps_p.par_chunks_mut(nip))
+                    .zip(self.dmg.par_chunks_mut(nip))
                     .zip(self.steps.par_iter_mut())
                     .zip(self.alive.par_iter())
                     .enumerate()
-                    .for_each(|(e, (((((c, st), sig), eps), out), alive))| {
+                    .for_each(|(e, ((((((c, st), sig), eps), dmg), out), alive))| {
                         if !*alive {
                             c.iter_mut().for_each(|s| *s = [0.0; SLOT]);
                             *out = ElemStep {
@@ -98,6 +102,7 @@ macro_rules! shell_block {
                             st,
                             &mut sig[..n],
                             &mut eps[..n],
+                            &mut dmg[..n],
                         );
                         for k in 0..$nn {
                             c[k] = [
@@ -177,16 +182,17 @@ macro_rules! shell_block {
                 bincode::serialize(&(
                     &self.state[e],
                     &self.sig[pts.clone()],
-                    &self.eps_p[pts],
+                    &self.eps_p[pts.clone()],
+                    &self.dmg[pts],
                     self.alive[e],
                 ))
                 .expect("element state serializes")
             }
             fn import_state(&mut self, e: usize, bytes: &[u8]) -> Result<(), String> {
-                let (st, sig, eps, alive): ($state, Vec<[f64; 5]>, Vec<f64>, bool) =
+                let (st, sig, eps, dmg, alive): ($state, Vec<[f64; 5]>, Vec<f64>, Vec<f64>, bool) =
                     decode_state(bytes, "shell")?;
                 let n = self.sections[self.section[e] as usize].n_ip.max(1);
-                if sig.len() != n || eps.len() != n {
+                if sig.len() != n || eps.len() != n || dmg.len() != n {
                     return Err(format!(
                         "shell element state has {} integration points, the section has {n}",
                         sig.len()
@@ -195,6 +201,7 @@ macro_rules! shell_block {
                 self.state[e] = st;
                 self.sig[e * self.nip..e * self.nip + n].copy_from_slice(&sig);
                 self.eps_p[e * self.nip..e * self.nip + n].copy_from_slice(&eps);
+                self.dmg[e * self.nip..e * self.nip + n].copy_from_slice(&dmg);
                 self.alive[e] = alive;
                 Ok(())
             }

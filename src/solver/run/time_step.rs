@@ -8,6 +8,9 @@ use crate::element::blocks::Block;
 use crate::error::RunError;
 use crate::model::ElementKind;
 
+/// Largest growth of the step from one cycle to the next.
+const GROWTH: f64 = 1.1;
+
 /// What this rank found at the end of a cycle's forces.
 #[derive(Default)]
 pub(super) struct Found {
@@ -88,7 +91,7 @@ pub(super) fn global_step(cx: &Ctx, s: &State, found: Found) -> Result<Step, Run
         // Every element has failed: the step grows by 10% a cycle from the
         // last one, as the reference engine's does (the nodes fly on).
         Step {
-            dt: s.step.dt * 1.1 / cx.g.engine.dt_scale,
+            dt: s.step.dt * GROWTH / cx.g.engine.dt_scale,
             ..s.step
         }
     } else {
@@ -106,6 +109,12 @@ pub(super) fn global_step(cx: &Ctx, s: &State, found: Found) -> Result<Step, Run
     }
     if max > 0.0 {
         step.dt = step.dt.min(max);
+    }
+    // The step grows by at most 10% a cycle, as the reference engine's does
+    // (after an element is deleted its listing climbs ×1.1 per cycle to the
+    // next element's step: RUPTURE_FAIL_TAB_ELEM_SAMP, RESSORT_couple).
+    if s.step.dt > 0.0 && step.dt > GROWTH * s.step.dt {
+        step.dt = GROWTH * s.step.dt;
     }
     Ok(step)
 }
