@@ -1582,3 +1582,51 @@ fn fail_tab_rates_and_functions_are_checked_at_their_card() {
         },
     );
 }
+
+/// A moving skew names three nodes that span a frame; an unknown Dir is
+/// named.
+#[test]
+fn moving_skews_need_three_independent_nodes_and_a_known_axis() {
+    let c = Case::new("skew-aligned");
+    let mut d = base_deck();
+    let at = line_no(&d, "/PART/1") - 1;
+    let skew = [
+        s("/SKEW/MOV/4"),
+        s("moving frame"),
+        i10(1) + &i10(1) + &i10(2),
+    ];
+    for (k, l) in skew.into_iter().enumerate() {
+        d.insert(at + k, l);
+    }
+    assert_error(
+        &c.check(&d),
+        Expect {
+            file: DECK,
+            line: at + 1,
+            keyword: "/SKEW/MOV/4",
+            field: "axes",
+            phrases: &["degenerate", "three independent directions"],
+        },
+    );
+    let c = Case::new("skew-dir");
+    let mut d = base_deck();
+    let at = line_no(&d, "/PART/1") - 1;
+    let skew = [
+        s("/SKEW/MOV/4"),
+        s("moving frame"),
+        i10(1) + &i10(2) + &i10(3) + "         W",
+    ];
+    for (k, l) in skew.into_iter().enumerate() {
+        d.insert(at + k, l);
+    }
+    assert_error(
+        &c.check(&d),
+        Expect {
+            file: DECK,
+            line: at + 3,
+            keyword: "/SKEW/MOV/4",
+            field: "Dir",
+            phrases: &["'W'", "X, Y or Z"],
+        },
+    );
+}

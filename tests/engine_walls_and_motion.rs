@@ -203,11 +203,18 @@ fn imposed_displacement_is_followed_exactly() {
 /// with `loads` (cards on the main node) added; runs it and returns the
 /// final-state rows (id, x, y, z, vx, vy, vz, ...).
 fn rigid_plate_with(tag: &str, loads: &[&str]) -> Vec<Vec<f64>> {
+    rigid_plate_inertia(tag, 0.0, loads)
+}
+
+/// `rigid_plate_with`, the card giving the body the added inertia Jxx = Jyy
+/// = Jzz = `j` (at its main node).
+fn rigid_plate_inertia(tag: &str, j: f64, loads: &[&str]) -> Vec<Vec<f64>> {
     let src = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("decks/free_plate");
     let dir = tmp(tag);
+    let inertia = format!("{j:>20}{j:>20}{j:>20}");
     let starter = std::fs::read_to_string(src.join("free_plate_0000.rad")).unwrap();
     let head = &starter[..starter.find("/INIVEL/TRA/1").unwrap()];
-    let body = [
+    let body: [&str; 17] = [
         "/NODE",
         "      1000                  40                  30                   0",
         "/GRNOD/PART/7",
@@ -216,7 +223,7 @@ fn rigid_plate_with(tag: &str, loads: &[&str]) -> Vec<Vec<f64>> {
         "/RBODY/1",
         "plate as one rigid body",
         "      1000         0         0         0                 0.5         7         0         0         0",
-        "                   0                   0                   0",
+        &inertia,
         "                   0                   0                   0",
         "/FUNCT/3",
         "constant",
@@ -360,4 +367,41 @@ fn imposed_displacement_on_a_rigid_bodys_main_node_moves_the_body() {
             c[3]
         );
     }
+}
+
+/// An initial spin on a rigid body's main node only (/INIVEL/ROT, ω_z =
+/// 0.01) spins the body with the angular momentum it brings: the main node
+/// carries the card's inertia J = 1e6, so the body's spin is J ω/(J + the
+/// plate's ~31): every node moves at |v| = ω·|r − c| to 1e-4 (the reference
+/// engine starts OPTIONS_frame_or_skew_MOV_frame so: K-ENERGY R ½Jω² at
+/// cycle 0, no external work). Without card inertia the main node's spin
+/// carries no angular momentum and the body stays at rest.
+#[test]
+fn an_initial_spin_on_a_rigid_bodys_main_node_spins_the_body() {
+    let omega = 0.01;
+    let spin = [
+        "/INIVEL/ROT/9",
+        "spin about z",
+        "                   0                   0                0.01         8         0",
+    ];
+    let rows = rigid_plate_inertia("rbody-inivel-rot", 1e6, &spin);
+    let mut checked = 0;
+    for c in rows {
+        let r = ((c[1] - 40.0).powi(2) + (c[2] - 30.0).powi(2)).sqrt();
+        let speed = (c[4] * c[4] + c[5] * c[5] + c[6] * c[6]).sqrt();
+        if r > 1.0 {
+            assert!(
+                (speed - omega * r).abs() < 1e-4 * omega * r,
+                "node {}: speed {speed} at r = {r}, expected ω r = {}",
+                c[0],
+                omega * r
+            );
+            checked += 1;
+        }
+    }
+    assert!(checked > 10, "{checked} nodes checked");
+    let still = rigid_plate_with("rbody-inivel-rot-0", &spin);
+    assert!(still
+        .iter()
+        .all(|c| c[4] == 0.0 && c[5] == 0.0 && c[6] == 0.0));
 }

@@ -242,6 +242,16 @@ pub(super) fn parse_th(block: &Block, deck: &mut Deck) -> InputResult<bool> {
             if v != 0 {
                 objects.push(v);
             }
+            // Iskew (11-20): the histories are written in the global frame.
+            if let Some(sk) = c.text(11, 10).parse::<u64>().ok().filter(|&k| k != 0) {
+                deck.warnings.push(crate::model::Warning {
+                    loc: c.loc(),
+                    keyword: block.header.clone(),
+                    message: format!(
+                        "object {v}: Iskew {sk}: its time history is written in the global frame (histories in a skew or frame are not written yet); the solution does not depend on it"
+                    ),
+                });
+            }
         } else {
             for k in 0..10 {
                 let v = c.id_opt(1 + 10 * k, "obj_ID")?;

@@ -28,6 +28,7 @@ mod mesh;
 mod parts;
 mod resolve_sets;
 mod sets;
+mod skews;
 mod spring_props;
 pub mod supported;
 mod to_model;
@@ -86,6 +87,7 @@ pub struct Deck {
     pub sections: Vec<CrossSectionSpec>,
     pub interfaces: Vec<InterfaceSpec>,
     pub time_histories: Vec<TimeHistorySpec>,
+    pub skews: Vec<skews::SkewCard>,
     pub animations: Vec<AnimationSpec>,
     pub engine: Option<Engine>,
     pub warnings: Vec<Warning>,
@@ -259,6 +261,7 @@ pub(crate) fn read_starter_block(block: &Block, deck: &mut Deck) -> InputResult<
         "ADMAS" => parts::parse_admas(block, deck)?,
         "GRNOD" | "GRSHEL" | "SURF" | "SUBSET" => sets::parse_set(block, deck)?,
         "LINE" => lines::parse_line(block, deck)?,
+        "SKEW" => skews::parse_skew(block, deck)?,
         "BCS" | "IMPVEL" | "IMPDISP" | "INIVEL" | "CLOAD" | "GRAV" | "DAMP" | "RWALL" | "RBODY"
         | "SECT" => conditions::parse_condition(block, deck)?,
         "INTER" => interfaces::parse_interface(block, deck)?,

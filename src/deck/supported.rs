@@ -98,6 +98,7 @@ pub const SUPPORTED: &[Supported] = &[
     s("/PROP/TYPE13 (/PROP/SPR_BEAM)", &["/PROP/TYPE13/1", "/PROP/SPR_BEAM/1"], "spring beams: tension, shears, torsion and bendings in the element's frame, each with the TYPE4 law, shear balanced by end moments; Ifail 0/1, Ifail2 0/2, Ileng (skew, Ifail2 1/3, sensor refused)"),
     s("/DEF_SHELL, /DEF_SOLID", &["/DEF_SHELL", "/DEF_SOLID"], "defaults for shell and solid sections"),
     s("/FUNCT", &["/FUNCT/1"], "tabulated functions"),
+    s("/SKEW/FIX, /SKEW/MOV, /SKEW/MOV2", &["/SKEW/FIX/1", "/SKEW/MOV/1", "/SKEW/MOV2/1"], "skew frames (fixed from Y′ and Z′; moving from three nodes with Dir X, Y, Z), checked on the initial geometry; conditions, springs and rigid bodies in a skew are refused by name, a time history in a skew is written in the global frame (said in a warning)"),
     s("/ADMAS", &["/ADMAS/0/1", "/ADMAS/1/1"], "added mass, types 0 (per node) and 1 (shared)"),
     s("/GRNOD/NODE, /GRNOD/GRNOD, /GRNOD/PART, /GRNOD/SURF, /GRNOD/GRSHEL", &["/GRNOD/NODE/1", "/GRNOD/GRNOD/1", "/GRNOD/PART/1", "/GRNOD/SURF/1", "/GRNOD/GRSHEL/1"], "node groups (of nodes, groups, parts' elements, surfaces' segments, shell groups' shells)"),
     s("/GRSHEL/SHEL", &["/GRSHEL/SHEL/1"], "shell groups"),

@@ -141,6 +141,8 @@ fn build(deck: &Deck) -> Result<Model, InputError> {
         begin.work_units.time_si,
     )?;
 
+    let skews = super::skews::resolve_skews(deck, &node_index, &nodes.x)?;
+
     // Masses.
     let mut model = Model {
         name: begin.run_name.clone(),
@@ -170,6 +172,7 @@ fn build(deck: &Deck) -> Result<Model, InputError> {
         interfaces,
         sections: deck.sections.clone(),
         time_histories: deck.time_histories.clone(),
+        skews,
         mass: MassSummary::default(),
         engine: deck.engine.clone(),
         warnings: Vec::new(),

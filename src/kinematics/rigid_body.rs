@@ -112,6 +112,13 @@ fn rotation(theta: V3) -> [[f64; 3]; 3] {
 }
 
 impl RigidBodyState {
+    /// The spin ω = J⁻¹L of a body of inertia `inertia` (Jxx, Jyy, Jzz, Jxy,
+    /// Jyz, Jxz about its centre) with angular momentum `l` (0 about a
+    /// singular direction).
+    pub fn spin_of(inertia: &[f64; 6], l: V3) -> V3 {
+        solve3(&sym(inertia), l)
+    }
+
     pub fn new(id: u64, mass: f64, center: V3, inertia: [f64; 6], v: V3, omega: V3) -> Self {
         RigidBodyState {
             id,

@@ -22,6 +22,7 @@ mod output_request;
 mod properties;
 mod property;
 mod rigid;
+mod skew;
 mod source_location;
 
 pub use contact::{InterfaceKind, InterfaceSpec, Side};
@@ -37,6 +38,7 @@ pub use output_request::*;
 pub use properties::{resolve_shell, resolve_solid, ResolvedShell, ResolvedSolid};
 pub use property::*;
 pub use rigid::*;
+pub use skew::{Skew, SkewKind};
 pub use source_location::Loc;
 
 use serde::{Deserialize, Serialize};
@@ -254,6 +256,9 @@ pub struct Model {
     pub interfaces: Vec<Interface>,
     pub sections: Vec<CrossSectionSpec>,
     pub time_histories: Vec<TimeHistorySpec>,
+    /// Skew frames (/SKEW/FIX, /SKEW/MOV).
+    #[serde(default)]
+    pub skews: Vec<Skew>,
     /// Lumped nodal mass: elements + /ADMAS (rigid-body MASS is in `rigid_bodies`).
     pub nodal_mass: Vec<f64>,
     /// Rotational inertia of shell nodes (isotropic), see `mass`.

@@ -388,24 +388,41 @@ fn check_interface(c: &model::InterfaceSpec) -> Result<(), String> {
 /// mass-weighted mean of its nodes' initial velocities (all /INIVEL/TRA).
 pub(super) fn initial_rigid_bodies(m: &Model) -> Vec<RigidBodyState> {
     let mut v0 = vec![[0.0; 3]; m.nodes.len()];
+    let mut w0 = vec![[0.0; 3]; m.nodes.len()];
     for iv in &m.initial_velocities {
-        if !iv.card.rotational {
-            for &n in &iv.nodes {
-                v0[n as usize] = iv.card.v;
-            }
+        let to = if iv.card.rotational { &mut w0 } else { &mut v0 };
+        for &n in &iv.nodes {
+            to[n as usize] = iv.card.v;
         }
     }
     m.rigid_bodies
         .iter()
         .map(|rb| {
-            let mut p = [0.0; 3];
-            let main_m = rb.card.mass + m.nodal_mass[rb.main_node as usize];
+            // The body starts with its nodes' momentum and angular momentum
+            // about its centre (the main node carries the card's mass and
+            // inertia): a spin given to the main node alone spins the body.
+            let (mut p, mut l) = ([0.0; 3], [0.0; 3]);
+            let main = rb.main_node as usize;
+            let jc = rb.card.inertia;
+            let wm = w0[main];
             for k in 0..3 {
-                p[k] += main_m * v0[rb.main_node as usize][k];
+                l[k] += jc[k] * wm[k];
             }
-            for &n in &rb.secondary_nodes {
+            // Off-diagonal card terms (Jxy, Jyz, Jxz) on the main node's spin.
+            l[0] += jc[3] * wm[1] + jc[5] * wm[2];
+            l[1] += jc[3] * wm[0] + jc[4] * wm[2];
+            l[2] += jc[5] * wm[0] + jc[4] * wm[1];
+            let nodes = std::iter::once((main, rb.card.mass + m.nodal_mass[main])).chain(
+                rb.secondary_nodes
+                    .iter()
+                    .map(|&n| (n as usize, m.nodal_mass[n as usize])),
+            );
+            for (n, mn) in nodes {
+                let r = crate::vec3::sub(m.nodes.x[n], rb.center);
+                let rxv = crate::vec3::cross(r, v0[n]);
                 for k in 0..3 {
-                    p[k] += m.nodal_mass[n as usize] * v0[n as usize][k];
+                    p[k] += mn * v0[n][k];
+                    l[k] += mn * rxv[k] + m.nodal_inertia[n] * w0[n][k];
                 }
             }
             let v = if rb.mass > 0.0 {
@@ -413,7 +430,8 @@ pub(super) fn initial_rigid_bodies(m: &Model) -> Vec<RigidBodyState> {
             } else {
                 [0.0; 3]
             };
-            RigidBodyState::new(rb.card.id, rb.mass, rb.center, rb.inertia, v, [0.0; 3])
+            let omega = RigidBodyState::spin_of(&rb.inertia, l);
+            RigidBodyState::new(rb.card.id, rb.mass, rb.center, rb.inertia, v, omega)
         })
         .collect()
 }
