@@ -1630,3 +1630,33 @@ fn moving_skews_need_three_independent_nodes_and_a_known_axis() {
         },
     );
 }
+
+/// /MAT/LAW21 names its pressure curve and a positive tension modulus.
+#[test]
+fn drucker_prager_needs_its_pressure_curve_and_kt() {
+    let c = Case::new("law21-kt");
+    let mut d = base_deck();
+    let at = line_no(&d, "/PART/1") - 1;
+    let card = [
+        s("/MAT/LAW21/7"),
+        s("rock"),
+        r20("2000.0"),
+        r20("1e10") + &r20("0.2"),
+        r20("0") + &r20("0") + &r20("3"),
+        i10(5) + &i10(0) + &r20("0"),
+        r20("0"),
+    ];
+    for (k, l) in card.into_iter().enumerate() {
+        d.insert(at + k, l);
+    }
+    assert_error(
+        &c.check(&d),
+        Expect {
+            file: DECK,
+            line: at + 6,
+            keyword: "/MAT/LAW21/7",
+            field: "Kt",
+            phrases: &["tension bulk modulus", "> 0"],
+        },
+    );
+}

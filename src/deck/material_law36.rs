@@ -159,6 +159,21 @@ pub(super) fn resolve_curves(
     time_si: f64,
 ) -> Result<(), InputError> {
     for m in mats.iter_mut() {
+        if let MaterialLaw::DruckerPrager(d) = &mut m.law {
+            let Some(f) = functions.iter().find(|f| f.id == d.fct) else {
+                return Err(InputError::new(
+                    m.loc.clone(),
+                    &format!("/MAT/LAW21/{}", m.id),
+                    "func_IDf",
+                    format!(
+                        "function {} is not defined in the deck; expected a /FUNCT id",
+                        d.fct
+                    ),
+                ));
+            };
+            (d.x, d.y) = (f.x.clone(), f.y.clone());
+            continue;
+        }
         if let MaterialLaw::CowperSymonds(c) = &mut m.law {
             // LAW44: Fsmooth without F_cut filters at 10 kHz.
             if c.fsmooth != 0 && c.f_cut == 0.0 {

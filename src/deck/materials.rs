@@ -1,5 +1,6 @@
 //! /MAT/LAW1 (/MAT/ELAST) and /MAT/LAW2 (/MAT/PLAS_JOHNS); /MAT/LAW36 in
-//! `material_law36.rs`, /MAT/LAW44 in `material_law44.rs`.
+//! `material_law36.rs`, /MAT/LAW44 in `material_law44.rs`, /MAT/LAW21 in
+//! `material_law21.rs`.
 //! Other laws are reported as unsupported (the caller warns, or fails with --strict).
 
 use super::fields::Cards;
@@ -14,6 +15,10 @@ pub(super) fn parse_material(block: &Block, deck: &mut Deck) -> InputResult<bool
     let is_jc = matches!(law, "LAW2" | "PLAS_JOHNS");
     if matches!(law, "LAW36" | "PLAS_TAB") {
         super::material_law36::parse_law36(block, deck)?;
+        return Ok(true);
+    }
+    if matches!(law, "LAW21" | "DPRAG") {
+        super::material_law21::parse_law21(block, deck)?;
         return Ok(true);
     }
     if matches!(law, "LAW44" | "COWPER") {

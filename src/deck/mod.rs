@@ -21,6 +21,7 @@ mod interfaces;
 pub mod keyword_policy;
 mod lines;
 mod list_end;
+mod material_law21;
 mod material_law36;
 mod material_law44;
 mod materials;

@@ -82,6 +82,11 @@ pub const SUPPORTED: &[Supported] = &[
         "Cowper-Symonds elastic-plastic: (a + b ε_p^n)(1 + (ε̇/c)^(1/p)), SIG_max0 with ICC, the total (VP 2) or deviatoric (VP 3) strain rate, Fsmooth/F_cut, EPS_p_max; Chard ignored on solids as the reference engine does (refused on shells), VP 1, fct_IDy, εt1/εt2 refused by name",
     ),
     s(
+        "/MAT/LAW21 (/MAT/DPRAG)",
+        &["/MAT/LAW21/1", "/MAT/DPRAG/1"],
+        "Drucker-Prager for rock, concrete and soil: J2 ≤ A0 + A1 P + A2 P² capped at Amax, the pressure P(μ) from func_IDf × FscaleP with unloading along B below Mu_max, Kt in tension, the P_min cut-off (spall), P_ext; on one-point bricks and tetrahedra (other solid formulations and shells refused by name)",
+    ),
+    s(
         "/FAIL/JOHNSON",
         &["/FAIL/JOHNSON/1"],
         "Johnson-Cook damage (D1-D5, EPS_0, EPSF_MIN) on solids, Ifail_so 1-4; on shells refused",

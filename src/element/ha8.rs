@@ -63,6 +63,12 @@ pub fn ha8_section(r: &ResolvedSolid, m: &Material) -> Result<SolidSection, Stri
             r.inpts
         ));
     }
+    if m.volumetric() {
+        return Err(format!(
+            "Isolid = {isolid} with /MAT/LAW{}: a law with a volumetric pressure and its own history is computed on one-point bricks (Isolid 1, 2) and tetrahedra only",
+            m.law_number()
+        ));
+    }
     let icpre = match (isolid, r.icpre) {
         (12, _) => 0,
         (17, -1 | 0 | 1) => 1,

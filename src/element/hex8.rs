@@ -173,6 +173,9 @@ pub struct Hex8State {
     pub eps_p: f64,
     /// Damage of the failure model (/FAIL; 1 = failed).
     pub dmg: f64,
+    /// The law's extra history (LAW21: the volumetric strain μ of the last step).
+    #[serde(default)]
+    pub hist: f64,
     /// Last hourglass generalized forces Q_α (4 modes × 3 components), for output.
     pub hg: [[f64; 3]; 4],
     /// Cumulative internal energy (stress and bulk viscosity work, without hourglass).
@@ -380,6 +383,7 @@ pub(crate) fn solid_point_update(
     sig: &mut [f64; 6],
     eps_p: &mut f64,
     dmg: &mut f64,
+    hist: &mut f64,
     eps_dot: &mut f64,
     eint: f64,
 ) -> SolidPoint {
@@ -422,7 +426,7 @@ pub(crate) fn solid_point_update(
             2.0 * d[5] * dt,
         ];
         let ep0 = *eps_p;
-        let wp = mat.solid_update_at(sig, eps_p, deps, *eps_dot, temp);
+        let wp = mat.solid_update_volumetric(sig, eps_p, hist, deps, *eps_dot, temp, vol0 / vol);
         out.failed = mat.has_failed(*eps_p);
         if let (Some(f), false) = (&sec.failure, out.failed) {
             let tstar = mat.homologous_temperature(temp);
@@ -565,6 +569,7 @@ pub fn hex8_step(
         &mut st.sig,
         &mut st.eps_p,
         &mut st.dmg,
+        &mut st.hist,
         &mut st.eps_dot,
         st.eint,
     );

@@ -32,6 +32,9 @@ pub struct Tet4State {
     pub eps_p: f64,
     /// Damage of the failure model (/FAIL; 1 = failed).
     pub dmg: f64,
+    /// The law's extra history (LAW21: the volumetric strain μ of the last step).
+    #[serde(default)]
+    pub hist: f64,
     /// Cumulative internal energy (stress and bulk viscosity work).
     pub eint: f64,
     /// Cumulative plastic work.
@@ -154,6 +157,7 @@ pub fn tet4_step(
         &mut st.sig,
         &mut st.eps_p,
         &mut st.dmg,
+        &mut st.hist,
         &mut st.eps_dot,
         st.eint,
     );

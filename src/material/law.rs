@@ -160,6 +160,30 @@ pub trait Law: Sized {
         None
     }
 
+    /// The law updates a solid point itself (its pressure from the volume,
+    /// its own return): the stress, plastic strain, its extra history `hist`
+    /// (one f64 per point, kept by the one-point solids) and the strain
+    /// increment, with `v0_over_v` = V₀/V of the point now; the plastic work
+    /// per unit volume. `None` for the laws `PointLaw` updates.
+    #[inline]
+    fn solid_own(
+        &self,
+        _sig: &mut [f64; 6],
+        _eps_p: &mut f64,
+        _hist: &mut f64,
+        _deps: [f64; 6],
+        _v0_over_v: f64,
+    ) -> Option<f64> {
+        None
+    }
+
+    /// The law needs the point's volume and its extra history
+    /// ([`Law::solid_own`]): only the one-point solids (Isolid 1, 2 and the
+    /// tetrahedron) keep them.
+    fn volumetric(&self) -> bool {
+        false
+    }
+
     /// Wave speed for element time steps: c = √(E/ρ₀), what the Radioss
     /// starter stores for LAW1 and LAW2 (material parameter "SSP" =
     /// SQRT(E/RHO)) and the shell time step divides the characteristic length

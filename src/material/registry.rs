@@ -13,6 +13,7 @@
 use super::law::{ElasticConstants, Law};
 use super::law1::Law1;
 use super::law2::Law2;
+use super::law21::Law21;
 use super::law36::Law36;
 use super::law44::Law44;
 use super::point::{PlaneStressResult, PointLaw};
@@ -70,6 +71,7 @@ registry! {
     Tabulated(Law36),
     /// LAW44: Cowper-Symonds elasto-plastic.
     CowperSymonds(Law44),
+    DruckerPrager(Law21),
 }
 
 /// The name of law number `number` when the registry has it; otherwise the
@@ -294,6 +296,33 @@ impl Material {
         eps_dot: f64,
     ) -> f64 {
         self.solid_update_at(sig, eps_p, deps, eps_dot, self.reference_temperature())
+    }
+
+    /// The law needs the point's volume and its own history (LAW21).
+    #[inline]
+    pub fn volumetric(&self) -> bool {
+        each_law!(self, l => l.volumetric())
+    }
+
+    /// 3-D update of a point of a one-point solid: the law's own update
+    /// ([`Law::solid_own`], with V₀/V and the extra history `hist`) or
+    /// [`Material::solid_update_at`].
+    #[inline]
+    #[allow(clippy::too_many_arguments)]
+    pub fn solid_update_volumetric(
+        &self,
+        sig: &mut [f64; 6],
+        eps_p: &mut f64,
+        hist: &mut f64,
+        deps: [f64; 6],
+        eps_dot: f64,
+        temp: f64,
+        v0_over_v: f64,
+    ) -> f64 {
+        match each_law!(self, l => l.solid_own(sig, eps_p, hist, deps, v0_over_v)) {
+            Some(wp) => wp,
+            None => self.solid_update_at(sig, eps_p, deps, eps_dot, temp),
+        }
     }
 
     /// 3-D update at temperature `temp`; see [`PointLaw::solid`].

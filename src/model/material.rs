@@ -114,6 +114,38 @@ pub enum MaterialLaw {
     Tabulated(TabulatedPlasticity),
     /// LAW44 (/MAT/COWPER): σ_y = (a + b·ε_p^n)·(1 + (ε̇/c)^(1/p)).
     CowperSymonds(CowperSymonds),
+    /// LAW21 (/MAT/DPRAG): Drucker-Prager, J2 ≤ A0 + A1·P + A2·P², with a
+    /// tabulated pressure P(μ).
+    DruckerPrager(DruckerPrager),
+}
+
+/// /MAT/LAW21 parameters (reference guide /MAT/LAW21; research note
+/// `docs/notes/law21_research.md` §1), defaults resolved as the starter:
+/// B 0 → Kt, Amax and Mu_max 0 → 1e20, P_min 0 → −1e20, FscaleP 0 → 1. The
+/// pressure curve's points are copied from its /FUNCT by the model builder.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct DruckerPrager {
+    pub a0: f64,
+    pub a1: f64,
+    pub a2: f64,
+    /// Cap on the yield limit of J2 (stress² units, as the reference engine).
+    pub amax: f64,
+    /// P(μ) in compression: FscaleP·f(μ).
+    pub fct: Id,
+    pub fscale_p: f64,
+    /// Tension bulk modulus (P = Kt·μ for μ ≤ 0).
+    pub kt: f64,
+    /// Fracture (cut-off) pressure and external pressure.
+    pub p_min: f64,
+    pub p_ext: f64,
+    /// Unloading bulk modulus, and the compression above which the
+    /// pressure follows the curve without an unloading branch.
+    pub b: f64,
+    pub mu_max: f64,
+    #[serde(default)]
+    pub x: Vec<f64>,
+    #[serde(default)]
+    pub y: Vec<f64>,
 }
 
 /// /MAT/LAW44 parameters (reference guide /MAT/LAW44; research notes

@@ -458,6 +458,7 @@ impl RunFile {
                     MaterialLaw::JohnsonCook(_) => "LAW2 Johnson-Cook",
                     MaterialLaw::Tabulated(_) => "LAW36 tabulated plasticity",
                     MaterialLaw::CowperSymonds(_) => "LAW44 Cowper-Symonds",
+                    MaterialLaw::DruckerPrager(_) => "LAW21 Drucker-Prager",
                 })
             })
             .collect();
