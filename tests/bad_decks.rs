@@ -1660,3 +1660,54 @@ fn drucker_prager_needs_its_pressure_curve_and_kt() {
         },
     );
 }
+
+/// /MOVE_FUNCT names a function the deck defines; /IMPDISP/FGEO gives each
+/// node one final position.
+#[test]
+fn move_funct_and_final_geometry_are_checked_at_their_cards() {
+    let c = Case::new("move-funct");
+    let mut d = base_deck();
+    let at = line_no(&d, "/PART/1") - 1;
+    let card = [s("/MOVE_FUNCT/77"), s("shift"), r20("2.0")];
+    for (k, l) in card.into_iter().enumerate() {
+        d.insert(at + k, l);
+    }
+    assert_error(
+        &c.check(&d),
+        Expect {
+            file: DECK,
+            line: at + 1,
+            keyword: "/MOVE_FUNCT/77",
+            field: "fct_ID",
+            phrases: &["function 77", "/FUNCT"],
+        },
+    );
+    let c = Case::new("fgeo-twice");
+    let mut d = base_deck();
+    let at = line_no(&d, "/PART/1") - 1;
+    let card = [
+        s("/FUNCT/5"),
+        s("ramp"),
+        r20("0") + &r20("0"),
+        r20("1") + &r20("1"),
+        s("/IMPDISP/FGEO/3"),
+        s("to the end"),
+        i10(5),
+        r20("1.0"),
+        i10(2) + &r20("2.0") + &r20("0.0") + &r20("0.0"),
+        i10(2) + &r20("3.0") + &r20("0.0") + &r20("0.0"),
+    ];
+    for (k, l) in card.into_iter().enumerate() {
+        d.insert(at + k, l);
+    }
+    assert_error(
+        &c.check(&d),
+        Expect {
+            file: DECK,
+            line: at + 10,
+            keyword: "/IMPDISP/FGEO/3",
+            field: "node_ID",
+            phrases: &["node 2", "already has a final position"],
+        },
+    );
+}

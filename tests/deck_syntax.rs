@@ -2,7 +2,7 @@
 //! tabs as trailing white space (starter) or separators (engine), /SURF/PART/ALL
 //! and /SURF/PART/EXT, a node numbered 0, a /TH object list followed by lines
 //! that hold no id (the QA decks' `qadiags.inc`), /TFILE with dT_his = 0, a
-//! keyword variant written where the id belongs (/IMPDISP/FGEO/10) and
+//! keyword variant written where the id belongs (/IMPVEL/FGEO/10) and
 //! `//SUBMODEL` refused by name, /BCS Trarot written with fewer than six codes.
 //!
 //! Each test writes a small deck in a fresh folder and reads it through the
@@ -379,7 +379,7 @@ fn tfile_period_zero_runs_and_samples_every_cycle() {
 fn a_word_where_the_id_belongs_is_an_unsupported_variant_by_name() {
     let c = Case::new("variant");
     let deck = two_bricks(&[
-        "/IMPDISP/FGEO/10",
+        "/IMPVEL/FGEO/10",
         "geometric",
         &i10(1),
         "/SURF/PART/FOO/3",
@@ -388,8 +388,8 @@ fn a_word_where_the_id_belongs_is_an_unsupported_variant_by_name() {
     ]);
     let d = c.read(&deck, None).unwrap_or_else(|e| panic!("{e}"));
     let names: Vec<&str> = d.unsupported.iter().map(|w| w.keyword.as_str()).collect();
-    assert_eq!(names, ["/IMPDISP/FGEO/10", "/SURF/PART/FOO/3"]);
-    assert!(d.imposed_displacements.is_empty() && d.surfaces.is_empty());
+    assert_eq!(names, ["/IMPVEL/FGEO/10", "/SURF/PART/FOO/3"]);
+    assert!(d.imposed_velocities.is_empty() && d.surfaces.is_empty());
 }
 
 #[test]

@@ -78,7 +78,7 @@ fn free_plate_with_unsupported(tag: &str) -> std::path::PathBuf {
     let engine = std::fs::read_to_string(src.join("free_plate_0001.rad")).unwrap();
     std::fs::write(
         dir.join("free_plate_0001.rad"),
-        format!("{engine}/DT/NODA/CST\n0.9 1e-6\n"),
+        format!("{engine}/DT/BRICK/CST\n0.9 1e-6\n"),
     )
     .unwrap();
     dir.join("free_plate_0000.rad")
@@ -96,7 +96,7 @@ fn a_keyword_the_engine_does_not_compute_stops_the_run_naming_every_one() {
         &deck,
         &[
             &format!("free_plate_0000.rad:{line}: /TRANSFORM/TRA/1"),
-            "free_plate_0001.rad:6: /DT/NODA/CST",
+            "free_plate_0001.rad:6: /DT/BRICK/CST",
             "2 keyword(s)",
             "--skip-unsupported",
         ],
@@ -126,7 +126,7 @@ fn skip_unsupported_runs_and_says_what_it_skipped() {
     ]);
     ok(&out, "run --skip-unsupported");
     let listing = std::fs::read_to_string(dir.join("free_plate.out")).unwrap();
-    for k in ["/TRANSFORM/TRA/1", "free_plate_0001.rad:6: /DT/NODA/CST"] {
+    for k in ["/TRANSFORM/TRA/1", "free_plate_0001.rad:6: /DT/BRICK/CST"] {
         let note = listing
             .lines()
             .find(|l| l.contains("skipped (--skip-unsupported)") && l.contains(k));
@@ -139,7 +139,7 @@ fn skip_unsupported_runs_and_says_what_it_skipped() {
     let info = crashsim(&["info", dir.join("free_plate.h5").to_str().unwrap()]);
     let info = String::from_utf8_lossy(&info.stdout);
     assert!(
-        info.contains("skipped (--skip-unsupported)") && info.contains("/DT/NODA/CST"),
+        info.contains("skipped (--skip-unsupported)") && info.contains("/DT/BRICK/CST"),
         "{info}"
     );
 }

@@ -58,8 +58,24 @@ pub(crate) fn parse_engine_block(block: &Block, eng: &mut Engine) -> InputResult
                 loc: c.loc(),
             });
         }
-        // /DT/<type>/<action> (per-type steps, nodal steps with added mass,
-        // AMS) is not computed: left to the keyword policy, which names it.
+        // /DT/NODA/CST/0: the nodal step with added mass (every node).
+        "DT" if p1 == "NODA"
+            && block.parts.get(2).is_some_and(|p| p == "CST")
+            && block.parts.get(3).is_none_or(|p| p.trim() == "0") =>
+        {
+            let c = cards.next("the card with Tsca, Tmin")?;
+            let scale = c.tok_real(0, "Tsca")?.unwrap_or(0.0);
+            let min = c.tok_real(1, "Tmin")?.unwrap_or(0.0);
+            if scale < 0.0 || min <= 0.0 {
+                return Err(c.err(
+                    "Tmin",
+                    format!("scale {scale}, minimum {min}: expected a scale >= 0 (blank 0.9) and a minimum step > 0"),
+                ));
+            }
+            eng.nodal_cst = Some((if scale == 0.0 { 0.9 } else { scale }, min));
+        }
+        // Any other /DT/<type>/<action> (per-type steps, AMS, other nodal
+        // options) is not computed: left to the keyword policy, which names it.
         "DT" if !p1.is_empty() => return Ok(false),
         "DT" => {
             let c = cards.next_nonblank();

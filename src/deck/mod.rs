@@ -17,6 +17,7 @@ pub(crate) mod engine;
 mod failure_tab;
 mod failures;
 mod id_index;
+mod impdisp_fgeo;
 mod interfaces;
 pub mod keyword_policy;
 mod lines;
@@ -26,6 +27,7 @@ mod material_law36;
 mod material_law44;
 mod materials;
 mod mesh;
+mod move_funct;
 mod parts;
 mod resolve_sets;
 mod sets;
@@ -89,6 +91,8 @@ pub struct Deck {
     pub interfaces: Vec<InterfaceSpec>,
     pub time_histories: Vec<TimeHistorySpec>,
     pub skews: Vec<skews::SkewCard>,
+    pub final_geometries: Vec<impdisp_fgeo::FgeoCard>,
+    pub move_functs: Vec<move_funct::MoveFunct>,
     pub animations: Vec<AnimationSpec>,
     pub engine: Option<Engine>,
     pub warnings: Vec<Warning>,
@@ -114,6 +118,7 @@ pub fn read_deck(starter: &Path, engine: EngineFile, opts: ReadOptions) -> Input
     for block in &src.blocks {
         parse_starter_block(block, &mut deck, opts)?;
     }
+    move_funct::apply(&mut deck)?;
     if src.end.is_none() {
         let loc = src
             .blocks
@@ -263,6 +268,10 @@ pub(crate) fn read_starter_block(block: &Block, deck: &mut Deck) -> InputResult<
         "GRNOD" | "GRSHEL" | "SURF" | "SUBSET" => sets::parse_set(block, deck)?,
         "LINE" => lines::parse_line(block, deck)?,
         "SKEW" => skews::parse_skew(block, deck)?,
+        "IMPDISP" if block.parts.get(1).is_some_and(|p| p == "FGEO") => {
+            impdisp_fgeo::parse_fgeo(block, deck)?
+        }
+        "MOVE_FUNCT" => move_funct::parse_move_funct(block, deck)?,
         "BCS" | "IMPVEL" | "IMPDISP" | "INIVEL" | "CLOAD" | "GRAV" | "DAMP" | "RWALL" | "RBODY"
         | "SECT" => conditions::parse_condition(block, deck)?,
         "INTER" => interfaces::parse_interface(block, deck)?,

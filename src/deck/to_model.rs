@@ -142,6 +142,9 @@ fn build(deck: &Deck) -> Result<Model, InputError> {
     )?;
 
     let skews = super::skews::resolve_skews(deck, &node_index, &nodes.x)?;
+    let final_geometries = super::impdisp_fgeo::resolve(deck, &node_index, |f, l, k, fld| {
+        refs.check_fct(f, l, k, fld)
+    })?;
 
     // Masses.
     let mut model = Model {
@@ -173,6 +176,7 @@ fn build(deck: &Deck) -> Result<Model, InputError> {
         sections: deck.sections.clone(),
         time_histories: deck.time_histories.clone(),
         skews,
+        final_geometries,
         mass: MassSummary::default(),
         engine: deck.engine.clone(),
         warnings: Vec::new(),

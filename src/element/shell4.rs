@@ -513,6 +513,28 @@ fn char_length(sec: &ShellSection, g: &Geom, tri: bool) -> f64 {
     l2.sqrt()
 }
 
+/// The element's nodal stiffness for the nodal time step (/DT/NODA, the
+/// reference engine's shell stiffness; research note
+/// `docs/notes/impdisp_fgeo_research.md` §4): K = max(B₁, B₂)·t·A₁₁/A, with
+/// B_k = ¼|d_k|² the squared half diagonals in the element's plane (the
+/// reference's PX² + PY²) and A₁₁ = E/(1 − ν²), given to each corner, and
+/// K_rot = K·(t²/12 + A/9). On a square of side L every node then has the
+/// element step L/c as its nodal step √(2m/K). The reference's hourglass
+/// term (its viscous hourglass coefficients over Δt) is left out.
+pub fn nodal_stiffness(sec: &ShellSection, x: &[[f64; 3]; 4], t: f64) -> (f64, f64) {
+    let (d13, d24) = (sub(x[2], x[0]), sub(x[3], x[1]));
+    let n = cross(d13, d24);
+    let nn = dot(n, n).sqrt();
+    if !(nn > 0.0) {
+        return (0.0, 0.0);
+    }
+    let area = 0.5 * nn;
+    let e = scale(n, 1.0 / nn);
+    let half_sq = |d: [f64; 3]| 0.25 * (dot(d, d) - dot(d, e).powi(2));
+    let k = half_sq(d13).max(half_sq(d24)) * t * sec.material.a11() / area;
+    (k, k * (t * t / 12.0 + area / 9.0))
+}
+
 /// Element state at t = 0.
 pub fn shell4_init(sec: &ShellSection, x: &[[f64; 3]; 4], thick: f64) -> Shell4State {
     let n = cross(sub(x[2], x[0]), sub(x[3], x[1]));

@@ -52,6 +52,11 @@ pub struct Engine {
     /// `dtix.1` (0: no bound).
     #[serde(default)]
     pub dtix: (f64, f64),
+    /// /DT/NODA/CST/0: the nodal time step with added mass (scale ΔTsca,
+    /// minimum ΔTmin): the step comes from the nodes, each node below
+    /// ΔTmin gets the mass (and inertia) that brings it there.
+    #[serde(default)]
+    pub nodal_cst: Option<(f64, f64)>,
     /// /RBODY/ON: the rigid bodies it names (they are active from the start:
     /// checked to exist, nothing to switch).
     #[serde(default)]
@@ -106,6 +111,7 @@ impl Default for Engine {
             title: None,
             dampings: Vec::new(),
             dtix: (0.0, 0.0),
+            nodal_cst: None,
             rbody_on: Vec::new(),
             loc: Loc::default(),
         }

@@ -132,3 +132,19 @@ pub struct GravitySpec {
     pub fscale_y: f64,
     pub loc: Loc,
 }
+
+/// /IMPDISP/FGEO: nodes moved along straight lines from their initial to
+/// their final positions, u(t) = f(Ascale·t)·(X_f − X₀) between Tstart and
+/// Tstop (research note `docs/notes/impdisp_fgeo_research.md` §2).
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct FinalGeometry {
+    pub id: Id,
+    pub fct: Id,
+    pub ascale: f64,
+    pub tstart: f64,
+    pub tstop: f64,
+    /// The nodes (dense indices) and their final positions.
+    pub nodes: Vec<u32>,
+    pub target: Vec<[f64; 3]>,
+    pub loc: Loc,
+}

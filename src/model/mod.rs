@@ -256,6 +256,9 @@ pub struct Model {
     pub interfaces: Vec<Interface>,
     pub sections: Vec<CrossSectionSpec>,
     pub time_histories: Vec<TimeHistorySpec>,
+    /// Final-geometry motions (/IMPDISP/FGEO).
+    #[serde(default)]
+    pub final_geometries: Vec<FinalGeometry>,
     /// Skew frames (/SKEW/FIX, /SKEW/MOV).
     #[serde(default)]
     pub skews: Vec<Skew>,

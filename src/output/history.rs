@@ -300,11 +300,17 @@ impl History {
         // Exact sums, element by element and node by node: the same row
         // for any number of ranks (the interfaces' samples are this rank's
         // sums already).
-        let mut exact = vec![ExactSum::default(); o_node + 9 * nm];
+        // Then the coming velocity update's works (`VelocitiesAtN::ahead`).
+        let o_ahead = o_node + 9 * nm;
+        let mut exact = vec![ExactSum::default(); o_ahead + 2];
         let mut el = [ExactSum::default(); 3];
         s.blocks.iter().for_each(|b| b.energy_sums(&mut el));
         exact[..3].copy_from_slice(&el);
         (exact[3], exact[4]) = (*s.w_ext, *s.wall_work);
+        let weight = s.at_n.map_or(0.0, |a| {
+            exact[o_ahead..].copy_from_slice(&a.ahead);
+            a.ahead_weight
+        });
         let vel: &[[f64; 3]] = s.at_n.map_or(&s.v[..], |a| &a.v);
         let parts = part_sums(s.blocks, &self.elem_mass, vel, np);
         exact[o_parts..o_parts + 3 * np].copy_from_slice(parts.as_flattened());
@@ -334,7 +340,9 @@ impl History {
             }
         }
         sum_over_ranks(ctx.world, &mut exact);
-        let buf: Vec<f64> = exact.iter().map(|x| x.value()).collect();
+        let mut buf: Vec<f64> = exact.iter().map(|x| x.value()).collect();
+        buf[3] += weight * buf[o_ahead];
+        buf[4] += weight * buf[o_ahead + 1];
         let (ke, ker) = match s.at_n {
             Some(a) => (s.kinetic)(&a.v, &a.vr, &a.bodies, &a.wall_v),
             None => (s.kinetic)(s.v, s.vr, s.bodies, s.wall_v),

@@ -97,6 +97,14 @@ pub struct VelocitiesAtN {
     pub vr: Vec<[f64; 3]>,
     pub bodies: Vec<RigidBodyState>,
     pub wall_v: Vec<[f64; 3]>,
+    /// This rank's external and rigid-wall work of the coming velocity
+    /// update (n−½ → n+½), and the share `ahead_weight` of it done by t^n
+    /// (Δt^{n−½}/(Δt^{n−½} + Δt^{n+½}), the velocities' own weight): the
+    /// listing's EXT-WORK at t^n counts that share, as the kinetic energy
+    /// at t^n counts that share of the velocity change (the reference
+    /// engine splits an imposed motion's reaction work the same way).
+    pub ahead: [ExactSum; 2],
+    pub ahead_weight: f64,
 }
 
 /// Kinetic energies (translational, rotational) the listing's way, from

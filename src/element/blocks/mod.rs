@@ -101,6 +101,13 @@ pub trait Block: Send + Sync {
             acc[2].add(o.eplas);
         }
     }
+    /// The nodal stiffness of every element's corners at the positions `x`
+    /// for the nodal time step (/DT/NODA/CST): [K, 0, 0, K_rot, 0, 0] in
+    /// each corner slot; `false` when the formulation does not give it (the
+    /// run then refuses /DT/NODA/CST by name).
+    fn nodal_stiffness(&self, _x: &[[f64; 3]], _contrib: &mut [[f64; SLOT]]) -> bool {
+        false
+    }
     /// Everything the element needs to continue after a restart (its state,
     /// integration-point stresses and strains, deleted flag), as bytes; the
     /// restart file keys it by the element's global index (`local().global[e]`).

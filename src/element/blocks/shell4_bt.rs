@@ -5,7 +5,7 @@ use super::common::{
     decode_state, gather, hourglass_of, settle_common, von_mises_shell, HourglassEnergy,
 };
 use super::sections::shell_sections;
-use super::shell_block::shell_block;
+use super::shell_block::{shell_block, NodalStiffnessFn};
 use super::{Block, BlockInput, ElemOut, ElemRow, ElemStep};
 use crate::domain::LocalElements;
 use crate::element::shell4::ShellSection;
@@ -21,7 +21,8 @@ shell_block!(
     Shell4State,
     shell4::shell4_init,
     shell4::shell4_step,
-    ShellSection::new
+    ShellSection::new,
+    Some(shell4::nodal_stiffness)
 );
 
 /// The registry's builder for this formulation.

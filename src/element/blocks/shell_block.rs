@@ -3,7 +3,7 @@
 /// 4-node and 3-node shells share this shape: a section per part, `nip`
 /// integration points per element (stress and plastic strain), rotations.
 macro_rules! shell_block {
-    ($name:ident, $kind:expr, $nn:literal, $state:ty, $init:path, $step:path, $section:path) => {
+    ($name:ident, $kind:expr, $nn:literal, $state:ty, $init:path, $step:path, $section:path, $stiff:expr) => {
         pub struct $name {
             le: LocalElements,
             sections: Vec<ShellSection>,
@@ -119,6 +119,31 @@ macro_rules! shell_block {
             fn steps(&self) -> &[ElemStep] {
                 &self.steps
             }
+            fn nodal_stiffness(&self, x: &[[f64; 3]], contrib: &mut [[f64; SLOT]]) -> bool {
+                let stiff: Option<NodalStiffnessFn<$nn>> = $stiff;
+                let Some(f) = stiff else {
+                    return false;
+                };
+                let (le, sections, section) = (&self.le, &self.sections, &self.section);
+                contrib
+                    .par_chunks_mut($nn)
+                    .zip(self.state.par_iter())
+                    .zip(self.alive.par_iter())
+                    .enumerate()
+                    .for_each(|(e, ((c, st), alive))| {
+                        let (k, kr) = if *alive {
+                            f(
+                                &sections[section[e] as usize],
+                                &gather::<$nn>(le, e, x),
+                                st.thick,
+                            )
+                        } else {
+                            (0.0, 0.0)
+                        };
+                        c.iter_mut().for_each(|s| *s = [k, 0.0, 0.0, kr, 0.0, 0.0]);
+                    });
+                true
+            }
             fn settle(&mut self) -> Option<(u32, &'static str)> {
                 settle_common(
                     &mut self.alive,
@@ -210,3 +235,8 @@ macro_rules! shell_block {
 }
 
 pub(super) use shell_block;
+
+/// A shell formulation's nodal stiffness (K, K_rot) of one element for the
+/// nodal time step: its section, corners and thickness.
+pub(super) type NodalStiffnessFn<const N: usize> =
+    fn(&crate::element::shell4::ShellSection, &[[f64; 3]; N], f64) -> (f64, f64);

@@ -16,7 +16,8 @@ pub(super) fn kinetic(
     bodies: &[RigidBodyState],
     wall_v: &[[f64; 3]],
 ) -> (f64, f64) {
-    let (mass, inertia, owned, skip) = (&cx.mass, &cx.inertia_ke, &cx.owned, &cx.ke_skip);
+    let (mass, inertia) = (cx.mass.read().unwrap(), cx.inertia_ke.read().unwrap());
+    let (owned, skip) = (&cx.owned, &cx.ke_skip);
     let mut e = [ExactSum::default(); 2];
     for l in 0..v.len() {
         if owned[l] && !skip[l] {
@@ -121,16 +122,31 @@ fn balance(e0: f64, e: &Energies, internal: f64) -> f64 {
 /// This rank's exact sums, summed over the ranks: internal energy (with
 /// hourglass), hourglass energy, plastic work, external work of the loads
 /// and imposed motions, rigid-wall work, contact energy.
+/// The external and rigid-wall works at t^n include the share of the
+/// coming velocity update's work that `State::at_n` says (see
+/// `output::VelocitiesAtN::ahead`).
 fn global_sums(cx: &Ctx, s: &State) -> [f64; 6] {
-    let mut e = [ExactSum::default(); 6];
+    let mut e = [ExactSum::default(); 8];
     let mut el = [ExactSum::default(); 3];
     for b in &s.blocks {
         b.energy_sums(&mut el);
     }
     e[..3].copy_from_slice(&el);
     (e[3], e[4], e[5]) = (s.w_ext, s.wall_work, s.e_contact);
+    let weight = s.at_n.as_ref().map_or(0.0, |a| {
+        (e[6], e[7]) = (a.ahead[0], a.ahead[1]);
+        a.ahead_weight
+    });
     sum_over_ranks(cx.world, &mut e);
-    e.map(|x| x.value())
+    let v = e.map(|x| x.value());
+    [
+        v[0],
+        v[1],
+        v[2],
+        v[3] + weight * v[6],
+        v[4] + weight * v[7],
+        v[5],
+    ]
 }
 
 /// The global energies now (one exchange and the kinetic sums).

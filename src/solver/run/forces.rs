@@ -31,6 +31,7 @@ pub(super) fn all_forces(cx: &Ctx, s: &mut State, dt: f64) -> Found {
         element,
         node: None,
         contact,
+        nodal: None,
     }
 }
 
@@ -133,7 +134,7 @@ fn contact_forces(cx: &Ctx, s: &mut State, dt: f64, deleted: &[(u8, u32)]) -> Op
         cx.world,
         &s.x,
         &s.v,
-        &cx.mass,
+        &cx.mass.read().unwrap(),
         s.t,
         dt,
         &mut s.fcont,

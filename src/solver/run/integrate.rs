@@ -14,7 +14,7 @@ use super::setup::{Ctx, State};
 /// their work small. A rigid body's node moves with its body, not by its
 /// own force over its own mass: it takes its velocity after the step.
 pub(super) fn work(cx: &Ctx, s: &mut State, dt_v: f64) {
-    let mass = &cx.mass;
+    let mass = cx.mass.read().unwrap();
     for l in 0..cx.n {
         if !cx.owned[l] {
             continue;

@@ -18,9 +18,11 @@ pub(super) fn velocities(cx: &Ctx, s: &mut State, dt_v: f64) {
         .map(|(nodes, _)| nodes.iter().map(|&l| s.v[l as usize]).collect())
         .collect();
     let prior = imposed_prior(cx, s);
+    let prior_fgeo = fgeo_prior(cx, s);
     accelerate(cx, s, dt_v);
     rigid_bodies(cx, s, dt_v);
     imposed_motion(cx, s, &prior);
+    final_geometry(cx, s, &prior_fgeo);
     rigid_walls(cx, s, &before);
     boundary_conditions(s);
     // Tied secondary nodes follow their main nodes (after every other condition).
@@ -60,7 +62,7 @@ fn tied_transfer(cx: &Ctx, s: &mut State) {
 
 /// Accelerations (damped where a /DAMP asks) and velocities at n+½.
 fn accelerate(cx: &Ctx, s: &mut State, dt_v: f64) {
-    let (mass, inertia) = (&cx.mass, &cx.inertia);
+    let (mass, inertia) = (cx.mass.read().unwrap(), cx.inertia.read().unwrap());
     for l in 0..cx.n {
         if cx.is_main[l] {
             continue;
@@ -151,7 +153,7 @@ fn rigid_bodies(cx: &Ctx, s: &mut State, dt_v: f64) {
         for &(l, _) in &lb.members {
             let l = l as usize;
             s.v[l] = s.bodies[b].velocity_at(s.x[l], c_before);
-            if cx.inertia[l] > 0.0 {
+            if cx.inertia.read().unwrap()[l] > 0.0 {
                 s.vr[l] = s.bodies[b].omega;
             }
         }
@@ -276,14 +278,75 @@ fn imposed_motion(cx: &Ctx, s: &mut State, prior: &[f64]) {
     }
 }
 
+/// The velocities v^{n−½} of the /IMPDISP/FGEO nodes, in `final_geometry`'s order.
+fn fgeo_prior(cx: &Ctx, s: &State) -> Vec<[f64; 3]> {
+    cx.fgeo
+        .iter()
+        .flat_map(|(on, _)| on.iter().map(|&(l, _)| s.v[l as usize]))
+        .collect()
+}
+
+/// /IMPDISP/FGEO between Tstart and Tstop (research note
+/// `docs/notes/impdisp_fgeo_research.md` §2): along e = (X_f − X₀)/|X_f − X₀|
+/// the velocity that brings the node to f(Ascale·(t+Δt))·|X_f − X₀| of its
+/// path at the end of the step; across e the velocity of n−½ is kept (no
+/// acceleration: a node that starts on its line stays on it); a node whose
+/// final position is its initial one is held. Rotations stay free. The
+/// reaction's work is external work, as for /IMPDISP (`impose`).
+fn final_geometry(cx: &Ctx, s: &mut State, prior: &[[f64; 3]]) {
+    let (t, dt) = (s.t, s.dt);
+    let mut i = 0;
+    for (on, c) in &cx.fgeo {
+        let active = t >= c.tstart && t <= c.tstop && dt > 0.0;
+        let f = &cx.g.functions[cx.fct_index[&c.fct]];
+        let frac = crate::kinematics::function::eval(f, c.ascale * (t + dt));
+        for &(l, k) in on {
+            let l = l as usize;
+            let before = prior[i];
+            i += 1;
+            if !active {
+                continue;
+            }
+            let x0 = cx.sd.x[l];
+            let d = crate::vec3::sub(c.target[k], x0);
+            let dist = crate::vec3::dot(d, d).sqrt();
+            let mut v = [0.0; 3];
+            if dist > 0.0 {
+                let e = crate::vec3::scale(d, 1.0 / dist);
+                let along = crate::vec3::dot(e, crate::vec3::sub(s.x[l], x0));
+                let v_axis = (dist * frac - along) / dt;
+                let v_across = crate::vec3::dot(e, before);
+                for q in 0..3 {
+                    v[q] = before[q] - v_across * e[q] + v_axis * e[q];
+                }
+            }
+            impose_vector(cx, s, l, v, before);
+        }
+    }
+}
+
+/// Sets a node's velocity to `val` (it was `before` at n−½): the reaction's
+/// work m(val − v_free)·val less ½m|val − before|², as `impose` per component.
+fn impose_vector(cx: &Ctx, s: &mut State, l: usize, val: [f64; 3], before: [f64; 3]) {
+    if cx.owned[l] {
+        let m = cx.mass.read().unwrap()[l];
+        for q in 0..3 {
+            let jump = val[q] - before[q];
+            s.w_ext.add(m * (val[q] - s.v[l][q]) * val[q]);
+            s.w_ext.add(-0.5 * m * jump * jump);
+        }
+    }
+    s.v[l] = val;
+}
+
 /// Sets a node's velocity (d < 3) or rotational velocity (d − 3) to
 /// `val` (it was `before` at n−½); the reaction's work joins this rank's
 /// external work (owned nodes).
 fn impose(cx: &Ctx, s: &mut State, l: usize, d: usize, val: f64, before: f64) {
     let (slot, m) = if d < 3 {
-        (&mut s.v[l][d], cx.mass[l])
+        (&mut s.v[l][d], cx.mass.read().unwrap()[l])
     } else {
-        (&mut s.vr[l][d - 3], cx.inertia[l])
+        (&mut s.vr[l][d - 3], cx.inertia.read().unwrap()[l])
     };
     if cx.owned[l] {
         let jump = val - before;
@@ -345,6 +408,7 @@ fn wall_nodes(
     // counted: what its impacts take stays inside (a negative ERROR, as a
     // contact's loss); a fixed or driven wall is outside: the work of its
     // impulses is external work (EXT-WORK), as Radioss counts it.
+    let mass = cx.mass.read().unwrap();
     let free = wall.node.is_some() && cx.wall_driver[w].is_empty() && wall.card.mass > 0.0;
     let mut push: Vec<(u32, [f64; 3])> = Vec::new();
     for (i, &l) in nodes.iter().enumerate() {
@@ -352,7 +416,7 @@ fn wall_nodes(
         let (nv, now_tied, f) = wall_velocity(
             s.x[l],
             s.v[l],
-            cx.mass[l],
+            mass[l],
             s.dt,
             s.walls.p[w],
             wall.normal,
@@ -363,8 +427,7 @@ fn wall_nodes(
         );
         let v = s.v[l];
         if cx.owned[l] && !free {
-            s.wall_work
-                .add(impulse_work(cx.mass[l], (before[i], v), nv));
+            s.wall_work.add(impulse_work(mass[l], (before[i], v), nv));
         }
         s.v[l] = nv;
         s.walls.tied[w][i] = now_tied;
@@ -421,6 +484,8 @@ pub(super) fn at_n(cx: &Ctx, s: &mut State) -> output::VelocitiesAtN {
         vr: s.vr.clone(),
         bodies: s.bodies.clone(),
         wall_v: s.walls.v.clone(),
+        ahead: Default::default(),
+        ahead_weight: 0.0,
     };
     if s.cycle == 0 || s.dt_prev <= 0.0 {
         return now(s);
@@ -433,7 +498,10 @@ pub(super) fn at_n(cx: &Ctx, s: &mut State) -> output::VelocitiesAtN {
         s.interface_samples.clone(),
         s.ties.clone(),
     );
+    // The coming update's work, summed apart.
+    (s.wall_work, s.w_ext) = Default::default();
     velocities(cx, s, 0.5 * (s.dt_prev + s.dt));
+    let ahead = [s.w_ext, s.wall_work];
     let w = s.dt_prev / (s.dt_prev + s.dt);
     let lerp = |a: &[[f64; 3]], b: &[[f64; 3]]| -> Vec<[f64; 3]> {
         a.iter()
@@ -451,6 +519,8 @@ pub(super) fn at_n(cx: &Ctx, s: &mut State) -> output::VelocitiesAtN {
         vr: lerp(&before.vr, &s.vr),
         bodies,
         wall_v: lerp(&before.wall_v, &s.walls.v),
+        ahead,
+        ahead_weight: w,
     };
     // Undo: the state is again that of the cycle's end.
     (s.v, s.vr, s.bodies) = (before.v, before.vr, before.bodies);

@@ -13,6 +13,7 @@ mod files;
 mod forces;
 mod integrate;
 mod kinematics;
+mod nodal_step;
 mod prepare;
 mod report;
 mod setup;
@@ -172,7 +173,8 @@ fn cycle_zero(cx: &Ctx, s: &mut State, report: &mut Report) -> Result<(), RunErr
     if !s.ties.is_empty() {
         s.ties.recover(cx.world, &s.x, &mut s.v, &mut s.vr, 0.0);
     }
-    let found = forces::all_forces(cx, s, 0.0);
+    let mut found = forces::all_forces(cx, s, 0.0);
+    found.nodal = nodal_step::nodal_steps(cx, s)?;
     s.step = time_step::global_step(cx, s, found)?;
     s.dt = s.step.dt;
     let (ke0, ker0) = energy::kinetic(cx, &s.v, &s.vr, &s.bodies, &s.walls.v);
@@ -218,6 +220,7 @@ fn cycle(
     let node = integrate::non_finite(cx, s);
     let mut found = forces::all_forces(cx, s, s.dt);
     found.node = node;
+    found.nodal = nodal_step::nodal_steps(cx, s)?;
     report.removals(s);
     contact_samples(s);
     s.step = time_step::global_step(cx, s, found)?;

@@ -94,9 +94,11 @@ impl Report {
             ke: e.kinetic,
             ker: e.rotational,
             ext_work: w,
-            mas_err: 0.0,
-            total_mass: cx.g.total_mass + cx.free_walls.iter().map(|w| w.1).sum::<f64>(),
-            mass_added: 0.0,
+            mas_err: s.mass_added / cx.g.total_mass,
+            total_mass: cx.g.total_mass
+                + cx.free_walls.iter().map(|w| w.1).sum::<f64>()
+                + s.mass_added,
+            mass_added: s.mass_added,
         }));
     }
 

@@ -16,6 +16,7 @@ use crate::model;
 use crate::output;
 use crate::parallel::{ExactSum, World};
 use std::collections::HashMap;
+use std::sync::RwLock;
 
 /// One rank's rigid body membership.
 pub(super) struct LocalBody {
@@ -48,8 +49,10 @@ pub(super) struct Ctx<'a> {
     pub owned: Vec<bool>,
     /// Masses and inertias with the tied secondary nodes' moved to their
     /// main nodes (/INTER/TYPE2, contact::tied); gravity acts on `sd.mass`.
-    pub mass: Vec<f64>,
-    pub inertia: Vec<f64>,
+    /// Behind a lock: /DT/NODA/CST adds mass and inertia between cycles
+    /// (`super::nodal_step`); every phase reads them once.
+    pub mass: RwLock<Vec<f64>>,
+    pub inertia: RwLock<Vec<f64>>,
     /// Rigid-body main nodes (their body moves them).
     pub is_main: Vec<bool>,
     /// Rigid-body main and member nodes (their body's resultant moves them).
@@ -62,7 +65,7 @@ pub(super) struct Ctx<'a> {
     pub ke_skip: Vec<bool>,
     /// Rotational: a tied secondary node's inertia is its main nodes' (or, on
     /// main nodes without rotations, left out of the dynamics: contact::interfaces::type2).
-    pub inertia_ke: Vec<f64>,
+    pub inertia_ke: RwLock<Vec<f64>>,
     pub local_bodies: Vec<LocalBody>,
     pub walls: OnLocal<'a, model::RigidWall>,
     /// Every translational /IMPVEL on a moving wall's node drives that direction.
@@ -72,6 +75,8 @@ pub(super) struct Ctx<'a> {
     /// K-ENERGY T, as Radioss does.
     pub free_walls: Vec<(usize, f64)>,
     pub impdisp: OnLocal<'a, model::ImposedMotion>,
+    /// /IMPDISP/FGEO: each card's local nodes as (local node, index in the card).
+    pub fgeo: Vec<(Vec<(u32, usize)>, &'a model::FinalGeometry)>,
     pub impvel: OnLocal<'a, model::ImposedMotion>,
     pub cloads: OnLocal<'a, model::ConcentratedLoad>,
     pub gravity: OnLocal<'a, model::Gravity>,
@@ -122,6 +127,13 @@ pub(super) struct State {
     pub ftie: Vec<[f64; 6]>,
     pub fint: Vec<[f64; SLOT]>,
     pub fext: Vec<[f64; SLOT]>,
+    /// /DT/NODA/CST (`super::nodal_step`): the corners' and nodes'
+    /// stiffness [K, 0, 0, K_rot, 0, 0], the mass each local node was
+    /// given, the total added mass (empty without it).
+    pub kcontrib: Vec<[f64; SLOT]>,
+    pub knode: Vec<[f64; SLOT]>,
+    pub added: Vec<f64>,
+    pub mass_added: f64,
     pub contrib: Vec<[f64; SLOT]>,
     pub blocks: Vec<Box<dyn Block>>,
     pub plan: AssemblyPlan,
@@ -209,19 +221,20 @@ pub(super) fn context<'a>(
         n,
         local_of,
         owned: (0..n as u32).map(|l| sd.owns(l)).collect(),
-        mass,
-        inertia,
+        mass: RwLock::new(mass),
+        inertia: RwLock::new(inertia),
         is_main: vec![false; n],
         in_body: vec![false; n],
         tied_tr,
         tied_rot,
         ke_skip: Vec::new(),
-        inertia_ke: Vec::new(),
+        inertia_ke: RwLock::new(Vec::new()),
         local_bodies: Vec::new(),
         walls: Vec::new(),
         wall_driver: Vec::new(),
         free_walls: Vec::new(),
         impdisp: Vec::new(),
+        fgeo: Vec::new(),
         impvel: Vec::new(),
         cloads: Vec::new(),
         gravity: Vec::new(),
@@ -302,15 +315,18 @@ fn rigid_body_roles(cx: &mut Ctx) {
         });
     }
     cx.ke_skip = (0..n).map(|l| cx.is_main[l] || cx.tied_tr[l]).collect();
-    cx.inertia_ke = (0..n)
-        .map(|l| {
-            if cx.is_main[l] || cx.tied_rot[l] {
-                0.0
-            } else {
-                cx.inertia[l]
-            }
-        })
-        .collect();
+    let inertia = cx.inertia.read().unwrap().clone();
+    cx.inertia_ke = RwLock::new(
+        (0..n)
+            .map(|l| {
+                if cx.is_main[l] || cx.tied_rot[l] {
+                    0.0
+                } else {
+                    inertia[l]
+                }
+            })
+            .collect(),
+    );
 }
 
 /// The walls, imposed motions, loads and gravity with the local nodes they act on.
@@ -344,6 +360,19 @@ fn on_local_cards<'a>(cx: &mut Ctx<'a>) {
         .imposed_displacements
         .iter()
         .map(|c| (cx.locals(&c.nodes), c))
+        .collect();
+    cx.fgeo = g
+        .final_geometries
+        .iter()
+        .map(|c| {
+            let on: Vec<(u32, usize)> = c
+                .nodes
+                .iter()
+                .enumerate()
+                .filter_map(|(k, gn)| cx.local_of.get(gn).map(|&l| (l, k)))
+                .collect();
+            (on, c)
+        })
         .collect();
     cx.impvel = g
         .imposed_velocities
@@ -429,6 +458,10 @@ pub(super) fn initial_state(
         fint: vec![[0.0f64; SLOT]; n],
         fext: vec![[0.0f64; SLOT]; n],
         contrib: vec![[0.0f64; SLOT]; slot_meta.len()],
+        kcontrib: Vec::new(),
+        knode: Vec::new(),
+        added: Vec::new(),
+        mass_added: 0.0,
         was_alive: blocks
             .iter()
             .map(|b| vec![true; b.local().global.len()])

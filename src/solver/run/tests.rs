@@ -69,7 +69,7 @@ fn momentum(cx: &Ctx, s: &State) -> [f64; 3] {
     let mut p = [0.0; 3];
     for l in 0..cx.n {
         for k in 0..3 {
-            p[k] += cx.mass[l] * s.v[l][k];
+            p[k] += cx.mass.read().unwrap()[l] * s.v[l][k];
         }
     }
     p
@@ -88,7 +88,7 @@ fn cycle_zero_takes_the_smallest_element_step_times_the_dt_scale() {
         assert_eq!(s.step.what, "SHELL");
         // The balance starts from the initial kinetic energy: ½ m v² of the launched half.
         let ke: f64 = (0..cx.n)
-            .map(|l| 0.5 * cx.mass[l] * s.v[l].iter().map(|c| c * c).sum::<f64>())
+            .map(|l| 0.5 * cx.mass.read().unwrap()[l] * s.v[l].iter().map(|c| c * c).sum::<f64>())
             .sum();
         assert!(
             (s.e0 - ke).abs() <= 1e-12 * ke,

@@ -20,7 +20,13 @@ pub(super) struct Found {
     pub node: Option<String>,
     /// This rank's contact time step terms.
     pub contact: Option<ContactStep>,
+    /// /DT/NODA/CST: this rank's smallest nodal step and its node id
+    /// (the element steps are then not used).
+    pub nodal: Option<(f64, u64)>,
 }
+
+/// The kind index that names a node (NODE) in the step's candidates.
+const NODE: usize = usize::MAX - 1;
 
 /// This rank's smallest element time step: (dt, kind index, element id).
 fn smallest_element_step(cx: &Ctx, blocks: &[Box<dyn Block>]) -> (f64, usize, u64) {
@@ -45,7 +51,11 @@ fn smallest_element_step(cx: &Ctx, blocks: &[Box<dyn Block>]) -> (f64, usize, u6
 /// (collective); a problem found on any rank stops every rank.
 pub(super) fn global_step(cx: &Ctx, s: &State, found: Found) -> Result<Step, RunError> {
     let (cycle, t) = (s.cycle, s.t);
-    let best = smallest_element_step(cx, &s.blocks);
+    // The nodal step carries its own scale (ΔTsca): undo the /DT one applied below.
+    let best = match found.nodal {
+        Some((d, id)) => (d / cx.g.engine.dt_scale, NODE, id),
+        None => smallest_element_step(cx, &s.blocks),
+    };
     let prob = found.element.map(|(k, ge, m)| {
         format!(
             "{} {} {m} at cycle {cycle}, time {t:e}",
@@ -77,7 +87,11 @@ pub(super) fn global_step(cx: &Ctx, s: &State, found: Found) -> Result<Step, Run
     let step = if d.is_finite() {
         Step {
             dt: d,
-            what: crate::model::ElementKind::ALL[ki].listing_name(),
+            what: if ki == NODE {
+                "NODE"
+            } else {
+                crate::model::ElementKind::ALL[ki].listing_name()
+            },
             id,
         }
     } else if cx.g.engine.dtix.1 > 0.0 {
