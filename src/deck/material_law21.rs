@@ -10,9 +10,8 @@
 //! 5. P_min (1-20), P_ext (21-40)
 //! 6. B (1-20), Mu_max (21-40)
 
-use super::fields::Cards;
 use super::source::Block;
-use super::{header_id, header_id_opt, Deck};
+use super::Deck;
 use crate::model::{DruckerPrager, InputResult, MaterialLaw, MaterialSpec};
 
 /// The starter's "no limit" (it prints 1e20 for blank Amax, Mu_max, −P_min).
@@ -28,16 +27,17 @@ fn or(v: f64, default: f64) -> f64 {
 
 /// Reads /MAT/LAW21 or /MAT/DPRAG into the deck's materials.
 pub(super) fn parse_law21(block: &Block, deck: &mut Deck) -> InputResult<()> {
-    let id = header_id(block, 2, "mat_ID")?;
-    let unit_id = header_id_opt(block, 3, "unit_ID")?;
-    let mut cards = Cards::new(block);
-    let title = cards.title();
-    let c1 = cards.next("the card with RHO_I (initial density)")?;
-    let rho = c1.positive_real(1, "RHO_I", "density")?;
-    let rho_ref = c1.real(21, "RHO_0", 0.0)?;
-    let c2 = cards.next("the card with E and Nu")?;
-    let e = c2.positive_real(1, "E", "Young's modulus")?;
-    let nu = c2.real(21, "Nu", 0.0)?;
+    let super::material_opening::Opening {
+        id,
+        unit_id,
+        title,
+        rho,
+        rho_ref,
+        e,
+        nu,
+        mut cards,
+        c2,
+    } = super::material_opening::read_opening(block, "the card with E and Nu")?;
     if !(-1.0 < nu && nu < 0.5) {
         return Err(c2.err("Nu", format!("{nu}: Poisson's ratio must lie in (-1, 0.5)")));
     }

@@ -12,7 +12,7 @@
 
 use super::fields::{Card, Cards};
 use super::source::Block;
-use super::{header_id, header_id_opt, Deck};
+use super::Deck;
 use crate::model::{
     Function, InputError, InputResult, MaterialLaw, MaterialSpec, RateCurve, TabulatedPlasticity,
     NO_LIMIT,
@@ -20,16 +20,20 @@ use crate::model::{
 
 /// Reads /MAT/LAW36 or /MAT/PLAS_TAB into the deck's materials.
 pub(super) fn parse_law36(block: &Block, deck: &mut Deck) -> InputResult<()> {
-    let id = header_id(block, 2, "mat_ID")?;
-    let unit_id = header_id_opt(block, 3, "unit_ID")?;
-    let mut cards = Cards::new(block);
-    let title = cards.title();
-    let c1 = cards.next("the card with RHO_I (initial density)")?;
-    let rho = c1.positive_real(1, "RHO_I", "density")?;
-    let rho_ref = c1.real(21, "RHO_0", 0.0)?;
-    let c2 = cards.next("the card with E, Nu, Eps_p_max, Eps_t, Eps_m")?;
-    let e = c2.positive_real(1, "E", "Young's modulus")?;
-    let nu = c2.real(21, "Nu", 0.0)?;
+    let super::material_opening::Opening {
+        id,
+        unit_id,
+        title,
+        rho,
+        rho_ref,
+        e,
+        nu,
+        mut cards,
+        c2,
+    } = super::material_opening::read_opening(
+        block,
+        "the card with E, Nu, Eps_p_max, Eps_t, Eps_m",
+    )?;
     if !(0.0..=0.5).contains(&nu) {
         return Err(c2.err("Nu", format!("{nu}: Poisson's ratio must lie in [0, 0.5]")));
     }

@@ -11,9 +11,8 @@
 //! 5. EPS_p_max (1-20), εt1 (21-40), εt2 (41-60)
 //! 6. (optional) fct_IDy (1-10), Fscale_y (21-40)
 
-use super::fields::Cards;
 use super::source::Block;
-use super::{header_id, header_id_opt, Deck};
+use super::Deck;
 use crate::model::{CowperSymonds, InputResult, MaterialLaw, MaterialSpec, NO_LIMIT};
 
 fn no_limit_if_zero(v: f64) -> f64 {
@@ -26,16 +25,17 @@ fn no_limit_if_zero(v: f64) -> f64 {
 
 /// Reads /MAT/LAW44 or /MAT/COWPER into the deck's materials.
 pub(super) fn parse_law44(block: &Block, deck: &mut Deck) -> InputResult<()> {
-    let id = header_id(block, 2, "mat_ID")?;
-    let unit_id = header_id_opt(block, 3, "unit_ID")?;
-    let mut cards = Cards::new(block);
-    let title = cards.title();
-    let c1 = cards.next("the card with RHO_I (initial density)")?;
-    let rho = c1.positive_real(1, "RHO_I", "density")?;
-    let rho_ref = c1.real(21, "RHO_0", 0.0)?;
-    let c2 = cards.next("the card with E and Nu")?;
-    let e = c2.positive_real(1, "E", "Young's modulus")?;
-    let nu = c2.real(21, "Nu", 0.0)?;
+    let super::material_opening::Opening {
+        id,
+        unit_id,
+        title,
+        rho,
+        rho_ref,
+        e,
+        nu,
+        mut cards,
+        c2,
+    } = super::material_opening::read_opening(block, "the card with E and Nu")?;
     if !(0.0..0.5).contains(&nu) {
         return Err(c2.err("Nu", format!("{nu}: Poisson's ratio must lie in [0, 0.5)")));
     }

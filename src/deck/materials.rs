@@ -3,9 +3,8 @@
 //! `material_law21.rs`.
 //! Other laws are reported as unsupported (the caller warns, or fails with --strict).
 
-use super::fields::Cards;
 use super::source::Block;
-use super::{header_id, header_id_opt, Deck};
+use super::Deck;
 use crate::model::{InputResult, JohnsonCook, MaterialLaw, MaterialSpec, NO_LIMIT};
 
 /// Returns false for a law this reader does not support.
@@ -28,18 +27,18 @@ pub(super) fn parse_material(block: &Block, deck: &mut Deck) -> InputResult<bool
     if !is_elastic && !is_jc {
         return Ok(false);
     }
-    let id = header_id(block, 2, "mat_ID")?;
-    let unit_id = header_id_opt(block, 3, "unit_ID")?;
-    let mut cards = Cards::new(block);
-    let title = cards.title();
-    // Card 1: RHO_I (1-20), RHO_0 (21-40)
-    let c1 = cards.next("the card with RHO_I (initial density)")?;
-    let rho = c1.positive_real(1, "RHO_I", "density")?;
-    let rho_ref = c1.real(21, "RHO_0", 0.0)?;
-    // Card 2: E (1-20), Nu (21-40), [LAW2: Iflag (41-50)]
-    let c2 = cards.next("the card with E (Young's modulus) and Nu")?;
-    let e = c2.positive_real(1, "E", "Young's modulus")?;
-    let nu = c2.real(21, "Nu", 0.0)?;
+    // Card 1: RHO_I (1-20), RHO_0 (21-40); card 2: E (1-20), Nu (21-40), [LAW2: Iflag (41-50)]
+    let super::material_opening::Opening {
+        id,
+        unit_id,
+        title,
+        rho,
+        rho_ref,
+        e,
+        nu,
+        mut cards,
+        c2,
+    } = super::material_opening::read_opening(block, "the card with E (Young's modulus) and Nu")?;
     if !(-1.0 < nu && nu <= 0.5) {
         return Err(c2.err("Nu", format!("{nu}: Poisson's ratio must lie in (-1, 0.5]")));
     }

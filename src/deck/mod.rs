@@ -25,6 +25,7 @@ mod list_end;
 mod material_law21;
 mod material_law36;
 mod material_law44;
+mod material_opening;
 mod materials;
 mod mesh;
 mod move_funct;

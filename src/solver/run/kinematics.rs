@@ -320,23 +320,11 @@ fn final_geometry(cx: &Ctx, s: &mut State, prior: &[[f64; 3]]) {
                     v[q] = before[q] - v_across * e[q] + v_axis * e[q];
                 }
             }
-            impose_vector(cx, s, l, v, before);
+            for q in 0..3 {
+                impose(cx, s, l, q, v[q], before[q]);
+            }
         }
     }
-}
-
-/// Sets a node's velocity to `val` (it was `before` at n−½): the reaction's
-/// work m(val − v_free)·val less ½m|val − before|², as `impose` per component.
-fn impose_vector(cx: &Ctx, s: &mut State, l: usize, val: [f64; 3], before: [f64; 3]) {
-    if cx.owned[l] {
-        let m = cx.mass.read().unwrap()[l];
-        for q in 0..3 {
-            let jump = val[q] - before[q];
-            s.w_ext.add(m * (val[q] - s.v[l][q]) * val[q]);
-            s.w_ext.add(-0.5 * m * jump * jump);
-        }
-    }
-    s.v[l] = val;
 }
 
 /// Sets a node's velocity (d < 3) or rotational velocity (d − 3) to
