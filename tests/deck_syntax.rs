@@ -2,8 +2,9 @@
 //! tabs as trailing white space (starter) or separators (engine), /SURF/PART/ALL
 //! and /SURF/PART/EXT, a node numbered 0, a /TH object list followed by lines
 //! that hold no id (the QA decks' `qadiags.inc`), /TFILE with dT_his = 0, a
-//! keyword variant written where the id belongs (/IMPVEL/FGEO/10) and
-//! `//SUBMODEL` refused by name, /BCS Trarot written with fewer than six codes.
+//! keyword variant written where the id belongs (/IMPVEL/FGEO/10) refused by
+//! name, `//SUBMODEL` read in place, /BCS Trarot written with fewer than six
+//! codes.
 //!
 //! Each test writes a small deck in a fresh folder and reads it through the
 //! library (`read_deck`, `build_model`).
@@ -403,12 +404,21 @@ fn a_number_that_is_no_id_stays_an_error() {
 }
 
 #[test]
-fn double_slash_submodel_is_refused_by_name() {
+fn double_slash_submodel_is_read_in_place_and_must_be_closed() {
     let c = Case::new("submodel");
-    let deck = two_bricks(&["//SUBMODEL/1", "sub", "//ENDSUB"]);
+    let deck = two_bricks(&["//SUBMODEL/1", "sub", "", "//ENDSUB"]);
     let d = c.read(&deck, None).unwrap_or_else(|e| panic!("{e}"));
-    let names: Vec<&str> = d.unsupported.iter().map(|w| w.keyword.as_str()).collect();
-    assert_eq!(names, ["//SUBMODEL/1", "//ENDSUB"]);
+    assert!(d.unsupported.is_empty(), "{:?}", d.unsupported);
+    assert!(d.open_submodels.is_empty());
+    let e = c.read(&two_bricks(&["//ENDSUB"]), None).unwrap_err();
+    assert!(e.message.contains("without an open //SUBMODEL"), "{e}");
+    let e = c
+        .read(
+            &two_bricks(&["//SUBMODEL/1/3", "sub", "", "//ENDSUB"]),
+            None,
+        )
+        .unwrap_err();
+    assert_eq!(e.field, "unit_ID", "{e}");
 }
 
 // ---------------------------------------------------------------------------

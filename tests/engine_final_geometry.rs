@@ -57,24 +57,13 @@ fn plate_deck(tag: &str, cards: &[String], engine: &[&str]) -> (PathBuf, Vec<(u6
     (deck, nodes)
 }
 
-/// (time, step, what, id, I-ENERGY, K-ENERGY T, EXT-WORK, MASS ADDED) rows of the cycle table.
+/// (time, step, what, I-ENERGY, K-ENERGY T, EXT-WORK, MASS ADDED) rows of the cycle table.
 fn rows(text: &str) -> Vec<(f64, f64, String, f64, f64, f64, f64)> {
-    text.lines()
-        .filter_map(|l| {
-            let t: Vec<&str> = l.split_whitespace().collect();
-            if t.len() < 13 || t[0].parse::<u64>().is_err() || !t[5].ends_with('%') {
-                return None;
-            }
-            let p = |s: &str| s.parse::<f64>().ok();
-            Some((
-                p(t[1])?,
-                p(t[2])?,
-                t[3].to_string(),
-                p(t[6])?,
-                p(t[7])?,
-                p(t[9])?,
-                p(t[12])?,
-            ))
+    cycle_table(text)
+        .iter()
+        .map(|t| {
+            let n = |i: usize| num(t[i]);
+            (n(1), n(2), t[3].to_string(), n(6), n(7), n(9), n(12))
         })
         .collect()
 }

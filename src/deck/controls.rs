@@ -1,4 +1,4 @@
-//! /BEGIN, the starter control cards (/ANALY, /SPMD, /IOFLAG, /RANDOM,
+//! /BEGIN, the starter control cards (/ANALY, /SPMD, /IOFLAG,
 //! /SHFRA), time-history requests (/TH/*) and starter /ANIM requests.
 
 use super::fields::{Card, Cards};
@@ -125,8 +125,6 @@ pub struct Controls {
     pub spmd: Option<[i64; 4]>,
     /// /IOFLAG: IPRI (1-10), IGTYP (21-30), IOUTP (31-40), IOUTYY (41-50), IROOTYY (51-60), IDROT (61-70).
     pub ioflag: Option<[i64; 6]>,
-    /// /RANDOM: noise amplitude (1-20), seed (21-40).
-    pub random: Option<(f64, i64)>,
     /// /SHFRA/V4 or /SHFRA/V5.
     pub shfra: Option<String>,
 }
@@ -165,24 +163,6 @@ pub(super) fn parse_control(block: &Block, deck: &mut Deck) -> InputResult<bool>
                 c.int(51, "IROOTYY", 0)?,
                 c.int(61, "IDROT", 0)?,
             ]);
-        }
-        "RANDOM" => {
-            let c = cards.next("the card with Random-Noise, Seed")?;
-            let amp = c.real(1, "Random-Noise", 0.0)?;
-            let seed = c.int_opt(21, 20, "Seed")?.unwrap_or(0);
-            if amp != 0.0 {
-                // A noise on the node coordinates changes the solution and
-                // the engine does not add it: an unsupported keyword, by name.
-                deck.warnings.push(crate::model::Warning {
-                    loc: c.loc(),
-                    keyword: block.header.clone(),
-                    message: format!(
-                        "Random-Noise = {amp}: a random perturbation of the node coordinates is not computed"
-                    ),
-                });
-                return Ok(false);
-            }
-            ctl.random = Some((amp, seed));
         }
         "SHFRA" => {
             let v = block.parts.get(1).cloned().unwrap_or_default();

@@ -30,10 +30,13 @@ mod materials;
 mod mesh;
 mod move_funct;
 mod parts;
+mod pressure_load;
+mod random_noise;
 mod resolve_sets;
 mod sets;
 mod skews;
 mod spring_props;
+mod submodel;
 pub mod supported;
 mod to_model;
 
@@ -99,6 +102,15 @@ pub struct Deck {
     pub warnings: Vec<Warning>,
     /// Keywords no parser reads and the policy does not let through (`run` stops on them).
     pub unsupported: Vec<Warning>,
+    /// /PLOAD cards.
+    #[serde(default)]
+    pub pressure_loads: Vec<crate::model::PressureLoadSpec>,
+    /// /RANDOM cards, in deck order.
+    #[serde(default)]
+    pub random_noises: Vec<random_noise::RandomCard>,
+    /// //SUBMODEL blocks not yet closed by //ENDSUB (while reading).
+    #[serde(default)]
+    pub open_submodels: Vec<Loc>,
 }
 
 /// Reading options.
@@ -119,6 +131,7 @@ pub fn read_deck(starter: &Path, engine: EngineFile, opts: ReadOptions) -> Input
     for block in &src.blocks {
         parse_starter_block(block, &mut deck, opts)?;
     }
+    submodel::check_closed(&deck)?;
     move_funct::apply(&mut deck)?;
     if src.end.is_none() {
         let loc = src
@@ -245,14 +258,18 @@ fn parse_starter_block(block: &Block, deck: &mut Deck, opts: ReadOptions) -> Inp
 pub(crate) fn read_starter_block(block: &Block, deck: &mut Deck) -> InputResult<bool> {
     let p: Vec<&str> = block.parts.iter().map(String::as_str).collect();
     Ok(match p[0] {
-        "BEGIN" => controls::parse_begin(block, deck).map(|_| true)?,
+        "BEGIN" => {
+            submodel::refuse_begin_inside(block, deck)?;
+            controls::parse_begin(block, deck).map(|_| true)?
+        }
+        "/SUBMODEL" | "/ENDSUB" => submodel::parse_submodel(block, deck)?,
         "TITLE" => {
             let mut cards = Cards::new(block);
             deck.title = cards.title();
             warn_surplus(&cards, "the title", &mut deck.warnings);
             true
         }
-        "ANALY" | "SPMD" | "IOFLAG" | "RANDOM" | "SHFRA" => controls::parse_control(block, deck)?,
+        "ANALY" | "SPMD" | "IOFLAG" | "SHFRA" => controls::parse_control(block, deck)?,
         "TH" => controls::parse_th(block, deck)?,
         "ANIM" => controls::parse_anim(block, deck)?,
         "NODE" => mesh::parse_nodes(block, deck).map(|_| true)?,
@@ -268,6 +285,8 @@ pub(crate) fn read_starter_block(block: &Block, deck: &mut Deck) -> InputResult<
         "ADMAS" => parts::parse_admas(block, deck)?,
         "GRNOD" | "GRSHEL" | "SURF" | "SUBSET" => sets::parse_set(block, deck)?,
         "LINE" => lines::parse_line(block, deck)?,
+        "RANDOM" => random_noise::parse_random(block, deck)?,
+        "PLOAD" => pressure_load::parse_pload(block, deck)?,
         "SKEW" => skews::parse_skew(block, deck)?,
         "IMPDISP" if block.parts.get(1).is_some_and(|p| p == "FGEO") => {
             impdisp_fgeo::parse_fgeo(block, deck)?

@@ -348,6 +348,20 @@ fn tabs(text: &str, format: LineFormat, loc: &Loc) -> InputResult<String> {
     }
 }
 
+/// A keyword line split at '/', upper-cased: `/MAT/LAW1/1` → ["MAT",
+/// "LAW1", "1"]; `//SUBMODEL/1` → ["/SUBMODEL", "1"].
+pub(crate) fn header_parts(header: &str) -> Vec<String> {
+    let double = header.starts_with("//");
+    let mut parts: Vec<String> = header[if double { 2 } else { 1 }..]
+        .split('/')
+        .map(|p| p.trim().to_ascii_uppercase())
+        .collect();
+    if double {
+        parts[0].insert(0, '/');
+    }
+    parts
+}
+
 fn split_blocks(lines: Vec<Line>) -> InputResult<Vec<Block>> {
     let mut blocks: Vec<Block> = Vec::new();
     for line in lines {
@@ -355,16 +369,8 @@ fn split_blocks(lines: Vec<Line>) -> InputResult<Vec<Block>> {
             let header = line.text.trim_end().to_string();
             // `//SUBMODEL/1` ... `//ENDSUB` (the reference guide's submodel
             // keywords) are keywords whose name keeps its leading '/':
-            // parts ["/SUBMODEL", "1"], so that no family reads them and the
-            // keyword policy names them.
-            let double = header.starts_with("//");
-            let mut parts: Vec<String> = header[if double { 2 } else { 1 }..]
-                .split('/')
-                .map(|p| p.trim().to_ascii_uppercase())
-                .collect();
-            if double {
-                parts[0].insert(0, '/');
-            }
+            // parts ["/SUBMODEL", "1"] (read by `super::submodel`).
+            let parts = header_parts(&header);
             if parts.first().is_none_or(|p| p.is_empty() || p == "/") {
                 return Err(InputError::new(
                     line.loc,

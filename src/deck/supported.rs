@@ -121,6 +121,7 @@ pub const SUPPORTED: &[Supported] = &[
     s("/MOVE_FUNCT", &["/MOVE_FUNCT/1"], "scales and shifts a /FUNCT's points in place (Ascale_x, Fscale_y, Ashift_x, Fshift_y)"),
     s("/INIVEL/TRA, /INIVEL/ROT", &["/INIVEL/TRA/1", "/INIVEL/ROT/1"], "initial velocities"),
     s("/CLOAD, /GRAV", &["/CLOAD/1", "/GRAV/1"], "concentrated loads and gravity (skew and sensor refused)"),
+    s("/PLOAD", &["/PLOAD/1"], "pressure on a surface's segments, p·N/8 per quadrangle node (p·N/6 per triangle node) at the current geometry, ended with the element under it unless Idel 2 (sensor, Ipinch, Itypfun 2/3 refused by name)"),
     s("/DAMP", &["/DAMP/1"], "Rayleigh damping of a node group: α, β for every degree of freedom or one pair each, Tstart, Tstop; its work in the external work, the time step reduced (skew refused; /DAMP/INTER, VREL, FREQ_RANGE not read)"),
     s("/RWALL/PLANE", &["/RWALL/PLANE/1"], "rigid walls: fixed, moving with their node, or free with their own mass; friction"),
     s("/RBODY", &["/RBODY/1"], "rigid bodies; surf_ID: the /SURF/ELLIPS the body carries (sensor, skew, IKREM and other surfaces refused)"),
@@ -136,10 +137,11 @@ pub const SUPPORTED: &[Supported] = &[
     s("/TH/*", &["/TH/NODE/1", "/TH/PART/1"], "time-history requests: the run file's /th tables (nodes, parts, interfaces, rigid walls, global energies)"),
     s("/ANIM/*", &["/ANIM/VECT/DISP"], "animation requests: states at /ANIM/DT in the run file"),
     s("/ANALY, /SPMD, /IOFLAG, /SHFRA/V4, /SHFRA/V5", &["/ANALY", "/SPMD", "/IOFLAG", "/SHFRA/V4"], "read; they change nothing in the solution (N2D3D other than 0 refused)"),
-    s("/RANDOM", &["/RANDOM"], "Random-Noise 0 only: a noise that would move the nodes is an unsupported keyword"),
+    s("/RANDOM, /RANDOM/GRNOD", &["/RANDOM", "/RANDOM/GRNOD/1"], "the reference starter's random noise (Xalea, Seed) added to the initial coordinates, every node in reading order or a group's; a unit system of its own refused"),
+    s("//SUBMODEL, //ENDSUB", &["//SUBMODEL/1", "//ENDSUB"], "submodels read in place: ids and coordinates as written (id offsets, a unit system or version of their own, a /BEGIN inside refused by name)"),
     e("/RUN", &["/RUN/NAME/1"], "end time"),
     e("/DT", &["/DT"], "time step scale and minimum (the per-type controls /DT/<type>/<action>, other nodal options and /DT/AMS are not computed: refused by name)"),
-    e("/DT/NODA/CST", &["/DT/NODA/CST/0"], "the time step from the nodes (scale, minimum): each node under the minimum gets the mass and inertia that bring it there (MASS ADDED, MAS.ERR); 4-node shells give their nodal stiffness, other elements refuse it by name"),
+    e("/DT/NODA/CST", &["/DT/NODA/CST/0"], "the time step from the nodes (scale, minimum): each node under the minimum gets the mass and inertia that bring it there (MASS ADDED, MAS.ERR); 4-node shells give their nodal stiffness, rigid bodies step at their main node (Σ K, Σ K_rot + d²K, the smallest principal inertia), other elements refuse it by name"),
     e("/PRINT", &["/PRINT/-100/55"], "listing period"),
     e("/ANIM/DT, /ANIM/*", &["/ANIM/DT", "/ANIM/ELEM/VONM"], "state period of the run file"),
     e("/TFILE", &["/TFILE/4"], "time-history period (0: every cycle)"),
@@ -180,11 +182,7 @@ mod tests {
     fn block(header: &str) -> Block {
         Block {
             header: header.to_string(),
-            parts: header
-                .trim_start_matches('/')
-                .split('/')
-                .map(|p| p.trim().to_uppercase())
-                .collect(),
+            parts: crate::deck::source::header_parts(header),
             loc: Loc {
                 file: "table".into(),
                 line: 1,

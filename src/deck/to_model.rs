@@ -71,7 +71,7 @@ fn build(deck: &Deck) -> Result<Model, InputError> {
         )
     })?;
     let mut warnings = deck.warnings.clone();
-    let (nodes, node_index) = read_nodes(deck, &begin)?;
+    let (mut nodes, node_index) = read_nodes(deck, &begin)?;
     let (part_index, properties, parts) = read_parts(deck)?;
     let (elements, element_locs, shell4_index) =
         read_elements(deck, &node_index, &part_index, &parts, &properties)?;
@@ -122,6 +122,17 @@ fn build(deck: &Deck) -> Result<Model, InputError> {
         )?,
     };
 
+    let reading_order: Vec<u32> = deck
+        .nodes
+        .iter()
+        .filter_map(|n| node_index.get(n.id))
+        .collect();
+    super::random_noise::perturb(
+        &deck.random_noises,
+        &reading_order,
+        |id, loc| refs.group(id, loc, "/RANDOM/GRNOD", "grnd_ID"),
+        &mut nodes.x,
+    )?;
     let conditions = read_conditions(deck, &refs, nodes.len())?;
     refs.check_spring_functions(&properties)?;
     for c in &deck.interfaces {
@@ -145,6 +156,17 @@ fn build(deck: &Deck) -> Result<Model, InputError> {
     let final_geometries = super::impdisp_fgeo::resolve(deck, &node_index, |f, l, k, fld| {
         refs.check_fct(f, l, k, fld)
     })?;
+
+    let pressure_loads = super::pressure_load::resolve(
+        &deck.pressure_loads,
+        &surfaces,
+        |c| {
+            let kw = format!("/PLOAD/{}", c.id);
+            refs.check_fct(c.fct, &c.loc, &kw, "fct_IDT")?;
+            Ok(refs.surf_index.resolve(c.surf, &c.loc, &kw, "surf_ID")? as usize)
+        },
+        &elements,
+    )?;
 
     // Masses.
     let mut model = Model {
@@ -177,6 +199,7 @@ fn build(deck: &Deck) -> Result<Model, InputError> {
         time_histories: deck.time_histories.clone(),
         skews,
         final_geometries,
+        pressure_loads,
         mass: MassSummary::default(),
         engine: deck.engine.clone(),
         warnings: Vec::new(),

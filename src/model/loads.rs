@@ -148,3 +148,21 @@ pub struct FinalGeometry {
     pub target: Vec<[f64; 3]>,
     pub loc: Loc,
 }
+
+/// /PLOAD: a pressure p(t) = Fscale_y · f(t / Ascale_x) on each segment of
+/// a surface, pushing along the segment's right-hand normal N1N3 × N2N4
+/// (reference guide /PLOAD, comment 1).
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct PressureLoadSpec {
+    pub id: Id,
+    pub unit_id: Id,
+    pub title: String,
+    pub surf: Id,
+    pub fct: Id,
+    pub ascale_x: f64,
+    pub fscale_y: f64,
+    /// Idel 2: the load stays on a segment whose element was deleted
+    /// (1, the default: it goes with its element).
+    pub keep_after_deletion: bool,
+    pub loc: Loc,
+}

@@ -220,6 +220,17 @@ pub struct RigidBody {
     pub inertia: [f64; 6],
 }
 
+/// /PLOAD with its segments (dense node indices; a triangle repeats its
+/// third node) and the element that carries each: (kind index in
+/// `ElementKind::ALL`, element index within its kind). The carrier's rank
+/// computes the segment's forces, and its deletion ends them (Idel 1).
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct PressureLoad {
+    pub card: PressureLoadSpec,
+    pub segments: Vec<[u32; 4]>,
+    pub carriers: Vec<(u8, u32)>,
+}
+
 /// A direction-and-function load or imposed motion, with its nodes.
 pub type Bcs = OnNodes<BoundarySpec>;
 pub type ImposedMotion = OnNodes<ImposedMotionSpec>;
@@ -259,6 +270,9 @@ pub struct Model {
     /// Final-geometry motions (/IMPDISP/FGEO).
     #[serde(default)]
     pub final_geometries: Vec<FinalGeometry>,
+    /// Pressure loads (/PLOAD) with their segments.
+    #[serde(default)]
+    pub pressure_loads: Vec<PressureLoad>,
     /// Skew frames (/SKEW/FIX, /SKEW/MOV).
     #[serde(default)]
     pub skews: Vec<Skew>,

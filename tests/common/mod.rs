@@ -230,3 +230,20 @@ pub fn read_csv(path: &Path) -> (Vec<String>, Vec<Vec<f64>>) {
         .collect();
     (header, rows)
 }
+
+/// The rows of a listing's cycle table, split into their fields: CYCLE,
+/// TIME, TIME-STEP, ELEMENT (kind, id), ERROR %, I-ENERGY, K-ENERGY T,
+/// K-ENERGY R, EXT-WORK, MAS.ERR, TOTAL MASS, MASS ADDED.
+pub fn cycle_table(text: &str) -> Vec<Vec<&str>> {
+    text.lines()
+        .map(|l| l.split_whitespace().collect::<Vec<&str>>())
+        .filter(|t| t.len() >= 13 && t[0].parse::<u64>().is_ok() && t[5].ends_with('%'))
+        .collect()
+}
+
+/// A number of the listing (panics with the field when it is none).
+pub fn num(field: &str) -> f64 {
+    field
+        .parse()
+        .unwrap_or_else(|_| panic!("'{field}' is no number"))
+}

@@ -7,8 +7,9 @@ use crate::parallel::exact_sum::{sum_over_ranks, ExactSum};
 
 /// Translational and rotational kinetic energy (owned nodes, rigid-body
 /// main masses once; rigid-body main nodes and tied secondary nodes skip
-/// the translational energy), with the free moving rigid walls' own kinetic
-/// energy in the translational one, as the Radioss listing counts it.
+/// the translational energy), with the moving rigid walls' own kinetic
+/// energy (free or driven) in the translational one, as the Radioss
+/// listing counts it.
 pub(super) fn kinetic(
     cx: &Ctx,
     v: &[[f64; 3]],
@@ -44,7 +45,7 @@ pub(super) fn kinetic(
     }
     if cx.world.rank() == 0 {
         // The walls' state is replicated: counted once, on rank 0.
-        for &(w, m) in &cx.free_walls {
+        for &(w, m) in &cx.wall_masses {
             let u = wall_v[w];
             e[0].add(0.5 * m * (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]));
         }

@@ -25,6 +25,14 @@ pub(super) fn all_forces(cx: &Ctx, s: &mut State, dt: f64) -> Found {
     );
     s.plan.assemble(cx.world, &s.contrib, &mut s.fint);
     external_forces(cx, s.t, &mut s.fext);
+    if let Some(p) = s.pressure.as_mut() {
+        let on = super::pressure::Loads {
+            world: cx.world,
+            g: cx.g,
+            fct_index: &cx.fct_index,
+        };
+        super::pressure::add(&on, p, &s.blocks, &s.x, s.t, &mut s.fext);
+    }
     let dead = newly_deleted(s);
     let contact = contact_forces(cx, s, dt, &dead);
     Found {

@@ -352,7 +352,16 @@ fn rigid_walls(cx: &Ctx, s: &mut State, before: &[Vec<[f64; 3]>]) {
         s.walls.force[w] = Default::default();
         for c in &cx.wall_driver[w] {
             if let Some(val) = cx.imposed(c, th) {
-                s.walls.v[w][c.card.dir.index()] = val;
+                let d = c.card.dir.index();
+                // The driver's work on the wall's own mass, ½M(v² − v_prior²)
+                // (an imposed motion's work, `imposed_motion`, with no other
+                // force on that mass); the walls are replicated: rank 0 counts it.
+                if cx.world.rank() == 0 {
+                    let prior = s.walls.v[w][d];
+                    s.w_ext
+                        .add(0.5 * wall.card.mass * (val * val - prior * prior));
+                }
+                s.walls.v[w][d] = val;
             }
         }
         let push = wall_nodes(cx, s, w, (nodes, &before[w]));

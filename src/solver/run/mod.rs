@@ -15,6 +15,7 @@ mod integrate;
 mod kinematics;
 mod nodal_step;
 mod prepare;
+mod pressure;
 mod report;
 mod setup;
 mod time_step;

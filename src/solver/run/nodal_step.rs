@@ -10,6 +10,16 @@
 //! are kept (the kinetic energy grows with the mass, and MASS ADDED and
 //! MAS.ERR say by how much). The element steps are not used: the cycle's
 //! step is the smallest nodal step, named after its node.
+//!
+//! A rigid body steps at its main node (the reference engine's rgbodfp
+//! and dtnoda): K = Σ K_s over its secondary nodes, K_rot = Σ (K_rot,s +
+//! d²·K_s) with d the arm from the body's centre, and the step
+//! ΔTsca·min(√(2M/K), √(2·I_min/K_rot)), I_min its smallest principal
+//! inertia (Ispher 1: their mean; values under 10⁻³·I_max raised by
+//! 0.1·I_max, as the reference does). Elements whose nodes all belong to one
+//! body are inactive in the reference (its starter's "deactivated
+//! elements") and give no stiffness. Under ΔTmin the body takes mass, and
+//! its principal inertias are raised to the inertia its step needs.
 
 use super::setup::{Ctx, State};
 use crate::error::RunError;
@@ -29,6 +39,7 @@ pub(super) fn nodal_steps(cx: &Ctx, s: &mut State) -> Result<Option<(f64, u64)>,
         s.kcontrib = vec![[0.0; crate::element::SLOT]; s.contrib.len()];
         s.knode = vec![[0.0; crate::element::SLOT]; cx.n];
         s.added = vec![0.0; cx.n];
+        s.kinactive = inside_bodies(cx, s);
     }
     for (i, b) in s.blocks.iter().enumerate() {
         let slots = &mut s.kcontrib[cx.offsets[i]..cx.offsets[i + 1]];
@@ -38,6 +49,9 @@ pub(super) fn nodal_steps(cx: &Ctx, s: &mut State) -> Result<Option<(f64, u64)>,
                 b.kind().listing_name()
             )));
         }
+    }
+    for &slot in &s.kinactive {
+        s.kcontrib[slot as usize] = [0.0; crate::element::SLOT];
     }
     s.plan.assemble(cx.world, &s.kcontrib, &mut s.knode);
     let f = 0.5 * (min / scale) * (min / scale) * MARGIN;
@@ -78,8 +92,130 @@ pub(super) fn nodal_steps(cx: &Ctx, s: &mut State) -> Result<Option<(f64, u64)>,
             }
         }
     }
+    drop((mass, inertia, inertia_ke));
+    let (body_best, body_added) = body_steps(cx, s, scale, f);
+    if body_best.0 < best.0 || (body_best.0 == best.0 && body_best.1 < best.1) {
+        best = body_best;
+    }
+    added.add(body_added);
     let mut sums = [added];
     sum_over_ranks(cx.world, &mut sums);
     s.mass_added = sums[0].value();
     Ok(Some(best))
+}
+
+/// The stiffness slots of elements whose nodes all belong to one rigid body.
+fn inside_bodies(cx: &Ctx, s: &State) -> Vec<u32> {
+    let mut body_of = vec![u32::MAX; cx.n];
+    for (b, lb) in cx.local_bodies.iter().enumerate() {
+        for &(l, _) in &lb.members {
+            body_of[l as usize] = b as u32;
+        }
+    }
+    let mut out = Vec::new();
+    for (i, blk) in s.blocks.iter().enumerate() {
+        let (le, nc, stride) = (blk.local(), blk.corners(), blk.kind().nodes());
+        for e in 0..le.global.len() {
+            let nodes = &le.nodes[stride * e..stride * e + nc];
+            let b = body_of[nodes[0] as usize];
+            if b != u32::MAX && nodes.iter().all(|&l| body_of[l as usize] == b) {
+                let first = cx.offsets[i] + e * nc;
+                out.extend((first..first + nc).map(|k| k as u32));
+            }
+        }
+    }
+    out
+}
+
+/// Each rigid body's step at its main node (summed exactly over the ranks,
+/// so every rank finds the same), the mass and inertia ΔTmin asks of it;
+/// returns the smallest step with its main node's id, and the mass added
+/// this cycle on this rank's share (the rank owning the main node).
+fn body_steps(cx: &Ctx, s: &mut State, scale: f64, f: f64) -> ((f64, u64), f64) {
+    let nb = cx.local_bodies.len();
+    if nb == 0 {
+        return ((f64::INFINITY, u64::MAX), 0.0);
+    }
+    let mut sums = vec![ExactSum::default(); 2 * nb];
+    for (b, lb) in cx.local_bodies.iter().enumerate() {
+        let c = s.bodies[b].center;
+        let main = lb.main_local.map(|l| (l, 0));
+        for &(l, _) in lb.members.iter().chain(main.iter()) {
+            let l = l as usize;
+            if !cx.owned[l] {
+                continue;
+            }
+            let (k, kr) = (s.knode[l][0], s.knode[l][3]);
+            let d2: f64 = (0..3).map(|i| (s.x[l][i] - c[i]).powi(2)).sum();
+            sums[2 * b].add(k);
+            sums[2 * b + 1].add(kr + d2 * k);
+        }
+    }
+    sum_over_ranks(cx.world, &mut sums);
+    let mut best = (f64::INFINITY, u64::MAX);
+    let mut added = 0.0;
+    for (b, rb) in cx.g.rigid_bodies.iter().enumerate() {
+        let (k, kr) = (sums[2 * b].value(), sums[2 * b + 1].value());
+        let body = &mut s.bodies[b];
+        let mut dt = f64::INFINITY;
+        if k > 0.0 {
+            let need = f * k;
+            if body.mass < need {
+                if cx.local_bodies[b]
+                    .main_local
+                    .is_some_and(|l| cx.owned[l as usize])
+                {
+                    added += need - body.mass;
+                }
+                body.mass = need;
+            }
+            dt = scale * (2.0 * body.mass / k).sqrt();
+        }
+        if kr > 0.0 {
+            let need = f * kr;
+            let mut i_min = smallest_inertia(&body.j0, rb.card.ispher);
+            if i_min < need {
+                raise_inertia(&mut body.j0, need);
+                i_min = smallest_inertia(&body.j0, rb.card.ispher);
+            }
+            dt = dt.min(scale * (2.0 * i_min / kr).sqrt());
+        }
+        let id = cx.g.node_ids[rb.main_node as usize];
+        if dt < best.0 || (dt == best.0 && id < best.1) {
+            best = (dt, id);
+        }
+    }
+    (best, added)
+}
+
+fn principal(j: &[f64; 6]) -> nalgebra::SymmetricEigen<f64, nalgebra::U3> {
+    nalgebra::Matrix3::new(j[0], j[3], j[5], j[3], j[1], j[4], j[5], j[4], j[2]).symmetric_eigen()
+}
+
+/// The inertia the step sees: the smallest principal value, as the
+/// reference's main node carries it (Ispher 1: the mean of the three).
+fn smallest_inertia(j: &[f64; 6], ispher: i64) -> f64 {
+    let ev = principal(j).eigenvalues;
+    if ispher == 1 {
+        return (ev[0] + ev[1] + ev[2]) / 3.0;
+    }
+    let max = ev.max();
+    ev.iter()
+        .map(|&e| if e < 1e-3 * max { e + 0.1 * max } else { e })
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// Raises every principal inertia below `need` to it (axes kept).
+fn raise_inertia(j: &mut [f64; 6], need: f64) {
+    let e = principal(j);
+    let d = nalgebra::Matrix3::from_diagonal(&e.eigenvalues.map(|v| v.max(need)));
+    let m = e.eigenvectors * d * e.eigenvectors.transpose();
+    *j = [
+        m[(0, 0)],
+        m[(1, 1)],
+        m[(2, 2)],
+        m[(0, 1)],
+        m[(1, 2)],
+        m[(0, 2)],
+    ];
 }

@@ -96,7 +96,7 @@ impl Report {
             ext_work: w,
             mas_err: s.mass_added / cx.g.total_mass,
             total_mass: cx.g.total_mass
-                + cx.free_walls.iter().map(|w| w.1).sum::<f64>()
+                + cx.wall_masses.iter().map(|w| w.1).sum::<f64>()
                 + s.mass_added,
             mass_added: s.mass_added,
         }));

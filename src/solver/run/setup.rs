@@ -70,10 +70,11 @@ pub(super) struct Ctx<'a> {
     pub walls: OnLocal<'a, model::RigidWall>,
     /// Every translational /IMPVEL on a moving wall's node drives that direction.
     pub wall_driver: Vec<Vec<&'a model::ImposedMotion>>,
-    /// Free moving walls (a node, a mass, no driver): (wall, mass). The
-    /// listing counts their mass in TOTAL MASS and their kinetic energy in
-    /// K-ENERGY T, as Radioss does.
-    pub free_walls: Vec<(usize, f64)>,
+    /// Moving walls with a mass, free or driven by an /IMPVEL on their
+    /// node: (wall, mass). The listing counts their mass in TOTAL MASS and
+    /// their kinetic energy in K-ENERGY T, as Radioss does (a driven wall's
+    /// driver does the work of its kinetic energy, `kinematics`).
+    pub wall_masses: Vec<(usize, f64)>,
     pub impdisp: OnLocal<'a, model::ImposedMotion>,
     /// /IMPDISP/FGEO: each card's local nodes as (local node, index in the card).
     pub fgeo: Vec<(Vec<(u32, usize)>, &'a model::FinalGeometry)>,
@@ -134,7 +135,11 @@ pub(super) struct State {
     pub knode: Vec<[f64; SLOT]>,
     pub added: Vec<f64>,
     pub mass_added: f64,
+    /// The stiffness slots of elements inside a rigid body (no stiffness).
+    pub kinactive: Vec<u32>,
     pub contrib: Vec<[f64; SLOT]>,
+    /// /PLOAD segments this rank carries (None without /PLOAD).
+    pub pressure: Option<super::pressure::PressureState>,
     pub blocks: Vec<Box<dyn Block>>,
     pub plan: AssemblyPlan,
     /// Contact: forces and stiffness per local node, summed in a fixed global order.
@@ -232,7 +237,7 @@ pub(super) fn context<'a>(
         local_bodies: Vec::new(),
         walls: Vec::new(),
         wall_driver: Vec::new(),
-        free_walls: Vec::new(),
+        wall_masses: Vec::new(),
         impdisp: Vec::new(),
         fgeo: Vec::new(),
         impvel: Vec::new(),
@@ -349,11 +354,11 @@ fn on_local_cards<'a>(cx: &mut Ctx<'a>) {
             None => Vec::new(),
         })
         .collect();
-    cx.free_walls = g
+    cx.wall_masses = g
         .rigid_walls
         .iter()
         .enumerate()
-        .filter(|(w, r)| r.node.is_some() && r.card.mass > 0.0 && cx.wall_driver[*w].is_empty())
+        .filter(|(_, r)| r.node.is_some() && r.card.mass > 0.0)
         .map(|(w, r)| (w, r.card.mass))
         .collect();
     cx.impdisp = g
@@ -440,6 +445,7 @@ pub(super) fn initial_state(
     let blocks = element_blocks(cx, &x)?;
     let slot_meta = slots(cx, &blocks);
     let plan = AssemblyPlan::build(cx.world, sd, &slot_meta);
+    let pressure = super::pressure::build(cx.world, sd, g, &cx.local_of, &blocks);
     let mut contact = ContactSystem::new(g.contact.clone(), sd, &g.node_ids);
     contact.set_time_step_scale(g.engine.dt_scale);
     contact.always_sort = std::env::var_os("CRASHSIM_SORT_EVERY_CYCLE").is_some();
@@ -458,10 +464,12 @@ pub(super) fn initial_state(
         fint: vec![[0.0f64; SLOT]; n],
         fext: vec![[0.0f64; SLOT]; n],
         contrib: vec![[0.0f64; SLOT]; slot_meta.len()],
+        pressure,
         kcontrib: Vec::new(),
         knode: Vec::new(),
         added: Vec::new(),
         mass_added: 0.0,
+        kinactive: Vec::new(),
         was_alive: blocks
             .iter()
             .map(|b| vec![true; b.local().global.len()])
