@@ -751,7 +751,7 @@ fn part_names_unsupported_material() {
     let c = Case::new("part-mat-unsupported");
     let mut d = base_deck();
     let n = replace(&mut d, &part_line(), i10(1) + &i10(8) + &i10(0));
-    before_end(&mut d, &[s("/MAT/LAW27/8"), s("brittle"), r20("7800.0")]);
+    before_end(&mut d, &[s("/MAT/LAW25/8"), s("brittle"), r20("7800.0")]);
     let out = c.check(&d);
     assert_error(
         &out,
@@ -760,7 +760,7 @@ fn part_names_unsupported_material() {
             line: n,
             keyword: "/PART/1",
             field: "mat_ID",
-            phrases: &["material 8 is not defined", "/MAT/LAW27/8", "not supported"],
+            phrases: &["material 8 is not defined", "/MAT/LAW25/8", "not supported"],
         },
     );
 }

@@ -147,16 +147,21 @@ fn nodes_reach_their_final_geometry_along_straight_lines() {
     );
 }
 
-#[test]
-fn nodal_time_step_adds_the_mass_that_brings_every_node_to_the_minimum() {
-    let cards = [
+/// The whole plate launched at (1, 0, 0.5).
+fn flying_plate() -> [String; 6] {
+    [
         "/INIVEL/TRA/1".to_string(),
         "whole plate".into(),
         format!("{:>20}{:>20}{:>20}{:>10}", 1, 0, 0.5, 1),
         "/GRNOD/PART/1".into(),
         "plate".into(),
         format!("{:>10}", 1),
-    ];
+    ]
+}
+
+#[test]
+fn nodal_time_step_adds_the_mass_that_brings_every_node_to_the_minimum() {
+    let cards = flying_plate();
     let (tmin, scale) = (3e-3, 0.9);
     let (deck, _) = plate_deck("nodal-cst", &cards, &["/DT/NODA/CST/0", "0.9 0.003"]);
     let (text, _) = run(&deck, "nodal-cst");
@@ -186,4 +191,31 @@ fn nodal_time_step_adds_the_mass_that_brings_every_node_to_the_minimum() {
         "K-ENERGY T {} against {ke}",
         r[1].4
     );
+}
+
+/// /DT/NODA/0 (no action keyword): the step comes from the nodes, ΔTsca·√(2m/K)
+/// (on the plate's squares √(100ρ/A11) at every node), and no mass is added
+/// although ΔTmin is above it; /DT/BRICK/CST changes nothing in a model
+/// without solids.
+#[test]
+fn plain_nodal_time_step_adds_no_mass() {
+    let cards = flying_plate();
+    let (deck, _) = plate_deck(
+        "nodal-plain",
+        &cards,
+        &["/DT/NODA/0", "0.8 0.003", "/DT/BRICK/CST/0", "0.67 4e-4"],
+    );
+    let (text, _) = run(&deck, "nodal-plain");
+    let want = 0.8 * (100.0 * RHO / (E / (1.0 - NU * NU))).sqrt();
+    let r = rows(&text);
+    assert!(r.len() > 10);
+    for row in &r {
+        assert_eq!(row.2, "NODE", "{row:?}");
+        assert!(
+            (row.1 - want).abs() < 5e-5 * want,
+            "step {} against {want}",
+            row.1
+        );
+        assert_eq!(row.6, 0.0, "MASS ADDED {}", row.6);
+    }
 }

@@ -78,7 +78,7 @@ fn free_plate_with_unsupported(tag: &str) -> std::path::PathBuf {
     let engine = std::fs::read_to_string(src.join("free_plate_0001.rad")).unwrap();
     std::fs::write(
         dir.join("free_plate_0001.rad"),
-        format!("{engine}/DT/BRICK/CST\n0.9 1e-6\n"),
+        format!("{engine}/DT/SHELL/CST\n0.9 1e-6\n"),
     )
     .unwrap();
     dir.join("free_plate_0000.rad")
@@ -96,7 +96,7 @@ fn a_keyword_the_engine_does_not_compute_stops_the_run_naming_every_one() {
         &deck,
         &[
             &format!("free_plate_0000.rad:{line}: /TRANSFORM/TRA/1"),
-            "free_plate_0001.rad:6: /DT/BRICK/CST",
+            "free_plate_0001.rad:6: /DT/SHELL/CST",
             "2 keyword(s)",
             "--skip-unsupported",
         ],
@@ -126,7 +126,7 @@ fn skip_unsupported_runs_and_says_what_it_skipped() {
     ]);
     ok(&out, "run --skip-unsupported");
     let listing = std::fs::read_to_string(dir.join("free_plate.out")).unwrap();
-    for k in ["/TRANSFORM/TRA/1", "free_plate_0001.rad:6: /DT/BRICK/CST"] {
+    for k in ["/TRANSFORM/TRA/1", "free_plate_0001.rad:6: /DT/SHELL/CST"] {
         let note = listing
             .lines()
             .find(|l| l.contains("skipped (--skip-unsupported)") && l.contains(k));
@@ -139,7 +139,7 @@ fn skip_unsupported_runs_and_says_what_it_skipped() {
     let info = crashsim(&["info", dir.join("free_plate.h5").to_str().unwrap()]);
     let info = String::from_utf8_lossy(&info.stdout);
     assert!(
-        info.contains("skipped (--skip-unsupported)") && info.contains("/DT/BRICK/CST"),
+        info.contains("skipped (--skip-unsupported)") && info.contains("/DT/SHELL/CST"),
         "{info}"
     );
 }
@@ -170,4 +170,31 @@ fn a_random_noise_in_its_own_units_or_on_no_group_is_refused() {
         .unwrap();
         run_refused(&dir.join("free_plate_0000.rad"), &expect);
     }
+}
+
+/// /DT/BRICK/CST is accepted where it changes nothing (no solids,
+/// `engine_final_geometry`); on a model with bricks it stops the run by name.
+#[test]
+fn brick_mass_scaling_on_bricks_is_refused_by_name() {
+    let src = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("decks/brick_bar");
+    let dir = scratch("brick-cst");
+    std::fs::copy(
+        src.join("brick_bar_0000.rad"),
+        dir.join("brick_bar_0000.rad"),
+    )
+    .unwrap();
+    let engine = std::fs::read_to_string(src.join("brick_bar_0001.rad")).unwrap();
+    std::fs::write(
+        dir.join("brick_bar_0001.rad"),
+        format!("{engine}/DT/BRICK/CST/0\n0.67 4e-4\n"),
+    )
+    .unwrap();
+    run_refused(
+        &dir.join("brick_bar_0000.rad"),
+        &[
+            "brick_bar_0001.rad:6",
+            "/DT/BRICK/CST",
+            "solid elements is not computed",
+        ],
+    );
 }

@@ -22,6 +22,80 @@ fn header_int(block: &Block, idx: usize, name: &str) -> InputResult<Option<i64>>
     }
 }
 
+/// /DT, /DT/NODA (/CST), /DT/BRICK/CST; false for another /DT/<type>/<action>.
+fn parse_dt(block: &Block, eng: &mut Engine, cards: &mut Cards) -> InputResult<bool> {
+    let p1 = block.parts.get(1).map(String::as_str).unwrap_or("");
+    match () {
+        // /DT/NODA/CST/0: the nodal step with added mass (every node).
+        _ if p1 == "NODA"
+            && block.parts.get(2).is_some_and(|p| p == "CST")
+            && block.parts.get(3).is_none_or(|p| p.trim() == "0") =>
+        {
+            let c = cards.next("the card with Tsca, Tmin")?;
+            let scale = c.tok_real(0, "Tsca")?.unwrap_or(0.0);
+            let min = c.tok_real(1, "Tmin")?.unwrap_or(0.0);
+            if scale < 0.0 || min <= 0.0 {
+                return Err(c.err(
+                "Tmin",
+                format!("scale {scale}, minimum {min}: expected a scale >= 0 (blank 0.9) and a minimum step > 0"),
+            ));
+            }
+            eng.nodal_cst = Some((if scale == 0.0 { 0.9 } else { scale }, min));
+        }
+        // /DT/NODA/0: the nodal step alone (no action keyword).
+        _ if p1 == "NODA"
+            && block
+                .parts
+                .get(2)
+                .is_none_or(|p| p.trim().chars().all(|c| c.is_ascii_digit())) =>
+        {
+            let c = cards.next("the card with Tsca, Tmin")?;
+            let scale = c.tok_real(0, "Tsca")?.unwrap_or(0.0);
+            let min = c.tok_real(1, "Tmin")?.unwrap_or(0.0);
+            if scale < 0.0 || min < 0.0 {
+                return Err(c.err(
+                    "Tsca",
+                    format!("scale {scale}, minimum {min}: expected values >= 0"),
+                ));
+            }
+            eng.nodal = Some(if scale == 0.0 { 0.9 } else { scale });
+        }
+        // /DT/BRICK/CST/0: checked against the model's solids before the run.
+        _ if p1 == "BRICK"
+            && block.parts.get(2).is_some_and(|p| p == "CST")
+            && block.parts.get(3).is_none_or(|p| p.trim() == "0") =>
+        {
+            let c = cards.next("the card with Tsca, Tmin")?;
+            c.tok_real(0, "Tsca")?;
+            c.tok_real(1, "Tmin")?;
+            eng.brick_cst = Some(block.loc.clone());
+        }
+        // Any other /DT/<type>/<action> (per-type steps, AMS, other nodal
+        // options) is not computed: left to the keyword policy, which names it.
+        _ if !p1.is_empty() => return Ok(false),
+        _ => {
+            let c = cards.next_nonblank();
+            let (scale, min) = match c {
+                Some(c) => (
+                    c.tok_real(0, "Tsca")?.unwrap_or(0.0),
+                    c.tok_real(1, "Tmin")?.unwrap_or(0.0),
+                ),
+                None => (0.0, 0.0),
+            };
+            if scale < 0.0 || min < 0.0 {
+                let c = c.unwrap();
+                return Err(c.err(
+                    "Tsca",
+                    format!("scale {scale}, minimum {min}: expected values >= 0"),
+                ));
+            }
+            eng.dt_scale = if scale == 0.0 { 0.9 } else { scale };
+            eng.dt_min = min;
+        }
+    }
+    Ok(true)
+}
+
 /// Returns false for a keyword the engine reader does not know.
 pub(crate) fn parse_engine_block(block: &Block, eng: &mut Engine) -> InputResult<bool> {
     let mut cards = Cards::new(block);
@@ -58,44 +132,7 @@ pub(crate) fn parse_engine_block(block: &Block, eng: &mut Engine) -> InputResult
                 loc: c.loc(),
             });
         }
-        // /DT/NODA/CST/0: the nodal step with added mass (every node).
-        "DT" if p1 == "NODA"
-            && block.parts.get(2).is_some_and(|p| p == "CST")
-            && block.parts.get(3).is_none_or(|p| p.trim() == "0") =>
-        {
-            let c = cards.next("the card with Tsca, Tmin")?;
-            let scale = c.tok_real(0, "Tsca")?.unwrap_or(0.0);
-            let min = c.tok_real(1, "Tmin")?.unwrap_or(0.0);
-            if scale < 0.0 || min <= 0.0 {
-                return Err(c.err(
-                    "Tmin",
-                    format!("scale {scale}, minimum {min}: expected a scale >= 0 (blank 0.9) and a minimum step > 0"),
-                ));
-            }
-            eng.nodal_cst = Some((if scale == 0.0 { 0.9 } else { scale }, min));
-        }
-        // Any other /DT/<type>/<action> (per-type steps, AMS, other nodal
-        // options) is not computed: left to the keyword policy, which names it.
-        "DT" if !p1.is_empty() => return Ok(false),
-        "DT" => {
-            let c = cards.next_nonblank();
-            let (scale, min) = match c {
-                Some(c) => (
-                    c.tok_real(0, "Tsca")?.unwrap_or(0.0),
-                    c.tok_real(1, "Tmin")?.unwrap_or(0.0),
-                ),
-                None => (0.0, 0.0),
-            };
-            if scale < 0.0 || min < 0.0 {
-                let c = c.unwrap();
-                return Err(c.err(
-                    "Tsca",
-                    format!("scale {scale}, minimum {min}: expected values >= 0"),
-                ));
-            }
-            eng.dt_scale = if scale == 0.0 { 0.9 } else { scale };
-            eng.dt_min = min;
-        }
+        "DT" => return parse_dt(block, eng, &mut cards),
         "PRINT" => {
             eng.print_every = header_int(block, 1, "Nprint")?.unwrap_or(0);
             eng.print_lines = header_int(block, 2, "Nline")?.unwrap_or(55);

@@ -25,14 +25,20 @@ pub const SAFE_TO_SKIP: &[(&str, &str)] = &[
         "OUTP",
         "a state-file output request (/OUTP/...): it changes nothing in the solution",
     ),
+    (
+        "TH/VERS",
+        "the format version of the reference solver's time-history file: it changes nothing in the solution",
+    ),
 ];
 
-/// Why a keyword that no parser reads may be skipped, or `None` when it is unsupported.
+/// Why a keyword that no parser reads may be skipped, or `None` when it is
+/// unsupported. An entry names the keyword's first word, or its first words
+/// joined by '/' (`TH/VERS`).
 pub fn safe_to_skip(block: &Block) -> Option<&'static str> {
-    let name = block.parts.first()?;
+    let words = |n: usize| block.parts.get(..n).map(|p| p.join("/"));
     SAFE_TO_SKIP
         .iter()
-        .find(|(k, _)| k == name)
+        .find(|(k, _)| words(k.split('/').count()).as_deref() == Some(*k))
         .map(|(_, why)| *why)
 }
 

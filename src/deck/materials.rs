@@ -1,6 +1,6 @@
 //! /MAT/LAW1 (/MAT/ELAST) and /MAT/LAW2 (/MAT/PLAS_JOHNS); /MAT/LAW36 in
 //! `material_law36.rs`, /MAT/LAW44 in `material_law44.rs`, /MAT/LAW21 in
-//! `material_law21.rs`.
+//! `material_law21.rs`, /MAT/LAW27 in `material_law27.rs`.
 //! Other laws are reported as unsupported (the caller warns, or fails with --strict).
 
 use super::source::Block;
@@ -18,6 +18,10 @@ pub(super) fn parse_material(block: &Block, deck: &mut Deck) -> InputResult<bool
     }
     if matches!(law, "LAW21" | "DPRAG") {
         super::material_law21::parse_law21(block, deck)?;
+        return Ok(true);
+    }
+    if matches!(law, "LAW27" | "PLAS_BRIT") {
+        super::material_law27::parse_law27(block, deck)?;
         return Ok(true);
     }
     if matches!(law, "LAW44" | "COWPER") {

@@ -23,6 +23,7 @@ pub mod keyword_policy;
 mod lines;
 mod list_end;
 mod material_law21;
+mod material_law27;
 mod material_law36;
 mod material_law44;
 mod material_opening;

@@ -87,6 +87,11 @@ pub const SUPPORTED: &[Supported] = &[
         "Drucker-Prager for rock, concrete and soil: J2 ≤ A0 + A1 P + A2 P² capped at Amax, the pressure P(μ) from func_IDf × FscaleP with unloading along B below Mu_max, Kt in tension, the P_min cut-off (spall), P_ext; on one-point bricks and tetrahedra (other solid formulations and shells refused by name)",
     ),
     s(
+        "/MAT/LAW27 (/MAT/PLAS_BRIT)",
+        &["/MAT/LAW27/1", "/MAT/PLAS_BRIT/1"],
+        "Johnson-Cook plasticity with brittle tension damage on 4-node shells: σ_y = (a + b ε_pⁿ)(1 + c ln ε̇/ε̇₀) capped at SIG_max0 (ICC), the Iplas 1 return, cracking on the largest principal total strain at EPS_t1 (damage growing to d_max1 by EPS_m1, tension only), the element deleted past EPS_f1, membrane damping dm (0.05 blank); direction 2 never starts, as in the reference (3-node shells, N = 0, Iplas 2, solids and a /FAIL on it refused by name)",
+    ),
+    s(
         "/FAIL/JOHNSON",
         &["/FAIL/JOHNSON/1"],
         "Johnson-Cook damage (D1-D5, EPS_0, EPSF_MIN) on solids, Ifail_so 1-4; on shells refused",
@@ -141,6 +146,8 @@ pub const SUPPORTED: &[Supported] = &[
     s("//SUBMODEL, //ENDSUB", &["//SUBMODEL/1", "//ENDSUB"], "submodels read in place: ids and coordinates as written (id offsets, a unit system or version of their own, a /BEGIN inside refused by name)"),
     e("/RUN", &["/RUN/NAME/1"], "end time"),
     e("/DT", &["/DT"], "time step scale and minimum (the per-type controls /DT/<type>/<action>, other nodal options and /DT/AMS are not computed: refused by name)"),
+    e("/DT/NODA", &["/DT/NODA/0"], "the time step from the nodes (scale) without added mass, as /DT/NODA/CST computes it; Tmin acts on nothing (no action keyword)"),
+    e("/DT/BRICK/CST", &["/DT/BRICK/CST/0"], "read; in a model without solids it changes nothing (with bricks or tetrahedra refused by name)"),
     e("/DT/NODA/CST", &["/DT/NODA/CST/0"], "the time step from the nodes (scale, minimum): each node under the minimum gets the mass and inertia that bring it there (MASS ADDED, MAS.ERR); 4-node shells give their nodal stiffness, rigid bodies step at their main node (Σ K, Σ K_rot + d²K, the smallest principal inertia), other elements refuse it by name"),
     e("/PRINT", &["/PRINT/-100/55"], "listing period"),
     e("/ANIM/DT, /ANIM/*", &["/ANIM/DT", "/ANIM/ELEM/VONM"], "state period of the run file"),
@@ -220,7 +227,7 @@ mod tests {
     #[test]
     fn keywords_nobody_reads_are_not_in_the_table() {
         for h in [
-            "/MAT/LAW27/1",
+            "/MAT/LAW25/1",
             "/INTER/TYPE19/1",
             "/PROP/TYPE45/1",
             "/RWALL/CYL/1",

@@ -56,6 +56,12 @@ pub fn check_ish3n(r: &ResolvedShell) -> Result<(), String> {
 /// not apply to triangles, so a QEPH/QBAT part can still hold triangles).
 pub fn shell3_section(r: &ResolvedShell, m: &Material) -> Result<ShellSection, String> {
     check_ish3n(r)?;
+    if m.brittle().is_some() {
+        return Err(
+            "/MAT/LAW27: its cracking on the total strain is not computed on 3-node shells yet"
+                .into(),
+        );
+    }
     if m.tension_damage().is_some() {
         return Err("/MAT/LAW36: the tension damage (Eps_t, Eps_m, Eps_f) is not computed on 3-node shells yet".into());
     }
@@ -219,7 +225,7 @@ pub fn shell3_step(
     st: &mut Shell3State,
     sig: &mut [[f64; 5]],
     eps_p: &mut [f64],
-    dmg: &mut [f64],
+    dmg: &mut [super::shell4::PointHistory],
 ) -> Shell3Out {
     let mut out = Shell3Out {
         dt: f64::INFINITY,
@@ -423,7 +429,7 @@ mod tests {
         st: Shell3State,
         sig: [[f64; 5]; 10],
         ep: [f64; 10],
-        dmg: [f64; 10],
+        dmg: [[f64; 3]; 10],
     }
 
     impl El {
@@ -432,7 +438,7 @@ mod tests {
                 st: shell3_init(sec, x, t),
                 sig: [[0.0; 5]; 10],
                 ep: [0.0; 10],
-                dmg: [0.0; 10],
+                dmg: [[0.0; 3]; 10],
             }
         }
         fn step(

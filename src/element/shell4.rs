@@ -271,6 +271,23 @@ impl ShellSection {
             (0, N0Rule::Points(n)) => (n.clamp(1, MAX_IP), false),
             (n, _) => (n as usize, false),
         };
+        if m.brittle().is_some() && (global || r.iplas == 2) {
+            return Err(format!(
+                "/MAT/LAW27 with {}: not computed; expected N >= 1 points and Iplas 0 or 1",
+                if global {
+                    "global integration (N = 0)".to_string()
+                } else {
+                    "Iplas = 2".into()
+                }
+            ));
+        }
+        // LAW27's membrane damping defaults to 0.05 (the reference starter's
+        // shell group parameters).
+        let dm = if m.brittle().is_some() && r.dm == 0.0 {
+            0.05
+        } else {
+            r.dm
+        };
         // Global integration stores the surface stresses: the N = 2 rule.
         let (zeta, w_mem, w_bend) = thickness_rule(n_ip);
         Ok(ShellSection {
@@ -279,7 +296,7 @@ impl ShellSection {
             hm: r.hm,
             hf: r.hf,
             hr: r.hr,
-            dm: r.dm,
+            dm,
             n_ip,
             global,
             ashear: if n_ip == 1 { 0.0 } else { r.ashear },
@@ -295,6 +312,23 @@ impl ShellSection {
             k: Consts::default(),
         }
         .with_consts())
+    }
+
+    /// The membrane damping the law takes (LAW27: dm, 0.05 when blank;
+    /// 0 for every other law, as the reference engine).
+    pub fn membrane_damping(&self) -> f64 {
+        if self.material.brittle().is_some() {
+            self.dm
+        } else {
+            0.0
+        }
+    }
+
+    /// The reference's VISCMX = √(1 + dm²) − dm of the membrane damping:
+    /// it shortens the element step and stiffens the nodal one.
+    pub fn viscmx(&self) -> f64 {
+        let dm = self.membrane_damping();
+        (1.0 + dm * dm).sqrt() - dm
     }
 
     fn with_consts(mut self) -> ShellSection {
@@ -322,6 +356,11 @@ impl ShellSection {
         self
     }
 }
+
+/// What a shell point keeps beside its stress and ε_p: the failure model's
+/// damage in [0], or LAW27's damage d₁, crack strain k₁ and the angle of its
+/// damage direction in the element frame.
+pub type PointHistory = [f64; 3];
 
 /// Per-element state kept by the solver (small, `Copy`).
 ///
@@ -518,9 +557,11 @@ fn char_length(sec: &ShellSection, g: &Geom, tri: bool) -> f64 {
 /// `docs/notes/impdisp_fgeo_research.md` §4): K = max(B₁, B₂)·t·A₁₁/A, with
 /// B_k = ¼|d_k|² the squared half diagonals in the element's plane (the
 /// reference's PX² + PY²) and A₁₁ = E/(1 − ν²), given to each corner, and
-/// K_rot = K·(t²/12 + A/9). On a square of side L every node then has the
-/// element step L/c as its nodal step √(2m/K). The reference's hourglass
-/// term (its viscous hourglass coefficients over Δt) is left out.
+/// K_rot = K·(t²/12 + A/9), divided by VISCMX² where the law has membrane
+/// damping (LAW27, research note `docs/notes/law27_research.md` §4). On a
+/// square of side L every node then has the element step L/c as its nodal
+/// step √(2m/K). The reference's hourglass term (its viscous hourglass
+/// coefficients over Δt) is left out.
 pub fn nodal_stiffness(sec: &ShellSection, x: &[[f64; 3]; 4], t: f64) -> (f64, f64) {
     let (d13, d24) = (sub(x[2], x[0]), sub(x[3], x[1]));
     let n = cross(d13, d24);
@@ -531,7 +572,8 @@ pub fn nodal_stiffness(sec: &ShellSection, x: &[[f64; 3]; 4], t: f64) -> (f64, f
     let area = 0.5 * nn;
     let e = scale(n, 1.0 / nn);
     let half_sq = |d: [f64; 3]| 0.25 * (dot(d, d) - dot(d, e).powi(2));
-    let k = half_sq(d13).max(half_sq(d24)) * t * sec.material.a11() / area;
+    let vm = sec.viscmx();
+    let k = half_sq(d13).max(half_sq(d24)) * t * sec.material.a11() / (area * vm * vm);
     (k, k * (t * t / 12.0 + area / 9.0))
 }
 
@@ -610,7 +652,7 @@ pub(super) fn update_slots(
     t: f64,
     sig: &mut [[f64; 5]],
     eps_p: &mut [f64],
-    dmg: &mut [f64],
+    dmg: &mut [PointHistory],
     at: &FailAt,
     d_m: [f64; 3],
     d_k: [f64; 3],
@@ -648,7 +690,7 @@ pub(super) fn update_slots(
     let (mut w_broken, mut nbroken) = (0.0, 0);
     for (k, (s, ep)) in sig.iter_mut().zip(eps_p.iter_mut()).enumerate() {
         let wm = sec.w_mem[k];
-        if fail.is_some_and(|f| f.has_failed(dmg[k]) && f.zeroes_shell_point()) {
+        if fail.is_some_and(|f| f.has_failed(dmg[k][0]) && f.zeroes_shell_point()) {
             // A failed point of Ifail_sh 1, 2 stays off: no stress, no work.
             *s = [0.0; 5];
             w_broken += wm;
@@ -662,6 +704,17 @@ pub(super) fn update_slots(
             (d_m[2] + z * d_k[2]) * dt,
         ];
         let mut s3 = [s[0], s[1], s[2]];
+        if let Some(l27) = sec.material.brittle() {
+            let total = strain.map_or([0.0; 3], |e| {
+                [e[0] + z * e[3], e[1] + z * e[4], e[2] + z * e[5]]
+            });
+            let r = l27.shell_point(&mut s3, ep, &mut dmg[k], d, dt, total);
+            s[..3].copy_from_slice(&s3);
+            nfailed += r.torn as usize;
+            dwp += wm * r.d_wplas;
+            dezz += wm * r.d_ezz;
+            continue;
+        }
         let (lk, torn) = match (sec.tension, strain) {
             (Some([et, em, ef]), Some(e)) => {
                 let e1 = principal_in_plane([e[0] + z * e[3], e[1] + z * e[4], e[2] + z * e[5]]);
@@ -678,7 +731,7 @@ pub(super) fn update_slots(
         } else {
             s[..3].copy_from_slice(&s3);
             if let Some(f) = fail {
-                if f.shell(&s3, &mut dmg[k], *ep - ep0, at) {
+                if f.shell(&s3, &mut dmg[k][0], *ep - ep0, at) {
                     if f.zeroes_shell_point() {
                         *s = [0.0; 5];
                     }
@@ -775,7 +828,7 @@ pub fn shell4_step(
     st: &mut Shell4State,
     sig: &mut [[f64; 5]],
     eps_p: &mut [f64],
-    dmg: &mut [f64],
+    dmg: &mut [PointHistory],
 ) -> Shell4Out {
     let mut out = Shell4Out {
         dt: f64::INFINITY,
@@ -800,7 +853,7 @@ pub fn shell4_step(
     out.dt = if sec.ishell == 24 && !st.tri {
         qeph::char_length(sec, g_dt) / kc.c
     } else {
-        char_length(sec, g_dt, st.tri) / kc.c
+        char_length(sec, g_dt, st.tri) / kc.c * sec.viscmx()
     };
     let mut gm = if dt > 0.0 {
         let mut xm = *x;
@@ -923,7 +976,12 @@ pub fn shell4_step(
             *s = [o[0], o[1], o[2], oyz + gs * dgyz, ozx + gs * dgzx];
         }
         ep0[..n_ip].copy_from_slice(eps_p);
-        let strain = if sec.tension.is_some() {
+        if sec.material.brittle().is_some() {
+            // LAW27's damage directions turn with the stresses.
+            let psi = rot_old.s.atan2(rot_old.c);
+            dmg[..n_ip].iter_mut().for_each(|h| h[2] += psi);
+        }
+        let strain = if sec.tension.is_some() || sec.material.brittle().is_some() {
             // The total strain turns with the stresses, then takes this step's increment.
             let e = &mut st.strain;
             let (m, k) = (
@@ -983,6 +1041,25 @@ pub fn shell4_step(
         st.deleted = true;
         out.failed = true;
         return out;
+    }
+    // LAW27's membrane viscosity (research note `docs/notes/law27_research.md`
+    // §2.7): 1.414·dm·ρ·c₀·√A times the membrane strain rates
+    // (ε̇xx + ½ε̇yy, ε̇yy + ½ε̇xx, γ̇xy/3) on the mean stresses; its work is
+    // internal energy.
+    let dm = sec.membrane_damping();
+    if dm > 0.0 && dt > 0.0 {
+        let f = 1.414 * dm * mat.rho_ref() * mat.sound_speed() * ge.area.sqrt();
+        let sv = [
+            f * (d_m[0] + 0.5 * d_m[1]),
+            f * (d_m[1] + 0.5 * d_m[0]),
+            f * d_m[2] / 3.0,
+        ];
+        let dw = (sv[0] * d_m[0] + sv[1] * d_m[1] + sv[2] * d_m[2]) * dt * gm.area * t;
+        out.d_eint += dw;
+        st.eint += dw;
+        for c in 0..3 {
+            nr[c] += sv[c];
+        }
     }
     // Resultants per unit length at x^{n+1}.
     let nr = scale(nr, t);

@@ -129,7 +129,7 @@ struct El {
     st: Shell4State,
     sig: Vec<[f64; 5]>,
     ep: Vec<f64>,
-    dmg: Vec<f64>,
+    dmg: Vec<super::PointHistory>,
 }
 
 impl El {
@@ -138,7 +138,7 @@ impl El {
             st: shell4_init(sec, x, thick),
             sig: vec![[0.0; 5]; sec.n_ip],
             ep: vec![0.0; sec.n_ip],
-            dmg: vec![0.0; sec.n_ip],
+            dmg: vec![[0.0; 3]; sec.n_ip],
         }
     }
     fn step(

@@ -94,6 +94,12 @@ pub trait Law: Sized {
         None
     }
 
+    /// What the engine cannot compute on solids with this law (a shell-only
+    /// law), by name; `None` when solids are fine.
+    fn solid_refusal(&self) -> Option<String> {
+        None
+    }
+
     /// A solid's raw strain rate from its rate of deformation
     /// d = [Dxx Dyy Dzz Dxy Dyz Dzx] (tensor shears): the deviatoric
     /// equivalent √(⅔ D′:D′) unless the law says otherwise.

@@ -14,6 +14,7 @@ use super::law::{ElasticConstants, Law};
 use super::law1::Law1;
 use super::law2::Law2;
 use super::law21::Law21;
+use super::law27::Law27;
 use super::law36::Law36;
 use super::law44::Law44;
 use super::point::{PlaneStressResult, PointLaw};
@@ -72,6 +73,8 @@ registry! {
     /// LAW44: Cowper-Symonds elasto-plastic.
     CowperSymonds(Law44),
     DruckerPrager(Law21),
+    /// LAW27: Johnson-Cook plasticity with brittle tension damage (shells).
+    BrittlePlastic(Law27),
 }
 
 /// The name of law number `number` when the registry has it; otherwise the
@@ -205,6 +208,22 @@ impl Material {
     /// What the engine cannot compute on shells (see [`Law::shell_refusal`]).
     pub fn shell_refusal(&self) -> Option<String> {
         each_law!(self, l => l.shell_refusal())
+    }
+
+    /// What the engine cannot compute on solids with this material (see
+    /// [`Law::solid_refusal`]).
+    pub fn solid_refusal(&self) -> Option<String> {
+        each_law!(self, l => l.solid_refusal())
+    }
+
+    /// LAW27's brittle shell update, which the shells call instead of the
+    /// return map (`None` for every other law).
+    #[inline]
+    pub fn brittle(&self) -> Option<&Law27> {
+        match self {
+            Material::BrittlePlastic(l) => Some(l),
+            _ => None,
+        }
     }
 
     /// The raw strain rate of a solid (see [`Law::solid_strain_rate`]).
@@ -661,9 +680,10 @@ mod tests {
         assert_eq!(law_name(2), Ok("Johnson-Cook"));
         assert_eq!(law_name(36), Ok("tabulated plasticity"));
         assert_eq!(law_name(44), Ok("Cowper-Symonds"));
-        let e = law_name(27).unwrap_err();
+        assert_eq!(law_name(27), Ok("brittle plastic (PLAS_BRIT)"));
+        let e = law_name(25).unwrap_err();
         assert!(
-            e.contains("/MAT/LAW27")
+            e.contains("/MAT/LAW25")
                 && e.contains("LAW1 elastic")
                 && e.contains("LAW2 Johnson-Cook"),
             "{e}"

@@ -57,6 +57,15 @@ pub struct Engine {
     /// ΔTmin gets the mass (and inertia) that brings it there.
     #[serde(default)]
     pub nodal_cst: Option<(f64, f64)>,
+    /// /DT/NODA/0: the time step from the nodes without added mass (its
+    /// scale; its Tmin is read and, as in the reference engine, acts on
+    /// nothing without an action keyword).
+    #[serde(default)]
+    pub nodal: Option<f64>,
+    /// /DT/BRICK/CST/0: bricks' mass scaling, accepted in a model without
+    /// solids, where it changes nothing (refused by name with solids).
+    #[serde(default)]
+    pub brick_cst: Option<Loc>,
     /// /RBODY/ON: the rigid bodies it names (they are active from the start:
     /// checked to exist, nothing to switch).
     #[serde(default)]
@@ -112,6 +121,8 @@ impl Default for Engine {
             dampings: Vec::new(),
             dtix: (0.0, 0.0),
             nodal_cst: None,
+            nodal: None,
+            brick_cst: None,
             rbody_on: Vec::new(),
             loc: Loc::default(),
         }

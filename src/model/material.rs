@@ -117,6 +117,27 @@ pub enum MaterialLaw {
     /// LAW21 (/MAT/DPRAG): Drucker-Prager, J2 ≤ A0 + A1·P + A2·P², with a
     /// tabulated pressure P(μ).
     DruckerPrager(DruckerPrager),
+    /// LAW27 (/MAT/PLAS_BRIT): Johnson-Cook plasticity with brittle tension
+    /// damage on shells.
+    BrittlePlastic(BrittlePlastic),
+}
+
+/// /MAT/LAW27 parameters (research note `docs/notes/law27_research.md` §1),
+/// defaults resolved as the reference starter: a 0 → 1e20, n 0 → 1,
+/// SIG_max0 0 → 1e20, ICC 0 → 1, EPS_DOT_0 → 1 when c = 0; per direction
+/// EPS_t 0 → 1e20, EPS_m 0 → 1.1e20, d_max 0 → 0.999, EPS_f 0 → 1.2e20.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct BrittlePlastic {
+    pub a: f64,
+    pub b: f64,
+    pub n: f64,
+    pub sig_max0: f64,
+    pub c: f64,
+    pub eps_dot0: f64,
+    /// 1: the strain-rate factor scales SIG_max too; 2: it does not.
+    pub icc: i64,
+    /// Directions 1 and 2: [EPS_t, EPS_m, d_max, EPS_f].
+    pub crack: [[f64; 4]; 2],
 }
 
 /// /MAT/LAW21 parameters (reference guide /MAT/LAW21; research note

@@ -459,6 +459,7 @@ impl RunFile {
                     MaterialLaw::Tabulated(_) => "LAW36 tabulated plasticity",
                     MaterialLaw::CowperSymonds(_) => "LAW44 Cowper-Symonds",
                     MaterialLaw::DruckerPrager(_) => "LAW21 Drucker-Prager",
+                    MaterialLaw::BrittlePlastic(_) => "LAW27 brittle plastic",
                 })
             })
             .collect();

@@ -94,6 +94,12 @@ pub(super) fn shell_sections(
         let mut section = new_section(prop, &Material::from_card(card))?;
         section.failure = Failure::of_material(&card.failures)?;
         if let (Some(f), Some(spec)) = (&section.failure, card.failures.first()) {
+            if section.material.brittle().is_some() {
+                return Err(format!(
+                    "{}: a failure model on /MAT/LAW27 is not computed (the law cracks and deletes by itself)",
+                    spec.loc
+                ));
+            }
             if let Some(why) = f.shell_refusal() {
                 return Err(format!("{}: {why}", spec.loc));
             }
@@ -121,7 +127,11 @@ pub(super) fn solid_sections(
         let part = &parts[p as usize];
         let prop = solid_property(part, props)?;
         let card = part_material(part, mats, SOLID_WITHOUT_MATERIAL)?;
-        let mut section = new_section(prop, &Material::from_card(card))?;
+        let material = Material::from_card(card);
+        if let Some(why) = material.solid_refusal() {
+            return Err(format!("{}: {why}", card.loc));
+        }
+        let mut section = new_section(prop, &material)?;
         section.failure = Failure::of_material(&card.failures)?;
         if let (Some(f), Some(spec)) = (&section.failure, card.failures.first()) {
             if let Some(why) = f.solid_refusal() {

@@ -8,7 +8,7 @@ use super::shell_block::{shell_block, NodalStiffnessFn};
 use super::{Block, BlockInput, ElemOut, ElemRow, ElemStep};
 use crate::domain::LocalElements;
 use crate::element::shell3::{self, Shell3State};
-use crate::element::shell4::ShellSection;
+use crate::element::shell4::{PointHistory, ShellSection};
 use crate::element::SLOT;
 use crate::model::{ElementKind, Part, Property};
 use rayon::prelude::*;

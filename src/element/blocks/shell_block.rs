@@ -11,8 +11,8 @@ macro_rules! shell_block {
             state: Vec<$state>,
             sig: Vec<[f64; 5]>,
             eps_p: Vec<f64>,
-            /// Damage of the failure model per point (0 without one).
-            dmg: Vec<f64>,
+            /// Per point history beyond ε_p (`shell4::PointHistory`).
+            dmg: Vec<PointHistory>,
             nip: usize,
             alive: Vec<bool>,
             steps: Vec<ElemStep>,
@@ -45,7 +45,7 @@ macro_rules! shell_block {
                     state,
                     sig: vec![[0.0; 5]; n * nip],
                     eps_p: vec![0.0; n * nip],
-                    dmg: vec![0.0; n * nip],
+                    dmg: vec![[0.0; 3]; n * nip],
                     nip,
                     alive: vec![true; n],
                     steps: vec![ElemStep::default(); n],
@@ -214,8 +214,13 @@ macro_rules! shell_block {
                 .expect("element state serializes")
             }
             fn import_state(&mut self, e: usize, bytes: &[u8]) -> Result<(), String> {
-                let (st, sig, eps, dmg, alive): ($state, Vec<[f64; 5]>, Vec<f64>, Vec<f64>, bool) =
-                    decode_state(bytes, "shell")?;
+                let (st, sig, eps, dmg, alive): (
+                    $state,
+                    Vec<[f64; 5]>,
+                    Vec<f64>,
+                    Vec<PointHistory>,
+                    bool,
+                ) = decode_state(bytes, "shell")?;
                 let n = self.sections[self.section[e] as usize].n_ip.max(1);
                 if sig.len() != n || eps.len() != n || dmg.len() != n {
                     return Err(format!(

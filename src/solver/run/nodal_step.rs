@@ -29,11 +29,15 @@ use crate::parallel::exact_sum::{sum_over_ranks, ExactSum};
 const MARGIN: f64 = 1.00001;
 
 /// This rank's smallest nodal step (after the added mass) and its node id,
-/// or `None` without /DT/NODA/CST; the added mass is updated (collective:
+/// or `None` without /DT/NODA (/CST); the added mass is updated (collective:
 /// every rank calls it at the same cycle).
 pub(super) fn nodal_steps(cx: &Ctx, s: &mut State) -> Result<Option<(f64, u64)>, RunError> {
-    let Some((scale, min)) = cx.g.engine.nodal_cst else {
-        return Ok(None);
+    // /DT/NODA/CST adds mass under ΔTmin; plain /DT/NODA adds none (its
+    // ΔTmin taken as 0: no node needs mass).
+    let (scale, min) = match (cx.g.engine.nodal_cst, cx.g.engine.nodal) {
+        (Some(cst), _) => cst,
+        (None, Some(scale)) => (scale, 0.0),
+        (None, None) => return Ok(None),
     };
     if s.kcontrib.len() != s.contrib.len() {
         s.kcontrib = vec![[0.0; crate::element::SLOT]; s.contrib.len()];

@@ -7,7 +7,7 @@ use crate::domain::{self, Subdomain};
 use crate::global::GlobalData;
 use crate::input::{self, Input, InputOptions};
 use crate::kinematics::rigid_body::RigidBodyState;
-use crate::model::{self, Model};
+use crate::model::{self, ElementKind, Model};
 
 /// What rank 0 prepares: the shared data and one subdomain per rank.
 pub(super) type Prepared = (GlobalData, Vec<Subdomain>, Vec<RigidBodyState>, Vec<String>);
@@ -145,6 +145,19 @@ fn unsupported_keywords(m: &Model, opts: &RunOptions) -> Result<Vec<String>, Str
 
 /// The engine refuses what it does not compute yet, by name — never a silent substitute.
 fn check_supported(m: &Model) -> Result<(), String> {
+    if let Some(loc) = m.engine.as_ref().and_then(|e| e.brick_cst.as_ref()) {
+        let solids = m
+            .elements
+            .iter()
+            .filter(|s| matches!(s.kind, ElementKind::Brick8 | ElementKind::Tetra4))
+            .map(|s| s.len())
+            .sum::<usize>();
+        if solids > 0 {
+            return Err(format!(
+                "{loc}: /DT/BRICK/CST: the mass scaling of the model's {solids} solid elements is not computed yet"
+            ));
+        }
+    }
     // Every kind's sections are built once over the whole model: what the
     // engine cannot compute is refused here, on rank 0, with its card.
     for set in &m.elements {
