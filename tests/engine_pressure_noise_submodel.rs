@@ -6,7 +6,7 @@
 //!   lumped share of ρtA): the plate flies flat at v = p·T/(ρt), the
 //!   external work equals the kinetic energy, and 1 and 2 ranks (a cut
 //!   through the loaded surface) end byte-identical;
-//! * /RANDOM inside a //SUBMODEL moves every node, in reading order, x then
+//! * /RANDOM (/RANDOM/0: no unit system of its own) inside a //SUBMODEL moves every node, in reading order, x then
 //!   y then z, by Xalea·r with r the reference starter's 16-bit generator;
 //!   id offsets and a missing //ENDSUB are errors at their line;
 //! * /DT/NODA/CST with a rigid body of the plate's first column of squares:
@@ -160,7 +160,7 @@ fn random_noise_in_a_submodel_moves_the_nodes_as_the_reference_starter() {
     let write = |tag: &str, offsets: &str, close: bool| -> PathBuf {
         let dir = scratch(tag);
         let body = format!(
-            "{}/RANDOM\n{xalea:>20}\n//SUBMODEL/1\nthe plate\n{offsets}\n{}{}/END\n",
+            "{}/RANDOM/0\n{xalea:>20}\n//SUBMODEL/1\nthe plate\n{offsets}\n{}{}/END\n",
             &starter[..start],
             &starter[start..stop],
             if close { "//ENDSUB\n" } else { "" }

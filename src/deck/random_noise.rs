@@ -35,6 +35,8 @@ pub(super) fn parse_random(block: &Block, deck: &mut Deck) -> InputResult<bool> 
     let grnod = match block.parts.get(1).map(String::as_str) {
         None | Some("") => 0,
         Some("GRNOD") => header_id(block, 2, "grnd_ID")?,
+        // /RANDOM/0: no unit system of its own.
+        Some(t) if t.trim().chars().all(|c| c == '0') => 0,
         // /RANDOM/unit_ID: the noise is a length in that unit system.
         Some(t) if t.chars().all(|c| c.is_ascii_digit()) => {
             return Err(InputError::new(
