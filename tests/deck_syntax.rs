@@ -482,3 +482,30 @@ fn a_dangling_id_names_the_unsupported_keyword_that_would_define_it() {
         "{e}"
     );
 }
+
+/// /SKEW/FIX of an input version before 2017 may give its two axes without
+/// the origin line (OPTIONS_NEW_BOX_V11, version 110); from 2017 on the
+/// origin line is required.
+#[test]
+fn skew_fix_of_an_old_version_reads_two_axes_without_origin() {
+    let c = Case::new("skew-old");
+    let skew = [
+        "/SKEW/FIX/1",
+        "old layout",
+        "                   1                   0                   0",
+        "                   1                   0                   1",
+    ];
+    let old = two_bricks(&skew).replace(&(i10(2019) + &i10(0)), &(i10(110) + &i10(0)));
+    let d = c.read(&old, None).unwrap_or_else(|e| panic!("{e}"));
+    let m = build_model(&d).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(
+        m.skews[0].kind,
+        crashsim::model::SkewKind::Fixed {
+            origin: [0.0; 3],
+            y: [1.0, 0.0, 0.0],
+            z: [1.0, 0.0, 1.0],
+        }
+    );
+    let e = c.read(&two_bricks(&skew), None).unwrap_err();
+    assert!(e.message.contains("Z′ axis"), "{e}");
+}

@@ -4,7 +4,8 @@
 //!
 //! Cards (title line first):
 //! * FIX: Ox Oy Oz, then the Y′ axis X1 Y1 Z1, then the Z′ axis X2 Y2 Z2
-//!   (three 20-column reals per line);
+//!   (three 20-column reals per line); a deck of input version before 2017
+//!   may give the two axes alone (origin 0);
 //! * MOV: node_ID1 node_ID2 node_ID3 (10 columns each) and Dir (31-40: X, Y
 //!   or Z, blank X);
 //! * MOV2: node_ID1 node_ID2 node_ID3.
@@ -50,12 +51,20 @@ pub(super) fn parse_skew(block: &Block, deck: &mut Deck) -> InputResult<bool> {
     let mut cards = Cards::new(block);
     let title = cards.title();
     let kind = if variant == "FIX" {
+        // Input versions before 2017 wrote the two axes without the origin
+        // line (the QA deck OPTIONS_NEW_BOX_V11, version 110): two cards there
+        // are the axes, the origin is 0.
+        let invers = deck.begin.as_ref().map_or(0, |b| b.invers);
+        let no_origin = invers > 0 && invers < 2017 && cards.remaining().len() == 2;
         let mut v = [[0.0; 3]; 3];
-        for (row, what) in v.iter_mut().zip([
-            "origin Ox, Oy, Oz",
-            "Y′ axis X1, Y1, Z1",
-            "Z′ axis X2, Y2, Z2",
-        ]) {
+        for (row, what) in v.iter_mut().skip(no_origin as usize).zip(
+            [
+                "origin Ox, Oy, Oz",
+                "Y′ axis X1, Y1, Z1",
+                "Z′ axis X2, Y2, Z2",
+            ][no_origin as usize..]
+                .iter(),
+        ) {
             let c = cards.next(&format!("the card with the {what}"))?;
             for (k, x) in row.iter_mut().enumerate() {
                 *x = c.real(1 + 20 * k, what, 0.0)?;
