@@ -10,20 +10,13 @@
 //! 5. P_min (1-20), P_ext (21-40)
 //! 6. B (1-20), Mu_max (21-40)
 
+use super::fields::zero_default as or;
 use super::source::Block;
 use super::Deck;
 use crate::model::{DruckerPrager, InputResult, MaterialLaw, MaterialSpec};
 
 /// The starter's "no limit" (it prints 1e20 for blank Amax, Mu_max, −P_min).
 const NONE: f64 = 1e20;
-
-fn or(v: f64, default: f64) -> f64 {
-    if v == 0.0 {
-        default
-    } else {
-        v
-    }
-}
 
 /// Reads /MAT/LAW21 or /MAT/DPRAG into the deck's materials.
 pub(super) fn parse_law21(block: &Block, deck: &mut Deck) -> InputResult<()> {
