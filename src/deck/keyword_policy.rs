@@ -26,6 +26,10 @@ pub const SAFE_TO_SKIP: &[(&str, &str)] = &[
         "a state-file output request (/OUTP/...): it changes nothing in the solution",
     ),
     (
+        "ALE/BCS",
+        "boundary conditions of the ALE grid: they act on the nodes of ALE or Euler elements only, and a deck that makes any element ALE or Euler (/ALE/MAT, /EULER/MAT) is refused by name, so on Lagrangian nodes they change nothing",
+    ),
+    (
         "TH/VERS",
         "the format version of the reference solver's time-history file: it changes nothing in the solution",
     ),

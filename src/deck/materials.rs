@@ -1,6 +1,7 @@
 //! /MAT/LAW1 (/MAT/ELAST) and /MAT/LAW2 (/MAT/PLAS_JOHNS); /MAT/LAW36 in
 //! `material_law36.rs`, /MAT/LAW44 in `material_law44.rs`, /MAT/LAW21 in
-//! `material_law21.rs`, /MAT/LAW27 in `material_law27.rs`.
+//! `material_law21.rs`, /MAT/LAW27 in `material_law27.rs`, /MAT/LAW62 in
+//! `material_law62.rs`.
 //! Other laws are reported as unsupported (the caller warns, or fails with --strict).
 
 use super::source::Block;
@@ -22,6 +23,10 @@ pub(super) fn parse_material(block: &Block, deck: &mut Deck) -> InputResult<bool
     }
     if matches!(law, "LAW27" | "PLAS_BRIT") {
         super::material_law27::parse_law27(block, deck)?;
+        return Ok(true);
+    }
+    if matches!(law, "LAW62" | "VISC_HYP") {
+        super::material_law62::parse_law62(block, deck)?;
         return Ok(true);
     }
     if matches!(law, "LAW44" | "COWPER") {

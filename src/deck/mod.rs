@@ -11,6 +11,7 @@
 pub mod fields;
 pub mod source;
 
+mod beam_props;
 mod conditions;
 mod controls;
 pub(crate) mod engine;
@@ -26,6 +27,7 @@ mod material_law21;
 mod material_law27;
 mod material_law36;
 mod material_law44;
+mod material_law62;
 mod material_opening;
 mod materials;
 mod mesh;

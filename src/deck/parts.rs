@@ -68,6 +68,8 @@ pub(super) fn parse_property(block: &Block, deck: &mut Deck) -> InputResult<bool
         "TYPE4" | "SPRING" => 4,
         "TYPE8" | "SPR_GENE" => 8,
         "TYPE13" | "SPR_BEAM" => 13,
+        "TYPE2" | "TRUSS" => 2,
+        "TYPE3" | "BEAM" => 3,
         _ => return Ok(false),
     };
     let id = header_id(block, 2, "prop_ID")?;
@@ -91,6 +93,8 @@ pub(super) fn parse_property(block: &Block, deck: &mut Deck) -> InputResult<bool
             &mut cards,
             &mut deck.warnings,
         )?),
+        2 => PropertyKind::Truss(super::beam_props::read_truss(&mut cards)?),
+        3 => PropertyKind::Beam(super::beam_props::read_beam(&mut cards)?),
         _ => PropertyKind::SpringBeam(spring_props::read_spring_beam(
             &mut cards,
             &mut deck.warnings,

@@ -947,7 +947,8 @@ fn add_element(
                 | PropertyKind::SpringBeam(_),
             ),
         ) => true,
-        (ElementKind::Truss | ElementKind::Beam, _) => true,
+        (ElementKind::Truss, Some(PropertyKind::Truss(_))) => true,
+        (ElementKind::Beam, Some(PropertyKind::Beam(_))) => true,
         _ => false,
     };
     if !ok {
@@ -966,14 +967,21 @@ fn add_element(
                 match kind {
                     ElementKind::Shell4 | ElementKind::Shell3 => "/PROP/SHELL (TYPE1)",
                     ElementKind::Brick8 | ElementKind::Tetra4 => "/PROP/SOLID (TYPE14)",
-                    _ => "/PROP/SPRING (TYPE4) or /PROP/SPR_BEAM (TYPE13)",
+                    ElementKind::Truss => "/PROP/TRUSS (TYPE2)",
+                    ElementKind::Beam => "/PROP/BEAM (TYPE3)",
+                    _ => "/PROP/SPRING (TYPE4), /PROP/SPR_GENE (TYPE8) or /PROP/SPR_BEAM (TYPE13)",
                 }
             ),
         ));
     }
     if matches!(
         kind,
-        ElementKind::Shell4 | ElementKind::Shell3 | ElementKind::Brick8 | ElementKind::Tetra4
+        ElementKind::Shell4
+            | ElementKind::Shell3
+            | ElementKind::Brick8
+            | ElementKind::Tetra4
+            | ElementKind::Truss
+            | ElementKind::Beam
     ) {
         match part.mat {
             None => {

@@ -99,6 +99,18 @@ fn refuse_tension_damage(m: &Material) -> Result<(), String> {
     }
 }
 
+/// A total-strain law (LAW62) is computed by the total-strain brick only
+/// (`super::hex8_total`, Ismstr = 10).
+fn refuse_total_strain(m: &Material) -> Result<(), String> {
+    if m.total_strain() {
+        return Err(format!(
+            "/MAT/LAW{} computes its stress from the total deformation: expected a one-point brick (Isolid 1 or 2) with Ismstr = 10",
+            m.law_number()
+        ));
+    }
+    Ok(())
+}
+
 fn dilatational_speed(m: &Material) -> f64 {
     let (e, nu) = (m.young(), m.poisson());
     let lam_2mu = e * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu));
@@ -125,6 +137,7 @@ impl SolidSection {
         let ismstr = check_ismstr(r)?;
         m.check_supported()?;
         refuse_tension_damage(m)?;
+        refuse_total_strain(m)?;
         Ok(SolidSection {
             isolid: r.isolid,
             ismstr,
@@ -150,6 +163,7 @@ impl SolidSection {
         let ismstr = check_ismstr(r)?;
         m.check_supported()?;
         refuse_tension_damage(m)?;
+        refuse_total_strain(m)?;
         Ok(SolidSection {
             isolid: 0,
             ismstr,
@@ -520,6 +534,83 @@ pub(crate) fn bulk_viscosity(sec: &SolidSection, vol0: f64, vol: f64, compress: 
     rho * al * compress * (sec.qa * sec.qa * al * compress + sec.qb * sec.c)
 }
 
+/// The viscous hourglass of a one-point brick (Isolid 1: Flanagan-Belytschko
+/// orthogonal modes; 2: the Hallquist base vectors), added to the corner
+/// forces `f`; `rho` is the current density and `c` the wave speed. Keeps
+/// the generalized forces Q_α in `hg` and returns the hourglass energy of
+/// the step. Shared by every one-point brick (`super::hex8_total`).
+#[allow(clippy::too_many_arguments)]
+#[inline]
+pub(crate) fn viscous_hourglass(
+    sec: &SolidSection,
+    x: &[[f64; 3]; 8],
+    v: &[[f64; 3]; 8],
+    b: &[[f64; 3]; 8],
+    vol: f64,
+    rho: f64,
+    c: f64,
+    dt: f64,
+    f: &mut [[f64; 3]; 8],
+    hg: &mut [[f64; 3]; 4],
+) -> f64 {
+    let mut gam = HG_BASE;
+    if sec.isolid == 1 {
+        let r = 1.0 / vol;
+        for (g, h) in gam.iter_mut().zip(HG_BASE.iter()) {
+            let mut hx = [0.0; 3];
+            for a in 0..8 {
+                for k in 0..3 {
+                    hx[k] += h[a] * x[a][k];
+                }
+            }
+            for a in 0..8 {
+                g[a] -= r * dot(hx, b[a]);
+            }
+        }
+    }
+    let caq = 0.25 * sec.h;
+    let base = caq * rho * vol.powf(2.0 / 3.0);
+    let (cl, cq) = (base * c, base * caq * 100.0);
+    let mut power = 0.0;
+    for (m, g) in gam.iter().enumerate() {
+        let mut qv = [0.0; 3];
+        for a in 0..8 {
+            for k in 0..3 {
+                qv[k] += g[a] * v[a][k];
+            }
+        }
+        let mut qf = [0.0; 3];
+        for k in 0..3 {
+            qf[k] = qv[k] * (cl + qv[k].abs() * cq);
+            power += qf[k] * qv[k];
+        }
+        hg[m] = qf;
+        for a in 0..8 {
+            for k in 0..3 {
+                f[a][k] += g[a] * qf[k];
+            }
+        }
+    }
+    power * dt
+}
+
+/// The uniform gradient and volume of the mid-step geometry
+/// x^{n+½} = x^{n+1} − ½Δt v^{n+½} (shared with `super::hex8_total`).
+#[inline]
+pub(crate) fn mid_step_gradient(
+    x: &[[f64; 3]; 8],
+    v: &[[f64; 3]; 8],
+    dt: f64,
+) -> ([[f64; 3]; 8], f64) {
+    let mut xm = *x;
+    for a in 0..8 {
+        for k in 0..3 {
+            xm[a][k] -= 0.5 * dt * v[a][k];
+        }
+    }
+    hex_gradient(&xm)
+}
+
 /// One explicit step of one brick: stress from x^{n+1} and v^{n+½}, internal
 /// corner forces at x^{n+1}, energies and the element time step.
 /// With `dt = 0` only the forces of the current stress and the time step are computed.
@@ -544,13 +635,7 @@ pub fn hex8_step(
         return out;
     }
     let (bm, volm) = if dt > 0.0 {
-        let mut xm = *x;
-        for a in 0..8 {
-            for k in 0..3 {
-                xm[a][k] -= 0.5 * dt * v[a][k];
-            }
-        }
-        hex_gradient(&xm)
+        mid_step_gradient(x, v, dt)
     } else {
         (b, vol)
     };
@@ -587,48 +672,9 @@ pub fn hex8_step(
         out.f[a] = stress_force(&p.sig_f, b[a]);
     }
 
-    // ---- hourglass (viscous) --------------------------------------------------
     if sec.h > 0.0 {
-        let mut gam = HG_BASE;
-        if sec.isolid == 1 {
-            let r = 1.0 / vol;
-            for (g, h) in gam.iter_mut().zip(HG_BASE.iter()) {
-                let mut hx = [0.0; 3];
-                for a in 0..8 {
-                    for k in 0..3 {
-                        hx[k] += h[a] * x[a][k];
-                    }
-                }
-                for a in 0..8 {
-                    g[a] -= r * dot(hx, b[a]);
-                }
-            }
-        }
         let rho = sec.material.rho() * st.vol0 / vol;
-        let caq = 0.25 * sec.h;
-        let base = caq * rho * vol.powf(2.0 / 3.0);
-        let (cl, cq) = (base * sec.c, base * caq * 100.0);
-        let mut power = 0.0;
-        for (m, g) in gam.iter().enumerate() {
-            let mut qv = [0.0; 3];
-            for a in 0..8 {
-                for k in 0..3 {
-                    qv[k] += g[a] * v[a][k];
-                }
-            }
-            let mut qf = [0.0; 3];
-            for k in 0..3 {
-                qf[k] = qv[k] * (cl + qv[k].abs() * cq);
-                power += qf[k] * qv[k];
-            }
-            st.hg[m] = qf;
-            for a in 0..8 {
-                for k in 0..3 {
-                    out.f[a][k] += g[a] * qf[k];
-                }
-            }
-        }
-        out.d_ehg = power * dt;
+        out.d_ehg = viscous_hourglass(sec, x, v, &b, vol, rho, sec.c, dt, &mut out.f, &mut st.hg);
         st.ehg += out.d_ehg;
     }
 

@@ -6,10 +6,12 @@
 /// Values per corner slot: force (3) and moment (3).
 pub const SLOT: usize = 6;
 
+pub mod beam;
 pub mod blocks;
 pub mod ha8;
 pub mod heph;
 pub mod hex8;
+pub mod hex8_total;
 pub mod shell3;
 pub mod shell4;
 pub mod spring;
@@ -17,3 +19,4 @@ pub mod spring_beam;
 pub mod spring_general;
 pub mod spring_law;
 pub mod tet4;
+pub mod truss;

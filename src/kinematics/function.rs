@@ -48,6 +48,20 @@ pub fn imposed_value(f: &Function, card: &crate::model::ImposedMotionSpec, t: f6
     (t >= card.tstart && t <= card.tstop).then(|| scaled(f, t, card.ascale_x, card.fscale_y))
 }
 
+/// The displacement an /IMPDISP imposes at the end of the step from t to
+/// t + Δt: Fscale·f((t + Δt)/Ascale) when t lies in [Tstart, Tstop] (the
+/// reference engine tests the window at the step's start, so the step that
+/// crosses Tstop still ends on the curve, extrapolated past its last point
+/// as `eval` does), `None` otherwise.
+pub fn imposed_displacement(
+    f: &Function,
+    card: &crate::model::ImposedMotionSpec,
+    t: f64,
+    dt: f64,
+) -> Option<f64> {
+    (t >= card.tstart && t <= card.tstop).then(|| scaled(f, t + dt, card.ascale_x, card.fscale_y))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

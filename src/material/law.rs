@@ -100,6 +100,13 @@ pub trait Law: Sized {
         None
     }
 
+    /// The law computes its stress from the total deformation (LAW62: from
+    /// B = FFᵀ), not from strain increments: only the total-strain brick
+    /// (Ismstr = 10) computes it.
+    fn total_strain(&self) -> bool {
+        false
+    }
+
     /// A solid's raw strain rate from its rate of deformation
     /// d = [Dxx Dyy Dzz Dxy Dyz Dzx] (tensor shears): the deviatoric
     /// equivalent √(⅔ D′:D′) unless the law says otherwise.

@@ -17,6 +17,7 @@ use super::law21::Law21;
 use super::law27::Law27;
 use super::law36::Law36;
 use super::law44::Law44;
+use super::law62::Law62;
 use super::point::{PlaneStressResult, PointLaw};
 use crate::model::MaterialSpec;
 use serde::{Deserialize, Serialize};
@@ -75,6 +76,8 @@ registry! {
     DruckerPrager(Law21),
     /// LAW27: Johnson-Cook plasticity with brittle tension damage (shells).
     BrittlePlastic(Law27),
+    /// LAW62: hyper-visco-elastic (Ogden-type with a Prony series; bricks).
+    ViscoHyperelastic(Law62),
 }
 
 /// The name of law number `number` when the registry has it; otherwise the
@@ -222,6 +225,20 @@ impl Material {
     pub fn brittle(&self) -> Option<&Law27> {
         match self {
             Material::BrittlePlastic(l) => Some(l),
+            _ => None,
+        }
+    }
+
+    /// The law computes its stress from the total deformation (see
+    /// [`Law::total_strain`]).
+    pub fn total_strain(&self) -> bool {
+        each_law!(self, l => l.total_strain())
+    }
+
+    /// LAW62's parameters when this is LAW62.
+    pub fn visco_hyperelastic(&self) -> Option<&Law62> {
+        match self {
+            Material::ViscoHyperelastic(l) => Some(l),
             _ => None,
         }
     }

@@ -7,6 +7,8 @@
 //!   2e-13 relative, where ⅓ each is 33% off at some nodes);
 //! - brick: ρ·V, ⅛ to each of its 8 node slots; tetra: ρ·V, ¼ to each node;
 //! - spring (/PROP/TYPE4, TYPE13): the property's Mass, ½ to each node;
+//! - truss and beam: ρ·A·L, ½ to each node; beam nodes also get the
+//!   rotational inertia of `beam_inertia`;
 //! - /ADMAS type 0: MASS on each node of the group; type 1: MASS shared
 //!   equally by the group's nodes;
 //! - /RBODY MASS: carried by the rigid body (on its main node), counted once.
@@ -87,7 +89,11 @@ pub fn element_masses(
                 ]),
                 "volume",
             ),
-            ElementKind::Spring | ElementKind::Truss | ElementKind::Beam => (1.0, ""),
+            ElementKind::Truss | ElementKind::Beam => {
+                let (area, l, _) = line_section(model, set, e);
+                (area * l, "length")
+            }
+            ElementKind::Spring => (1.0, ""),
         };
         if (measure.is_nan() || measure <= 0.0) && !what.is_empty() {
             return Err(InputError::new(
@@ -99,8 +105,10 @@ pub fn element_masses(
         }
         let m = match set.kind {
             ElementKind::Shell4 | ElementKind::Shell3 => rho * set.thick[e] * measure,
-            ElementKind::Brick8 | ElementKind::Tetra4 => rho * measure,
-            _ => spring_mass(model, set, e).0,
+            ElementKind::Brick8 | ElementKind::Tetra4 | ElementKind::Truss | ElementKind::Beam => {
+                rho * measure
+            }
+            ElementKind::Spring => spring_mass(model, set, e).0,
         };
         out.push(m);
     }
@@ -120,6 +128,45 @@ fn spring_mass(model: &Model, set: &ElementSet, e: usize) -> (f64, f64) {
         .prop
         .and_then(|p| model.properties[p as usize].card.kind.spring_mass(l0))
         .unwrap_or((0.0, 0.0))
+}
+
+/// A truss's or beam's cross-section area, initial length and (beams) its
+/// property; (1, 0, None) where the part has no such property (the model
+/// builder refuses it before masses are needed).
+fn line_section<'a>(
+    model: &'a Model,
+    set: &ElementSet,
+    e: usize,
+) -> (f64, f64, Option<&'a super::BeamProperty>) {
+    let n = set.nodes_of(e);
+    let x = |k: usize| model.nodes.x[n[k] as usize];
+    let l = crate::vec3::norm(crate::vec3::sub(x(1), x(0)));
+    match model.parts[set.part[e] as usize]
+        .prop
+        .map(|p| &model.properties[p as usize].card.kind)
+    {
+        Some(super::PropertyKind::Truss(t)) => (t.area, l, None),
+        Some(super::PropertyKind::Beam(b)) => (b.area, l, Some(b)),
+        _ => (1.0, 0.0, None),
+    }
+}
+
+/// The rotational inertia each node of a beam takes (isotropic), as the
+/// reference starter lumps it (QA LOIS_LOI2_BESH's part inertia to the
+/// printed digits): max(m·L²/12 + ρ·(L/2)·max(Iyy, Izz), ρ·L·Ixx/2) with
+/// m = ρAL/2 the node's mass; 0 for other elements.
+fn beam_inertia(model: &Model, set: &ElementSet, e: usize) -> f64 {
+    if set.kind != ElementKind::Beam {
+        return 0.0;
+    }
+    let (area, l, Some(b)) = line_section(model, set, e) else {
+        return 0.0;
+    };
+    let rho = model.parts[set.part[e] as usize]
+        .mat
+        .map_or(0.0, |m| model.materials[m as usize].rho);
+    let m = 0.5 * rho * area * l;
+    (m * l * l / 12.0 + rho * 0.5 * l * b.iyy.max(b.izz)).max(0.5 * rho * l * b.ixx)
 }
 
 /// Share of an element's mass each node slot gets.
@@ -149,7 +196,7 @@ pub fn lump(model: &mut Model, masses: &[Vec<f64>]) {
                 _ => set.nodes_of(e),
             };
             let rot_per_mass = shell_rotational_factor(model, set, e);
-            let spring_inertia = 0.5 * spring_mass(model, set, e).1;
+            let spring_inertia = 0.5 * spring_mass(model, set, e).1 + beam_inertia(model, set, e);
             let corners = (set.kind == ElementKind::Shell3).then(|| corner_shares(model, slots));
             for (i, &n) in slots.iter().enumerate() {
                 if n == NO_NODE {

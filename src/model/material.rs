@@ -120,6 +120,25 @@ pub enum MaterialLaw {
     /// LAW27 (/MAT/PLAS_BRIT): Johnson-Cook plasticity with brittle tension
     /// damage on shells.
     BrittlePlastic(BrittlePlastic),
+    /// LAW62 (/MAT/VISC_HYP): Ogden-type (Hill/Storåkers) hyperelasticity
+    /// on the full principal stretches with a Prony series.
+    ViscoHyperelastic(ViscoHyperelastic),
+}
+
+/// /MAT/LAW62 parameters (reference guide /MAT/LAW62; research note
+/// `docs/notes/law62_research.md` §1), defaults resolved as the reference
+/// starter: ν ≥ 0.5 → 0.499, α_i 0 → 1, τ_i ≤ 0 → 1e20, mu_max 0 → 1e20.
+/// `flag_visc` 1 relaxes the whole stress, otherwise the deviatoric part.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct ViscoHyperelastic {
+    /// Shear moduli μ_i and exponents α_i of the N Ogden terms.
+    pub mu: Vec<f64>,
+    pub alpha: Vec<f64>,
+    /// Stiffness ratios γ_i and relaxation times τ_i of the M Maxwell terms.
+    pub gamma: Vec<f64>,
+    pub tau: Vec<f64>,
+    pub mu_max: f64,
+    pub flag_visc: i64,
 }
 
 /// /MAT/LAW27 parameters (research note `docs/notes/law27_research.md` §1),

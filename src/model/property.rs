@@ -24,6 +24,37 @@ pub enum PropertyKind {
     Spring(SpringProperty),
     GeneralSpring(GeneralSpringProperty),
     SpringBeam(SpringBeamProperty),
+    /// /PROP/TYPE2 (/PROP/TRUSS).
+    Truss(TrussProperty),
+    /// /PROP/TYPE3 (/PROP/BEAM).
+    Beam(BeamProperty),
+}
+
+/// /PROP/TYPE2 (/PROP/TRUSS): the cross-section and the initial gap.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct TrussProperty {
+    pub area: f64,
+    /// The truss carries no force until it has shortened by Gap (0: none).
+    pub gap: f64,
+}
+
+/// /PROP/TYPE3 (/PROP/BEAM), defaults resolved as the reference starter:
+/// df 0 → 0.01.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct BeamProperty {
+    pub ismstr: i64,
+    /// Membrane and flexural damping.
+    pub dm: f64,
+    pub df: f64,
+    pub area: f64,
+    /// Bending moments of area about the local y and z axes, torsion constant.
+    pub iyy: f64,
+    pub izz: f64,
+    pub ixx: f64,
+    /// Rotations released (ωx, ωy, ωz at node 1, then at node 2).
+    pub released: [bool; 6],
+    /// 0: Timoshenko (shear deformation included); 1: without.
+    pub ishear: i64,
 }
 
 impl PropertyKind {

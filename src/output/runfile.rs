@@ -460,6 +460,7 @@ impl RunFile {
                     MaterialLaw::CowperSymonds(_) => "LAW44 Cowper-Symonds",
                     MaterialLaw::DruckerPrager(_) => "LAW21 Drucker-Prager",
                     MaterialLaw::BrittlePlastic(_) => "LAW27 brittle plastic",
+                    MaterialLaw::ViscoHyperelastic(_) => "LAW62 visco-hyperelastic",
                 })
             })
             .collect();

@@ -124,15 +124,38 @@ fn grid(m: &XdmfModel, idx: usize, time: f64) -> String {
                 s,
                 "{ind}  <Topology TopologyType=\"{topo}\" NumberOfElements=\"{ne}\"{extra}>"
             );
-            item(
-                &mut s,
-                &format!("{ind}    "),
-                &format!("{ne} {nn}"),
-                "Int",
-                8,
-                h5,
-                &format!("/mesh/{kn}/connectivity"),
-            );
+            let stored = kind.nodes();
+            if stored == nn {
+                item(
+                    &mut s,
+                    &format!("{ind}    "),
+                    &format!("{ne} {nn}"),
+                    "Int",
+                    8,
+                    h5,
+                    &format!("/mesh/{kn}/connectivity"),
+                );
+            } else {
+                // A beam stores its orientation node third: draw the first two.
+                let _ = writeln!(
+                    s,
+                    "{ind}    <DataItem ItemType=\"HyperSlab\" Dimensions=\"{ne} {nn}\" Type=\"HyperSlab\">"
+                );
+                let _ = writeln!(
+                    s,
+                    "{ind}      <DataItem Dimensions=\"3 2\" Format=\"XML\">0 0 1 1 {ne} {nn}</DataItem>"
+                );
+                item(
+                    &mut s,
+                    &format!("{ind}      "),
+                    &format!("{ne} {stored}"),
+                    "Int",
+                    8,
+                    h5,
+                    &format!("/mesh/{kn}/connectivity"),
+                );
+                let _ = writeln!(s, "{ind}    </DataItem>");
+            }
             let _ = writeln!(s, "{ind}  </Topology>");
             let _ = writeln!(s, "{ind}  <Geometry GeometryType=\"XYZ\">");
             item(

@@ -88,6 +88,14 @@ impl HourglassEnergy for Hex8State {
         self.eplas
     }
 }
+impl HourglassEnergy for crate::element::hex8_total::Hex8TotalState {
+    fn hourglass_energy(&self) -> f64 {
+        self.ehg
+    }
+    fn plastic_work(&self) -> f64 {
+        self.eplas
+    }
+}
 impl HourglassEnergy for Tet4State {
     fn hourglass_energy(&self) -> f64 {
         0.0

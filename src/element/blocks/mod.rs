@@ -14,6 +14,8 @@ mod common;
 mod ha8;
 mod heph;
 mod hex8;
+mod hex8_total;
+mod line;
 pub mod registry;
 mod sections;
 mod shell3;

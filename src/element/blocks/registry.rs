@@ -12,7 +12,7 @@
 
 use super::sections::{part_material, shell_property, solid_property};
 use super::sections::{SHELL_WITHOUT_MATERIAL, SOLID_WITHOUT_MATERIAL};
-use super::{ha8, heph, hex8, shell3, shell4_bt, spring, tet4};
+use super::{ha8, heph, hex8, hex8_total, line, shell3, shell4_bt, spring, tet4};
 use super::{Block, BlockInput, BuildBlock};
 use crate::domain::LocalElements;
 use crate::model::{ElementKind, Function, MaterialSpec, Part, Property, PropertyKind};
@@ -25,6 +25,9 @@ pub struct Formulation {
     /// What the numbers are (the property field), for messages and tests.
     pub flag: &'static str,
     pub numbers: &'static [i64],
+    /// The solid strain options (Ismstr) the line computes; empty: any (the
+    /// block's sections check them).
+    pub ismstr: &'static [i64],
     pub name: &'static str,
     pub build: BuildBlock,
 }
@@ -35,6 +38,7 @@ pub const FORMULATIONS: &[Formulation] = &[
         kind: ElementKind::Shell4,
         flag: "Ishell",
         numbers: &[1, 2, 3, 4],
+        ismstr: &[],
         name: "Belytschko-Tsay",
         build: shell4_bt::build,
     },
@@ -42,6 +46,7 @@ pub const FORMULATIONS: &[Formulation] = &[
         kind: ElementKind::Shell4,
         flag: "Ishell",
         numbers: &[24],
+        ismstr: &[],
         name: "QEPH (Belytschko-Tsay with physical hourglass stabilization)",
         build: shell4_bt::build,
     },
@@ -49,6 +54,7 @@ pub const FORMULATIONS: &[Formulation] = &[
         kind: ElementKind::Shell3,
         flag: "Ish3n",
         numbers: &[1, 2],
+        ismstr: &[],
         name: "C0 triangle",
         build: shell3::build,
     },
@@ -56,6 +62,15 @@ pub const FORMULATIONS: &[Formulation] = &[
         kind: ElementKind::Brick8,
         flag: "Isolid",
         numbers: &[1, 2],
+        ismstr: &[10],
+        name: "one-point brick, total strain (Ismstr 10: LAW62)",
+        build: hex8_total::build,
+    },
+    Formulation {
+        kind: ElementKind::Brick8,
+        flag: "Isolid",
+        numbers: &[1, 2],
+        ismstr: &[],
         name: "one-point brick, viscous hourglass",
         build: hex8::build,
     },
@@ -63,6 +78,7 @@ pub const FORMULATIONS: &[Formulation] = &[
         kind: ElementKind::Brick8,
         flag: "Isolid",
         numbers: &[14],
+        ismstr: &[],
         name: "HA8 fully integrated brick (2×2×2, assumed strain)",
         build: ha8::build,
     },
@@ -70,6 +86,7 @@ pub const FORMULATIONS: &[Formulation] = &[
         kind: ElementKind::Brick8,
         flag: "Isolid",
         numbers: &[12, 17],
+        ismstr: &[],
         name: "S8 / H8C fully integrated brick (2×2×2; H8C with constant pressure)",
         build: ha8::build,
     },
@@ -77,6 +94,7 @@ pub const FORMULATIONS: &[Formulation] = &[
         kind: ElementKind::Brick8,
         flag: "Isolid",
         numbers: &[24],
+        ismstr: &[],
         name: "HEPH one-point brick with physical hourglass stabilization",
         build: heph::build,
     },
@@ -84,6 +102,7 @@ pub const FORMULATIONS: &[Formulation] = &[
         kind: ElementKind::Tetra4,
         flag: "Itetra4",
         numbers: &[0, 1000],
+        ismstr: &[],
         name: "standard 4-node tetrahedron",
         build: tet4::build,
     },
@@ -91,6 +110,7 @@ pub const FORMULATIONS: &[Formulation] = &[
         kind: ElementKind::Spring,
         flag: "/PROP/TYPE",
         numbers: &[4],
+        ismstr: &[],
         name: "axial spring",
         build: spring::build_axial,
     },
@@ -98,6 +118,7 @@ pub const FORMULATIONS: &[Formulation] = &[
         kind: ElementKind::Spring,
         flag: "/PROP/TYPE",
         numbers: &[8],
+        ismstr: &[],
         name: "general spring (six degrees of freedom)",
         build: spring::build_general,
     },
@@ -105,8 +126,25 @@ pub const FORMULATIONS: &[Formulation] = &[
         kind: ElementKind::Spring,
         flag: "/PROP/TYPE",
         numbers: &[13],
+        ismstr: &[],
         name: "spring beam",
         build: spring::build_beam,
+    },
+    Formulation {
+        kind: ElementKind::Truss,
+        flag: "/PROP/TYPE",
+        numbers: &[2],
+        ismstr: &[],
+        name: "truss (axial bar)",
+        build: line::build_truss,
+    },
+    Formulation {
+        kind: ElementKind::Beam,
+        flag: "/PROP/TYPE",
+        numbers: &[3],
+        ismstr: &[],
+        name: "beam (Timoshenko, section resultants)",
+        build: line::build_beam,
     },
 ];
 
@@ -129,56 +167,76 @@ pub fn refusal(kind: ElementKind, n: i64) -> String {
     }
 }
 
-/// The line of [`FORMULATIONS`] computing formulation `n` of `kind`, or the
-/// refusal naming it.
-pub fn lookup(kind: ElementKind, n: i64) -> Result<usize, String> {
+/// The line of [`FORMULATIONS`] computing formulation `n` of `kind` with
+/// the strain option `ismstr` (solids; 0 elsewhere), or the refusal naming it.
+pub fn lookup(kind: ElementKind, n: i64, ismstr: i64) -> Result<usize, String> {
     FORMULATIONS
         .iter()
-        .position(|f| f.kind == kind && f.numbers.contains(&n))
+        .position(|f| {
+            f.kind == kind
+                && f.numbers.contains(&n)
+                && (f.ismstr.is_empty() || f.ismstr.contains(&ismstr))
+        })
         .ok_or_else(|| refusal(kind, n))
 }
 
-/// The formulation number a part's property asks for, read after the same
-/// property and material look-ups (and refusals, in the same order) as the
-/// block's sections.
+/// The formulation number a part's property asks for and its solid strain
+/// option (0 for other kinds), read after the same property and material
+/// look-ups (and refusals, in the same order) as the block's sections.
 fn formulation_number(
     kind: ElementKind,
     part: &Part,
     props: &[Property],
     mats: &[MaterialSpec],
-) -> Result<i64, String> {
+) -> Result<(i64, i64), String> {
     match kind {
         ElementKind::Shell4 | ElementKind::Shell3 => {
             let prop = shell_property(part, props)?;
             part_material(part, mats, SHELL_WITHOUT_MATERIAL)?;
-            Ok(if kind == ElementKind::Shell4 {
-                prop.ishell
-            } else {
-                prop.ish3n
-            })
+            Ok((
+                if kind == ElementKind::Shell4 {
+                    prop.ishell
+                } else {
+                    prop.ish3n
+                },
+                0,
+            ))
         }
         ElementKind::Brick8 | ElementKind::Tetra4 => {
             let prop = solid_property(part, props)?;
             part_material(part, mats, SOLID_WITHOUT_MATERIAL)?;
-            Ok(if kind == ElementKind::Brick8 {
-                prop.isolid
-            } else {
-                prop.itetra4
-            })
+            Ok((
+                if kind == ElementKind::Brick8 {
+                    prop.isolid
+                } else {
+                    prop.itetra4
+                },
+                prop.ismstr,
+            ))
         }
         ElementKind::Spring => {
             let prop = &props[part.prop.ok_or("spring part without property")? as usize];
             match prop.card.kind {
-                PropertyKind::Spring(_) => Ok(4),
-                PropertyKind::GeneralSpring(_) => Ok(8),
-                PropertyKind::SpringBeam(_) => Ok(13),
+                PropertyKind::Spring(_) => Ok((4, 0)),
+                PropertyKind::GeneralSpring(_) => Ok((8, 0)),
+                PropertyKind::SpringBeam(_) => Ok((13, 0)),
                 _ => Err(format!(
                     "/PROP/{}: a spring part needs a spring property (/PROP/TYPE4, TYPE8 or TYPE13)",
                     prop.card.id
                 )),
             }
         }
-        ElementKind::Truss | ElementKind::Beam => Err(refusal(kind, 0)),
+        ElementKind::Truss | ElementKind::Beam => {
+            let prop = &props[part.prop.ok_or("truss or beam part without property")? as usize];
+            match prop.card.kind {
+                PropertyKind::Truss(_) => Ok((2, 0)),
+                PropertyKind::Beam(_) => Ok((3, 0)),
+                _ => Err(format!(
+                    "/PROP/{}: a truss part needs /PROP/TRUSS (TYPE2), a beam part /PROP/BEAM (TYPE3)",
+                    prop.card.id
+                )),
+            }
+        }
     }
 }
 
@@ -196,8 +254,8 @@ fn formulations_of(
         let f = match of_part.get(&p) {
             Some(&f) => f,
             None => {
-                let n = formulation_number(le.kind, &parts[p as usize], props, mats)?;
-                let f = lookup(le.kind, n)?;
+                let (n, ismstr) = formulation_number(le.kind, &parts[p as usize], props, mats)?;
+                let f = lookup(le.kind, n, ismstr)?;
                 of_part.insert(p, f);
                 f
             }
@@ -313,7 +371,14 @@ mod tests {
     fn every_line_is_found_by_its_numbers_and_others_are_refused_by_name() {
         for (i, f) in FORMULATIONS.iter().enumerate() {
             for &n in f.numbers {
-                assert_eq!(lookup(f.kind, n), Ok(i), "{} {} = {n}", f.name, f.flag);
+                let ismstr = f.ismstr.first().copied().unwrap_or(0);
+                assert_eq!(
+                    lookup(f.kind, n, ismstr),
+                    Ok(i),
+                    "{} {} = {n}",
+                    f.name,
+                    f.flag
+                );
             }
         }
         let refused = [
@@ -324,7 +389,7 @@ mod tests {
             (ElementKind::Tetra4, 3, "Itetra4 = 3: only the standard 4-node tetrahedron (Itetra4 = 0 or 1000) is supported"),
         ];
         for (kind, n, message) in refused {
-            assert_eq!(lookup(kind, n), Err(message.to_string()));
+            assert_eq!(lookup(kind, n, 0), Err(message.to_string()));
         }
     }
 

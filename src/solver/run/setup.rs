@@ -195,6 +195,17 @@ impl<'a> Ctx<'a> {
             t,
         )
     }
+
+    /// The displacement an /IMPDISP imposes at t + Δt, when the step from t
+    /// starts inside its window (`function::imposed_displacement`).
+    pub fn imposed_displacement(&self, c: &model::ImposedMotion, t: f64, dt: f64) -> Option<f64> {
+        crate::kinematics::function::imposed_displacement(
+            &self.g.functions[self.fct_index[&c.card.fct]],
+            &c.card,
+            t,
+            dt,
+        )
+    }
 }
 
 /// The context of the loop on this rank; `ties` adds the tied secondary
