@@ -21,14 +21,25 @@ fn run_refused(deck: &std::path::Path, expect: &[&str]) {
 }
 
 #[test]
-fn qbat_shells_are_refused_at_their_property() {
+fn qbat_shells_with_a_plastic_law_are_refused_at_their_property() {
+    // TWISBEAM's elastic material made Johnson-Cook: QBAT computes elastic laws only.
+    let src = qa_deck("TWISBEAM");
+    let text = std::fs::read_to_string(&src).unwrap();
+    let old = "/MAT/ELAST/1\nmaterial number _      1\n#        Init. dens.          Ref. dens.\n             7.34E-4                   0\n#                  E                  nu\n            29000000           .22000001\n";
+    assert!(text.contains(old));
+    let new = "/MAT/PLAS_JOHNS/1\nmaterial number _      1\n             7.34E-4                   0\n            29000000           .22000001\n               30000                1000                 0.5\n                   0                   0\n";
+    let dir = std::env::temp_dir().join(format!("crashsim-refusal-qbat-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(dir.join("TWISBEAM_0000.rad"), text.replace(old, new)).unwrap();
+    for f in ["TWISBEAM_0001.rad", "TWISBEAMD0B"] {
+        std::fs::copy(src.with_file_name(f), dir.join(f)).unwrap();
+    }
     run_refused(
-        &qa_deck("TWISBEAM"),
+        &dir.join("TWISBEAM_0000.rad"),
         &[
-            "TWISBEAM_0000.rad:110",
-            "/PROP/1",
-            "Ishell = 12",
-            "not supported yet",
+            "TWISBEAM_0000.rad:",
+            "Ishell = 12 (QBAT) with /MAT/LAW2",
+            "only elastic laws",
         ],
     );
 }

@@ -58,7 +58,7 @@ pub const SUPPORTED: &[Supported] = &[
     s("/BEGIN", &["/BEGIN"], "run name, input version, input and working units"),
     s("/TITLE", &["/TITLE"], "the model's title"),
     s("/NODE", &["/NODE"], "nodes (a node numbered 0 is left out with a warning)"),
-    s("/SHELL", &["/SHELL/1"], "4-node shells: Belytschko-Tsay, Ishell 1-4, and QEPH 24 (physical hourglass stabilization); QBAT 12 refused"),
+    s("/SHELL", &["/SHELL/1"], "4-node shells: Belytschko-Tsay, Ishell 1-4, QEPH 24 (physical hourglass stabilization) and QBAT 12 (Batoz, 2×2 points, MITC4 transverse shear, warped geometry; elastic laws, plastic laws refused by name)"),
     s("/SH3N", &["/SH3N/1"], "3-node shells: the C0 triangle, Ish3n 1 and 2 (DKT18, DKT_S3 refused)"),
     s("/BRICK", &["/BRICK/1"], "8-node bricks: Isolid 1 and 2 (one point, viscous hourglass), 14 (HA8: 2×2×2 points, assumed strain, Icpre 0/1/2); others refused"),
     s("/TETRA4", &["/TETRA4/1"], "4-node tetrahedra (Itetra4 0, 1000)"),

@@ -14,6 +14,7 @@ pub mod hex8;
 pub mod hex8_total;
 pub mod shell3;
 pub mod shell4;
+pub mod shell4_qbat;
 pub mod spring;
 pub mod spring_beam;
 pub mod spring_general;

@@ -245,7 +245,7 @@ impl ShellSection {
         }
         match r.ishell {
             1..=4 | 24 => {}
-            12 => return Err("Ishell = 12 (QBAT) is not supported yet: the engine computes Ishell = 1, 2, 3, 4 (Belytschko-Tsay) and 24 (QEPH)".into()),
+            12 => return Err("Ishell = 12 (QBAT) is computed by its own formulation (element/shell4_qbat.rs), not by the Belytschko-Tsay section".into()),
             v => return Err(format!("Ishell = {v}: expected 1, 2, 3, 4 (Belytschko-Tsay) or 24 (QEPH)")),
         }
         let ismstr = match r.ismstr {

@@ -6,7 +6,7 @@
 //! restart. The solver sees every block through the [`Block`] trait; a kind
 //! may be held by several blocks, one per formulation its parts ask for.
 //!
-//! Adding a formulation (say QBAT, Ishell 12): one file here with the block
+//! Adding a formulation (say DKT18, Ish3n 30): one file here with the block
 //! (its struct, `Block` impl and builder) over its kernel in `crate::element`,
 //! and one line in the table of [`registry`].
 
@@ -20,6 +20,7 @@ pub mod registry;
 mod sections;
 mod shell3;
 mod shell4_bt;
+mod shell4_qbat;
 mod shell_block;
 mod solid_block;
 mod spring;

@@ -6,13 +6,13 @@
 //! the formulation their parts ask for and builds one block per group; a
 //! number no line lists is refused by name ([`refusal`]).
 //!
-//! Adding a formulation (say QBAT, Ishell 12): its block file in this folder
-//! and one line in [`FORMULATIONS`] (`Shell4`, `&[12]`, `qbat::build`), and
+//! Adding a formulation (say DKT18, Ish3n 30): its block file in this folder
+//! and one line in [`FORMULATIONS`] (`Shell3`, `&[30]`, `dkt18::build`), and
 //! its number out of [`refusal`]'s list of known-but-missing formulations.
 
 use super::sections::{part_material, shell_property, solid_property};
 use super::sections::{SHELL_WITHOUT_MATERIAL, SOLID_WITHOUT_MATERIAL};
-use super::{ha8, heph, hex8, hex8_total, line, shell3, shell4_bt, spring, tet4};
+use super::{ha8, heph, hex8, hex8_total, line, shell3, shell4_bt, shell4_qbat, spring, tet4};
 use super::{Block, BlockInput, BuildBlock};
 use crate::domain::LocalElements;
 use crate::model::{ElementKind, Function, MaterialSpec, Part, Property, PropertyKind};
@@ -49,6 +49,14 @@ pub const FORMULATIONS: &[Formulation] = &[
         ismstr: &[],
         name: "QEPH (Belytschko-Tsay with physical hourglass stabilization)",
         build: shell4_bt::build,
+    },
+    Formulation {
+        kind: ElementKind::Shell4,
+        flag: "Ishell",
+        numbers: &[12],
+        ismstr: &[],
+        name: "QBAT (Batoz, 2×2 points, MITC4 shear; elastic laws)",
+        build: shell4_qbat::build,
     },
     Formulation {
         kind: ElementKind::Shell3,
@@ -152,8 +160,7 @@ pub const FORMULATIONS: &[Formulation] = &[
 /// messages of the sections' own checks, byte for byte).
 pub fn refusal(kind: ElementKind, n: i64) -> String {
     match (kind, n) {
-        (ElementKind::Shell4, 12) => "Ishell = 12 (QBAT) is not supported yet: the engine computes Ishell = 1, 2, 3, 4 (Belytschko-Tsay) and 24 (QEPH)".into(),
-        (ElementKind::Shell4, v) => format!("Ishell = {v}: expected 1, 2, 3, 4 (Belytschko-Tsay) or 24 (QEPH)"),
+        (ElementKind::Shell4, v) => format!("Ishell = {v}: expected 1, 2, 3, 4 (Belytschko-Tsay), 12 (QBAT) or 24 (QEPH)"),
         (ElementKind::Shell3, 30) => "Ish3n = 30 (DKT18) is not supported: the engine computes the C0 triangle (Ish3n = 1, 2)".into(),
         (ElementKind::Shell3, 31) => "Ish3n = 31 (DKT_S3) is not supported: the engine computes the C0 triangle (Ish3n = 1, 2)".into(),
         (ElementKind::Shell3, v) => format!("Ish3n = {v}: expected 1 or 2 (C0 triangle)"),
@@ -382,8 +389,7 @@ mod tests {
             }
         }
         let refused = [
-            (ElementKind::Shell4, 12, "Ishell = 12 (QBAT) is not supported yet: the engine computes Ishell = 1, 2, 3, 4 (Belytschko-Tsay) and 24 (QEPH)"),
-            (ElementKind::Shell4, 7, "Ishell = 7: expected 1, 2, 3, 4 (Belytschko-Tsay) or 24 (QEPH)"),
+            (ElementKind::Shell4, 7, "Ishell = 7: expected 1, 2, 3, 4 (Belytschko-Tsay), 12 (QBAT) or 24 (QEPH)"),
             (ElementKind::Shell3, 30, "Ish3n = 30 (DKT18) is not supported: the engine computes the C0 triangle (Ish3n = 1, 2)"),
             (ElementKind::Brick8, 18, "Isolid = 18 is not supported: the engine computes bricks with Isolid = 1 (Belytschko viscous hourglass), 2 (Hallquist viscous hourglass), 12 (S8), 14 (HA8), 17 (H8C, fully integrated) or 24 (HEPH)"),
             (ElementKind::Tetra4, 3, "Itetra4 = 3: only the standard 4-node tetrahedron (Itetra4 = 0 or 1000) is supported"),
@@ -407,10 +413,10 @@ mod tests {
         }
         let le = all_of(&m, ElementKind::Shell4);
         let prop = m.parts[le.part[0] as usize].prop.unwrap() as usize;
-        m.properties[prop].shell.as_mut().unwrap().ishell = 12;
+        m.properties[prop].shell.as_mut().unwrap().ishell = 7;
         assert_eq!(
             blocks(&m, &le).err().unwrap(),
-            "Ishell = 12 (QBAT) is not supported yet: the engine computes Ishell = 1, 2, 3, 4 (Belytschko-Tsay) and 24 (QEPH)"
+            "Ishell = 7: expected 1, 2, 3, 4 (Belytschko-Tsay), 12 (QBAT) or 24 (QEPH)"
         );
         let le = all_of(&m, ElementKind::Brick8);
         let prop = m.parts[le.part[0] as usize].prop.unwrap() as usize;
