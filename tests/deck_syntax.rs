@@ -509,3 +509,71 @@ fn skew_fix_of_an_old_version_reads_two_axes_without_origin() {
     let e = c.read(&two_bricks(&skew), None).unwrap_err();
     assert!(e.message.contains("Z′ axis"), "{e}");
 }
+
+// ---------------------------------------------------------------------------
+// /RBODY centre and inertia options
+// ---------------------------------------------------------------------------
+
+/// The two bricks made a rigid body with main node 100 at (−1, 0, 0), with
+/// ISPHER and ICOG as given.
+fn rigid_bricks(ispher: i64, icog: i64) -> String {
+    let rbody =
+        i10(100) + &i10(0) + &i10(0) + &i10(ispher) + &r20(0) + &i10(5) + &i10(0) + &i10(icog);
+    let node100 = node(100, -1.0, 0.0, 0.0);
+    two_bricks(&[
+        "/NODE",
+        &node100,
+        "/GRNOD/NODE/5",
+        "the bricks' nodes",
+        &(1..=10).map(i10).collect::<String>(),
+        &(11..=12).map(i10).collect::<String>(),
+        "/RBODY/1",
+        "two bricks",
+        &rbody,
+        &(r20(0) + &r20(0) + &r20(0)),
+        &(r20(0) + &r20(0) + &r20(0)),
+    ])
+}
+
+/// ICOG 0: the centre of mass; ICOG 3: the main node, the inertia about it;
+/// ISPHER 1: the inertia made spherical, trace/3 (QA RESSORT_kjoint2's rb2);
+/// ICOG 2 is refused by name.
+#[test]
+fn rbody_icog_and_ispher_set_the_centre_and_the_inertia() {
+    let c = Case::new("rbody-icog");
+    let m = c.model(&rigid_bricks(0, 0));
+    let b = &m.rigid_bodies[0];
+    assert!((b.center[0] - 1.0).abs() < 1e-12 && (b.center[1] - 0.5).abs() < 1e-12);
+    // About the main node (−1, 0, 0), from the nodal masses.
+    let about = |p: [f64; 3]| {
+        let mut j = [0.0; 3];
+        for n in 0..12 {
+            let (x, mn) = (m.nodes.x[n], m.nodal_mass[n]);
+            let d = [x[0] - p[0], x[1] - p[1], x[2] - p[2]];
+            j[0] += mn * (d[1] * d[1] + d[2] * d[2]);
+            j[1] += mn * (d[0] * d[0] + d[2] * d[2]);
+            j[2] += mn * (d[0] * d[0] + d[1] * d[1]);
+        }
+        j
+    };
+    let m3 = c.model(&rigid_bricks(1, 3));
+    let b3 = &m3.rigid_bodies[0];
+    assert_eq!(b3.center, [-1.0, 0.0, 0.0]);
+    let j = about([-1.0, 0.0, 0.0]);
+    let sphere = (j[0] + j[1] + j[2]) / 3.0;
+    for k in 0..3 {
+        assert!(
+            (b3.inertia[k] - sphere).abs() < 1e-12 * sphere,
+            "{:?}",
+            b3.inertia
+        );
+        assert_eq!(b3.inertia[3 + k], 0.0);
+    }
+    assert!((b.inertia[0] - about(b.center)[0]).abs() < 1e-12 * sphere);
+    let deck = c.read(&rigid_bricks(0, 2), None).unwrap();
+    let e = build_model(&deck).unwrap_err().to_string();
+    assert!(
+        e.contains("ICOG") && e.contains("2: this centre-of-mass option is not computed"),
+        "{e}"
+    );
+}

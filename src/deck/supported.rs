@@ -136,7 +136,7 @@ pub const SUPPORTED: &[Supported] = &[
     s("/PLOAD", &["/PLOAD/1"], "pressure on a surface's segments, p·N/8 per quadrangle node (p·N/6 per triangle node) at the current geometry, ended with the element under it unless Idel 2 (sensor, Ipinch, Itypfun 2/3 refused by name)"),
     s("/DAMP", &["/DAMP/1"], "Rayleigh damping of a node group: α, β for every degree of freedom or one pair each, Tstart, Tstop; its work in the external work, the time step reduced (skew refused; /DAMP/INTER, VREL, FREQ_RANGE not read)"),
     s("/RWALL/PLANE", &["/RWALL/PLANE/1"], "rigid walls: fixed, moving with their node, or free with their own mass; friction"),
-    s("/RBODY", &["/RBODY/1"], "rigid bodies; surf_ID: the /SURF/ELLIPS the body carries (sensor, skew, IKREM and other surfaces refused)"),
+    s("/RBODY", &["/RBODY/1"], "rigid bodies: MASS, added inertia, ICOG 0/1 (centre of mass) and 3 (the main node), ISPHER 1 (spherical inertia); the main node's /INIVEL is the body's; surf_ID: the /SURF/ELLIPS the body carries (sensor, skew, IKREM, ICOG 2/4 and other surfaces refused)"),
     s("/SECT", &["/SECT/1"], "read; its forces are not written yet (an output request: it changes nothing in the solution)"),
     s("/INTER/TYPE2", &["/INTER/TYPE2/1"], "tied interfaces, Spotflag 5 (other Spotflags, Level, Idel2, rupture refused by field)"),
     s("/INTER/TYPE3, /INTER/TYPE5", &["/INTER/TYPE3/1", "/INTER/TYPE5/1"], "surface-to-surface and node-to-surface contact"),

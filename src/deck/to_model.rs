@@ -844,10 +844,20 @@ fn add_rigid_bodies(
                 s[k] += mn * model.nodes.x[n as usize][k];
             }
         }
-        let center = if m > 0.0 {
-            [s[0] / m, s[1] / m, s[2] / m]
-        } else {
-            xm
+        // ICOG 0/1: the centre of mass of the main and secondary nodes;
+        // 3: the main node, the inertia taken about it (the reference
+        // starter's "NEW X,Y,Z" and "NEW INERTIA", QA RESSORT_kjoint2).
+        let center = match c.icog {
+            0 | 1 if m > 0.0 => [s[0] / m, s[1] / m, s[2] / m],
+            0 | 1 | 3 => xm,
+            v => {
+                return Err(InputError::new(
+                    c.loc.clone(),
+                    &kw,
+                    "ICOG",
+                    format!("{v}: this centre-of-mass option is not computed; expected 0 or 1 (the centre of mass) or 3 (the main node)"),
+                ))
+            }
         };
         let mut inertia = c.inertia;
         // Point masses, plus the shells' nodal rotational inertia (isotropic).
@@ -871,6 +881,12 @@ fn add_rigid_bodies(
                 model.nodes.x[n as usize],
                 model.nodal_inertia[n as usize],
             );
+        }
+        // ISPHER 1: a spherical inertia, the trace of the tensor over 3
+        // (QA RESSORT_kjoint2's rb2: 31200, 990600, 990600 → 670800).
+        if c.ispher == 1 {
+            let j = (inertia[0] + inertia[1] + inertia[2]) / 3.0;
+            inertia = [j, j, j, 0.0, 0.0, 0.0];
         }
         // A body of massless nodes (a deck of rigid bodies and no element)
         // or of collinear point masses: a negligible mass and principal

@@ -398,14 +398,20 @@ fn check_interface(c: &model::InterfaceSpec) -> Result<(), String> {
 }
 
 /// Rigid bodies at t = 0: mass, centre, inertia from the model; velocity the
-/// mass-weighted mean of its nodes' initial velocities (all /INIVEL/TRA).
+/// mass-weighted mean of its nodes' initial velocities (all /INIVEL/TRA),
+/// spin from their angular momentum — unless the main node has its own
+/// /INIVEL/TRA or /INIVEL/ROT: the body then takes that velocity or spin,
+/// as the reference does (QA RESSORT_kjoint2: a spin on the main node alone
+/// gives the body ½·I·ω² of K-ENERGY R with I the body's inertia).
 pub(super) fn initial_rigid_bodies(m: &Model) -> Vec<RigidBodyState> {
     let mut v0 = vec![[0.0; 3]; m.nodes.len()];
     let mut w0 = vec![[0.0; 3]; m.nodes.len()];
+    let mut given = vec![[false; 2]; m.nodes.len()];
     for iv in &m.initial_velocities {
         let to = if iv.card.rotational { &mut w0 } else { &mut v0 };
         for &n in &iv.nodes {
             to[n as usize] = iv.card.v;
+            given[n as usize][usize::from(iv.card.rotational)] = true;
         }
     }
     m.rigid_bodies
@@ -413,7 +419,7 @@ pub(super) fn initial_rigid_bodies(m: &Model) -> Vec<RigidBodyState> {
         .map(|rb| {
             // The body starts with its nodes' momentum and angular momentum
             // about its centre (the main node carries the card's mass and
-            // inertia): a spin given to the main node alone spins the body.
+            // inertia).
             let (mut p, mut l) = ([0.0; 3], [0.0; 3]);
             let main = rb.main_node as usize;
             let jc = rb.card.inertia;
@@ -438,12 +444,18 @@ pub(super) fn initial_rigid_bodies(m: &Model) -> Vec<RigidBodyState> {
                     l[k] += mn * rxv[k] + m.nodal_inertia[n] * w0[n][k];
                 }
             }
-            let v = if rb.mass > 0.0 {
+            let v = if given[main][0] {
+                v0[main]
+            } else if rb.mass > 0.0 {
                 [p[0] / rb.mass, p[1] / rb.mass, p[2] / rb.mass]
             } else {
                 [0.0; 3]
             };
-            let omega = RigidBodyState::spin_of(&rb.inertia, l);
+            let omega = if given[main][1] {
+                wm
+            } else {
+                RigidBodyState::spin_of(&rb.inertia, l)
+            };
             RigidBodyState::new(rb.card.id, rb.mass, rb.center, rb.inertia, v, omega)
         })
         .collect()
