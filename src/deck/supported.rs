@@ -155,7 +155,7 @@ pub const SUPPORTED: &[Supported] = &[
     e("/DT", &["/DT"], "time step scale and minimum (the per-type controls /DT/<type>/<action>, other nodal options and /DT/AMS are not computed: refused by name)"),
     e("/DT/NODA", &["/DT/NODA/0"], "the time step from the nodes (scale) without added mass, as /DT/NODA/CST computes it; Tmin acts on nothing (no action keyword)"),
     e("/DT/BRICK/CST", &["/DT/BRICK/CST/0"], "read; in a model without solids it changes nothing (with bricks or tetrahedra refused by name)"),
-    e("/DT/NODA/CST", &["/DT/NODA/CST/0"], "the time step from the nodes (scale, minimum): each node under the minimum gets the mass and inertia that bring it there (MASS ADDED, MAS.ERR); 4-node shells give their nodal stiffness, rigid bodies step at their main node (Σ K, Σ K_rot + d²K, the smallest principal inertia), other elements refuse it by name"),
+    e("/DT/NODA/CST", &["/DT/NODA/CST/0"], "the time step from the nodes (scale, minimum): each node under the minimum gets the mass and inertia that bring it there (MASS ADDED, MAS.ERR); 4-node shells, trusses and beams give their nodal stiffness, rigid bodies step at their main node (Σ K, Σ K_rot + d²K, the smallest principal inertia), other elements refuse it by name"),
     e("/PRINT", &["/PRINT/-100/55"], "listing period"),
     e("/ANIM/DT, /ANIM/*", &["/ANIM/DT", "/ANIM/ELEM/VONM"], "state period of the run file"),
     e("/TFILE", &["/TFILE/4"], "time-history period (0: every cycle)"),

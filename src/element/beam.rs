@@ -193,6 +193,26 @@ fn resultant_plasticity(
     dw
 }
 
+/// The nodal stiffness for the nodal time step (/DT/NODA/CST), as the
+/// reference's PDLEN3: K = EA/l and K_rot = max(G·I_xx, φ·E·max(I_yy, I_zz))/l
+/// with φ = max(1, (4 + Φ)/((1 + Φ)(1 + s))), s = A l²/(12 I), Φ = 1.2(E/G)/s;
+/// both divided by the damping factor (√(1+δ²) − δ)² of the element step, so
+/// that a lone beam's nodes step as the element does.
+pub fn beam_nodal_stiffness(sec: &BeamSection, x: &[[f64; 3]; 2]) -> (f64, f64) {
+    let l = norm(sub(x[1], x[0]));
+    let (m, p) = (&sec.material, &sec.p);
+    let (e, g) = (m.young(), m.shear_modulus());
+    let i = p.iyy.max(p.izz);
+    let s = p.area * l * l / (12.0 * i);
+    let big_phi = 1.2 * (e / g) / s;
+    let phi = ((4.0 + big_phi) / ((1.0 + big_phi) * (1.0 + s))).max(1.0);
+    let delta = std::f64::consts::SQRT_2 * p.dm.max(p.df);
+    let f = (1.0 + delta * delta).sqrt() - delta;
+    let k = e * p.area / l / (f * f);
+    let kr = (g * p.ixx).max(phi * e * i) / l / (f * f);
+    (k, kr)
+}
+
 /// One explicit step of one beam from x^{n+1}, v^{n+½}, ω^{n+½}.
 pub fn beam_step(
     sec: &BeamSection,

@@ -168,3 +168,20 @@ fn time_step_and_refusals() {
         .unwrap_err()
         .contains("released rotations"));
 }
+
+/// A lone beam's node steps at √(2m/K) as its element step (damping factor
+/// included); the rotational stiffness is E·max(I)/l for a slender beam.
+#[test]
+fn the_nodal_stiffness_gives_the_element_step() {
+    let m = card(MaterialLaw::Elastic);
+    let sec = BeamSection::new(&prop(0, 0.01), &m).unwrap();
+    let (x, mut st) = start();
+    let (k, kr) = beam_nodal_stiffness(&sec, &x);
+    let mass = 0.5 * 8e-10 * 400.0 * L;
+    let out = beam_step(&sec, &x, &[[0.0; 3]; 2], &[[0.0; 3]; 2], 0.0, &mut st);
+    assert!(((2.0 * mass / k).sqrt() - out.dt).abs() < 1e-12 * out.dt);
+    let d = std::f64::consts::SQRT_2 * 0.01;
+    let f = (1.0 + d * d).sqrt() - d;
+    let want = 210000.0 * 20000.0 / L / (f * f);
+    assert!((kr - want).abs() < 1e-12 * want, "{kr} vs {want}");
+}

@@ -108,6 +108,13 @@ pub fn uniaxial(m: &Material, sig: f64, eps_p: &mut f64, de: f64, eps_dot: f64) 
     trial.signum() * (trial.abs() - e * dp)
 }
 
+/// The nodal stiffness for the nodal time step (/DT/NODA/CST): K = EA/l at
+/// each end (the reference's truss stiffness), so that a node of a lone
+/// truss steps at √(2m/K) = l/c, the element step.
+pub fn truss_nodal_stiffness(sec: &TrussSection, st: &TrussState, x: &[[f64; 3]; 2]) -> f64 {
+    sec.material.young() * st.area / norm(sub(x[1], x[0]))
+}
+
 /// One explicit step of one truss from x^{n+1} and v^{n+½}.
 pub fn truss_step(
     sec: &TrussSection,

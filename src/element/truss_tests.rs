@@ -96,3 +96,16 @@ fn a_gap_and_other_laws_are_refused_by_name() {
     let e = TrussSection::new(4.0, 1.0, &mat()).unwrap_err();
     assert!(e.contains("Gap = 1"), "{e}");
 }
+
+/// A lone truss's node steps at √(2m/K) = l/c, the element step (m = ρAl/2).
+#[test]
+fn the_nodal_stiffness_gives_the_element_step() {
+    let m = card(210000.0, MaterialLaw::Elastic);
+    let sec = TrussSection::new(400.0, 0.0, &m).unwrap();
+    let st = truss_init(&sec);
+    let x = [[0.0; 3], [0.0, 200.0, 0.0]];
+    let k = truss_nodal_stiffness(&sec, &st, &x);
+    let mass = 0.5 * 8e-10 * 400.0 * 200.0;
+    let out = truss_step(&sec, &x, &[[0.0; 3]; 2], 0.0, &mut truss_init(&sec));
+    assert!(((2.0 * mass / k).sqrt() - out.dt).abs() < 1e-12 * out.dt);
+}

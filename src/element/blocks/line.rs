@@ -6,8 +6,10 @@ use super::common::{decode_state, settle_common};
 use super::sections::part_material;
 use super::{Block, BlockInput, ElemOut, ElemRow, ElemStep};
 use crate::domain::LocalElements;
-use crate::element::beam::{beam_init, beam_step, BeamSection, BeamState};
-use crate::element::truss::{truss_init, truss_step, TrussSection, TrussState};
+use crate::element::beam::{beam_init, beam_nodal_stiffness, beam_step, BeamSection, BeamState};
+use crate::element::truss::{
+    truss_init, truss_nodal_stiffness, truss_step, TrussSection, TrussState,
+};
 use crate::element::SLOT;
 use crate::material::Material;
 use crate::model::{ElementKind, MaterialSpec, Part, Property, PropertyKind, NO_NODE};
@@ -37,6 +39,8 @@ pub trait LineKernel: Send + Sync + 'static {
     ) -> ([[f64; 6]; 2], f64, bool);
     /// Axial force, plastic strain, internal energy, plastic work.
     fn values(st: &Self::State) -> [f64; 4];
+    /// The nodal stiffness (K, K_rot) of each end for /DT/NODA/CST.
+    fn nodal(sec: &Self::Section, st: &Self::State, x: &[[f64; 3]; 2]) -> (f64, f64);
 }
 
 pub struct Truss;
@@ -77,6 +81,9 @@ impl LineKernel for Truss {
     }
     fn values(st: &TrussState) -> [f64; 4] {
         [st.sig * st.area, st.eps_p, st.eint, st.eplas]
+    }
+    fn nodal(sec: &TrussSection, st: &TrussState, x: &[[f64; 3]; 2]) -> (f64, f64) {
+        (truss_nodal_stiffness(sec, st, x), 0.0)
     }
 }
 
@@ -124,6 +131,9 @@ impl LineKernel for Beam {
     }
     fn values(st: &BeamState) -> [f64; 4] {
         [st.f[0], st.eps_p, st.eint, st.eplas]
+    }
+    fn nodal(sec: &BeamSection, _st: &BeamState, x: &[[f64; 3]; 2]) -> (f64, f64) {
+        beam_nodal_stiffness(sec, x)
     }
 }
 
@@ -254,6 +264,24 @@ impl<K: LineKernel> Block for LineBlock<K> {
     }
     fn steps(&self) -> &[ElemStep] {
         &self.steps
+    }
+    fn nodal_stiffness(&self, x: &[[f64; 3]], contrib: &mut [[f64; SLOT]]) -> bool {
+        let (le, sections, section) = (&self.le, &self.sections, &self.section);
+        let stride = K::KIND.nodes();
+        contrib
+            .par_chunks_mut(2)
+            .zip(self.state.par_iter())
+            .zip(self.alive.par_iter())
+            .enumerate()
+            .for_each(|(e, ((c, st), alive))| {
+                let (k, kr) = if *alive {
+                    K::nodal(&sections[section[e] as usize], st, &ends(le, stride, e, x))
+                } else {
+                    (0.0, 0.0)
+                };
+                c.iter_mut().for_each(|s| *s = [k, 0.0, 0.0, kr, 0.0, 0.0]);
+            });
+        true
     }
     fn settle(&mut self) -> Option<(u32, &'static str)> {
         settle_common(&mut self.alive, &self.steps, &self.le, "")

@@ -49,7 +49,7 @@ pub(super) fn nodal_steps(cx: &Ctx, s: &mut State) -> Result<Option<(f64, u64)>,
         let slots = &mut s.kcontrib[cx.offsets[i]..cx.offsets[i + 1]];
         if !b.nodal_stiffness(&s.x, slots) {
             return Err(RunError::Input(format!(
-                "/DT/NODA/CST: the nodal stiffness of {} elements is not computed yet (4-node shells only); the deck cannot run with the nodal time step",
+                "/DT/NODA/CST: the nodal stiffness of {} elements is not computed yet (4-node shells, trusses and beams have it); the deck cannot run with the nodal time step",
                 b.kind().listing_name()
             )));
         }
