@@ -52,3 +52,20 @@ mod tests {
         assert_eq!(norm([3.0, 4.0, 12.0]), 13.0);
     }
 }
+
+/// `a` made orthogonal to the unit `x` and normalised; a global axis (X, or
+/// Y when `x` lies near X) made so when `a` is parallel to `x`. The local y
+/// axis of the spring beam and the beam.
+pub fn orthogonal_axis(a: V3, x: V3) -> V3 {
+    let p = sub(a, scale(x, dot(a, x)));
+    let n = norm(p);
+    if n > 1e-12 {
+        return scale(p, 1.0 / n);
+    }
+    let other = if x[0].abs() < 0.9 {
+        [1.0, 0.0, 0.0]
+    } else {
+        [0.0, 1.0, 0.0]
+    };
+    orthogonal_axis(other, x)
+}

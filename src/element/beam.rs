@@ -29,7 +29,7 @@
 use super::truss::line_law_refusal;
 use crate::material::Material;
 use crate::model::BeamProperty;
-use crate::vec3::{add, cross, dot, norm, scale, sub};
+use crate::vec3::{add, cross, dot, norm, orthogonal_axis, scale, sub};
 use serde::{Deserialize, Serialize};
 
 /// A beam part's constants.
@@ -88,22 +88,6 @@ pub struct BeamOut {
     pub failed: bool,
 }
 
-/// `a` made orthogonal to the unit `x` and normalised; a global axis when
-/// `a` is (nearly) parallel to `x`.
-fn orthogonal(a: [f64; 3], x: [f64; 3]) -> [f64; 3] {
-    let p = sub(a, scale(x, dot(a, x)));
-    let n = norm(p);
-    if n > 1e-9 * norm(a).max(1e-300) {
-        return scale(p, 1.0 / n);
-    }
-    let other = if x[0].abs() < 0.9 {
-        [1.0, 0.0, 0.0]
-    } else {
-        [0.0, 1.0, 0.0]
-    };
-    orthogonal(other, x)
-}
-
 /// State at t = 0 from the two nodes and the orientation node (`None`:
 /// global Y, or X for a beam along Y).
 pub fn beam_init(x: &[[f64; 3]; 2], x3: Option<[f64; 3]>) -> BeamState {
@@ -115,7 +99,7 @@ pub fn beam_init(x: &[[f64; 3]; 2], x3: Option<[f64; 3]>) -> BeamState {
         None => [1.0, 0.0, 0.0],
     };
     BeamState {
-        ey: orthogonal(reference, ex),
+        ey: orthogonal_axis(reference, ex),
         ..Default::default()
     }
 }
@@ -235,7 +219,7 @@ pub fn beam_step(
     // The frame turned by the mean torsion and kept orthogonal to x.
     let phi = dot(wm, ex) * dt;
     let y = st.ey;
-    st.ey = orthogonal(add(scale(y, phi.cos()), scale(cross(ex, y), phi.sin())), ex);
+    st.ey = orthogonal_axis(add(scale(y, phi.cos()), scale(cross(ex, y), phi.sin())), ex);
     let e = [ex, st.ey, cross(ex, st.ey)];
     let mut visc = [0.0; 6];
     if dt > 0.0 {
@@ -243,7 +227,7 @@ pub fn beam_step(
         let lm = norm(dm);
         let em = [
             scale(dm, 1.0 / lm),
-            orthogonal(e[1], scale(dm, 1.0 / lm)),
+            orthogonal_axis(e[1], scale(dm, 1.0 / lm)),
             [0.0; 3],
         ];
         let em = [em[0], em[1], cross(em[0], em[1])];

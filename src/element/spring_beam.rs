@@ -22,7 +22,7 @@ use super::spring::{check_sensor, element_dt, finder, SpringOut, SpringState};
 use super::spring_general::{finish, ratio};
 use super::spring_law::DofLaw;
 use crate::model::{Function, SpringBeamProperty};
-use crate::vec3::{add, cross, dot, norm, scale, sub};
+use crate::vec3::{add, cross, dot, norm, orthogonal_axis, scale, sub};
 
 /// A /PROP/TYPE13 spring ready to run.
 #[derive(Clone, Debug)]
@@ -224,20 +224,4 @@ impl SpringBeam {
 /// The largest `g` of `laws` (0 for none).
 fn largest(laws: &[DofLaw], g: fn(&DofLaw) -> f64) -> f64 {
     laws.iter().map(g).fold(0.0, f64::max)
-}
-
-/// `a` made orthogonal to the unit `x` and normalised (a fallback axis when
-/// `a` is parallel to `x`).
-fn orthogonal_axis(a: [f64; 3], x: [f64; 3]) -> [f64; 3] {
-    let p = sub(a, scale(x, dot(a, x)));
-    let n = norm(p);
-    if n > 1e-12 {
-        return scale(p, 1.0 / n);
-    }
-    let other = if x[0].abs() < 0.9 {
-        [1.0, 0.0, 0.0]
-    } else {
-        [0.0, 1.0, 0.0]
-    };
-    orthogonal_axis(other, x)
 }

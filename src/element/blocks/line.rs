@@ -3,7 +3,7 @@
 //! orients it at t = 0 and takes no force.
 
 use super::common::{decode_state, settle_common};
-use super::sections::part_material;
+use super::sections::{part_material, per_part};
 use super::{Block, BlockInput, ElemOut, ElemRow, ElemStep};
 use crate::domain::LocalElements;
 use crate::element::beam::{beam_init, beam_nodal_stiffness, beam_step, BeamSection, BeamState};
@@ -14,7 +14,6 @@ use crate::element::SLOT;
 use crate::material::Material;
 use crate::model::{ElementKind, MaterialSpec, Part, Property, PropertyKind, NO_NODE};
 use rayon::prelude::*;
-use std::collections::HashMap;
 
 /// One line element kernel (truss or beam).
 pub trait LineKernel: Send + Sync + 'static {
@@ -154,24 +153,12 @@ impl<K: LineKernel> LineBlock<K> {
         props: &[Property],
         mats: &[MaterialSpec],
     ) -> Result<Self, String> {
-        let mut sections = Vec::new();
-        let mut of_part: HashMap<u32, u16> = HashMap::new();
-        let mut section = Vec::with_capacity(le.part.len());
-        for &p in &le.part {
-            let s = match of_part.get(&p) {
-                Some(&s) => s,
-                None => {
-                    let part = &parts[p as usize];
-                    let prop =
-                        &props[part.prop.ok_or("line element part without property")? as usize];
-                    let card = part_material(part, mats, "truss or beam part without material")?;
-                    sections.push(K::section(prop, &Material::from_card(card))?);
-                    of_part.insert(p, (sections.len() - 1) as u16);
-                    (sections.len() - 1) as u16
-                }
-            };
-            section.push(s);
-        }
+        let (sections, section) = per_part(&le, |p| {
+            let part = &parts[p as usize];
+            let prop = &props[part.prop.ok_or("line element part without property")? as usize];
+            let card = part_material(part, mats, "truss or beam part without material")?;
+            K::section(prop, &Material::from_card(card))
+        })?;
         let stride = K::KIND.nodes();
         let n = le.global.len();
         let mut state = Vec::with_capacity(n);

@@ -22,7 +22,7 @@ pub(super) const SOLID_WITHOUT_MATERIAL: &str = "solid part without material";
 
 /// The sections of `le`'s parts, built by `build` once per part in the order
 /// the parts first appear, and each element's section index.
-fn per_part<S>(
+pub(super) fn per_part<S>(
     le: &LocalElements,
     mut build: impl FnMut(u32) -> Result<S, String>,
 ) -> Result<(Vec<S>, Vec<u16>), String> {

@@ -2,7 +2,7 @@
 //! `crate::element::shell4_qbat`).
 
 use super::common::{decode_state, gather, settle_common};
-use super::sections::{part_material, shell_property, SHELL_WITHOUT_MATERIAL};
+use super::sections::{part_material, per_part, shell_property, SHELL_WITHOUT_MATERIAL};
 use super::{Block, BlockInput, ElemOut, ElemRow, ElemStep};
 use crate::domain::LocalElements;
 use crate::element::shell4_qbat::{membrane_von_mises, qbat_step, QbatSection, QbatState};
@@ -10,7 +10,6 @@ use crate::element::SLOT;
 use crate::material::Material;
 use crate::model::{ElementKind, MaterialSpec, Part, Property};
 use rayon::prelude::*;
-use std::collections::HashMap;
 
 pub struct QbatBlock {
     le: LocalElements,
@@ -28,42 +27,26 @@ impl QbatBlock {
         props: &[Property],
         mats: &[MaterialSpec],
     ) -> Result<Self, String> {
-        let mut sections = Vec::new();
-        let mut of_part: HashMap<u32, u16> = HashMap::new();
-        let mut section = Vec::with_capacity(le.part.len());
-        for &p in &le.part {
-            let s = match of_part.get(&p) {
-                Some(&s) => s,
-                None => {
-                    let part = &parts[p as usize];
-                    let r = shell_property(part, props)?;
-                    let card = part_material(part, mats, SHELL_WITHOUT_MATERIAL)?;
-                    if !card.failures.is_empty() {
-                        return Err(format!(
-                            "{}: a failure model on a QBAT shell (Ishell = 12) is not computed yet",
-                            card.loc
-                        ));
-                    }
-                    // Idrill 2 (and 0 resolved) is "no drilling dof".
-                    if r.ithick == 1 || r.idrill == 1 {
-                        return Err(format!(
-                            "Ishell = 12 (QBAT) with Ithick = {} and Idrill = {}: the thickness change and the drilling stiffness are not computed on QBAT yet",
-                            r.ithick, r.idrill
-                        ));
-                    }
-                    let dn = if r.dn > 0.0 { r.dn } else { 1e-3 };
-                    sections.push(QbatSection::new(
-                        r.thick,
-                        r.ashear,
-                        dn,
-                        &Material::from_card(card),
-                    )?);
-                    of_part.insert(p, (sections.len() - 1) as u16);
-                    (sections.len() - 1) as u16
-                }
-            };
-            section.push(s);
-        }
+        let (sections, section) = per_part(&le, |p| {
+            let part = &parts[p as usize];
+            let r = shell_property(part, props)?;
+            let card = part_material(part, mats, SHELL_WITHOUT_MATERIAL)?;
+            if !card.failures.is_empty() {
+                return Err(format!(
+                    "{}: a failure model on a QBAT shell (Ishell = 12) is not computed yet",
+                    card.loc
+                ));
+            }
+            // Idrill 2 (and 0 resolved) is "no drilling dof".
+            if r.ithick == 1 || r.idrill == 1 {
+                return Err(format!(
+                    "Ishell = 12 (QBAT) with Ithick = {} and Idrill = {}: the thickness change and the drilling stiffness are not computed on QBAT yet",
+                    r.ithick, r.idrill
+                ));
+            }
+            let dn = if r.dn > 0.0 { r.dn } else { 1e-3 };
+            QbatSection::new(r.thick, r.ashear, dn, &Material::from_card(card))
+        })?;
         let n = le.global.len();
         Ok(QbatBlock {
             le,
