@@ -69,3 +69,16 @@ pub fn orthogonal_axis(a: V3, x: V3) -> V3 {
     };
     orthogonal_axis(other, x)
 }
+
+/// d turned by the rotation of rotational velocity w over dt (Rodrigues).
+pub fn rotate(d: V3, w: V3, dt: f64) -> V3 {
+    let th = norm(w) * dt;
+    if th == 0.0 {
+        return d;
+    }
+    let n = scale(w, 1.0 / norm(w));
+    let (s, c) = th.sin_cos();
+    let nxd = cross(n, d);
+    let nd = dot(n, d);
+    [0, 1, 2].map(|k| d[k] * c + nxd[k] * s + n[k] * nd * (1.0 - c))
+}

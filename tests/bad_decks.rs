@@ -1711,3 +1711,35 @@ fn move_funct_and_final_geometry_are_checked_at_their_cards() {
         },
     );
 }
+
+/// /PROP/KJOINT2: the joint type and the critical damping factor are
+/// checked at their card.
+#[test]
+fn kjoint2_type_and_damping_are_checked_at_their_card() {
+    for (tag, ty, cr, field, phrases) in [
+        ("kjoint2-cr", 1, "1.5", "Cr", &["1.5", "[0, 1]"][..]),
+        ("kjoint2-type", 12, "0.1", "Type", &["12", "1 to 9"][..]),
+    ] {
+        let c = Case::new(tag);
+        let mut d = base_deck();
+        let at = line_no(&d, "/PART/1") - 1;
+        let joint = [
+            s("/PROP/KJOINT2/9"),
+            s("joint"),
+            i10(ty) + &r20("0.0") + &r20("0.0") + &r20(cr),
+        ];
+        for (k, l) in joint.into_iter().enumerate() {
+            d.insert(at + k, l);
+        }
+        assert_error(
+            &c.check(&d),
+            Expect {
+                file: DECK,
+                line: at + 3,
+                keyword: "/PROP/KJOINT2/9",
+                field,
+                phrases,
+            },
+        );
+    }
+}

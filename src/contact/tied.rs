@@ -672,7 +672,7 @@ impl TiedSystem {
                 if tie.rot || tie.is > 0.0 {
                     vr[l as usize] = ws;
                 }
-                self.d_next[ii][j] = type2::rotate(d, ws, dt);
+                self.d_next[ii][j] = crate::vec3::rotate(d, ws, dt);
             }
         }
         for (q, xn) in next {

@@ -20,6 +20,7 @@ mod failures;
 mod id_index;
 mod impdisp_fgeo;
 mod interfaces;
+mod joint_props;
 pub mod keyword_policy;
 mod lines;
 mod list_end;

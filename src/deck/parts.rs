@@ -70,6 +70,7 @@ pub(super) fn parse_property(block: &Block, deck: &mut Deck) -> InputResult<bool
         "TYPE13" | "SPR_BEAM" => 13,
         "TYPE2" | "TRUSS" => 2,
         "TYPE3" | "BEAM" => 3,
+        "TYPE45" | "KJOINT2" => 45,
         _ => return Ok(false),
     };
     let id = header_id(block, 2, "prop_ID")?;
@@ -95,6 +96,7 @@ pub(super) fn parse_property(block: &Block, deck: &mut Deck) -> InputResult<bool
         )?),
         2 => PropertyKind::Truss(super::beam_props::read_truss(&mut cards)?),
         3 => PropertyKind::Beam(super::beam_props::read_beam(&mut cards)?),
+        45 => PropertyKind::Joint(super::joint_props::read_joint(&mut cards)?),
         _ => PropertyKind::SpringBeam(spring_props::read_spring_beam(
             &mut cards,
             &mut deck.warnings,

@@ -111,6 +111,7 @@ pub const SUPPORTED: &[Supported] = &[
     s("/PROP/TYPE4 (/PROP/SPRING)", &["/PROP/TYPE4/1", "/PROP/SPRING/1"], "axial springs: K, C, the force curve with hardening H = 0, 1, 2, 4, 5, 6, 7, 8 and its unloading curve, the rate terms A + B ln(δ̇/D) + E g(δ̇/F) and Hscale h(δ̇/F), failure bounds, Ileng (sensor refused)"),
     s("/PROP/TYPE8 (/PROP/SPR_GENE)", &["/PROP/TYPE8/1", "/PROP/SPR_GENE/1"], "general springs: six degrees of freedom in the global frame, each with the TYPE4 law; Ifail 0/1 (Fsmooth filter), Ifail2 0/1 (skew, Iequil 1, Ifail2 2, sensor refused)"),
     s("/PROP/TYPE13 (/PROP/SPR_BEAM)", &["/PROP/TYPE13/1", "/PROP/SPR_BEAM/1"], "spring beams: tension, shears, torsion and bendings in the element's frame, each with the TYPE4 law, shear balanced by end moments; Ifail 0/1, Ifail2 0/2, Ileng (skew, Ifail2 1/3, sensor refused)"),
+    s("/PROP/TYPE45 (/PROP/KJOINT2)", &["/PROP/TYPE45/1", "/PROP/KJOINT2/1"], "joints between two rigid bodies' secondary nodes: types 1 (spherical), 8 (rigid) and 9 (free) in the global frame turned with the nodes; blocked degrees of freedom with Kn or the automatic stiffness (Kn = 0, from the bodies' masses and inertias at the /DTIX step) and critical damping Cr; free ones with K, C and their functions (types 2-7, skews, stops, friction and the sensor refused by name)"),
     s("/PROP/TYPE2 (/PROP/TRUSS)", &["/PROP/TYPE2/1", "/PROP/TRUSS/1"], "trusses: Area; axial bar with large displacements, LAW1, LAW2, LAW36, LAW44 uniaxial (no strain-rate term, as the reference); Gap > 0 refused"),
     s("/PROP/TYPE3 (/PROP/BEAM)", &["/PROP/TYPE3/1", "/PROP/BEAM/1"], "beams: Area, Iyy, Izz, Ixx, dm, df (0.01 blank), Ishear; Timoshenko resultants, corotational, global plasticity with LAW2, LAW36, LAW44 (the reference's work-equivalent strain rate); released rotations, small-strain Ismstr and stubby beams (A·L²/12I < 1) refused by name"),
     s("/DEF_SHELL, /DEF_SOLID", &["/DEF_SHELL", "/DEF_SOLID"], "defaults for shell and solid sections"),
@@ -233,12 +234,7 @@ mod tests {
 
     #[test]
     fn keywords_nobody_reads_are_not_in_the_table() {
-        for h in [
-            "/MAT/LAW25/1",
-            "/INTER/TYPE19/1",
-            "/PROP/TYPE45/1",
-            "/RWALL/CYL/1",
-        ] {
+        for h in ["/MAT/LAW25/1", "/INTER/TYPE19/1", "/RWALL/CYL/1"] {
             assert!(
                 !matches!(
                     crate::deck::read_starter_block(&block(h), &mut Default::default()),

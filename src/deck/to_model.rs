@@ -400,6 +400,17 @@ impl Refs<'_> {
                 PropertyKind::Spring(s) => ("SPRING", std::slice::from_ref(&s.dof)),
                 PropertyKind::GeneralSpring(s) => ("SPR_GENE", &s.dofs),
                 PropertyKind::SpringBeam(s) => ("SPR_BEAM", &s.dofs),
+                PropertyKind::Joint(j) => {
+                    let kw = format!("/PROP/KJOINT2/{}", p.card.id);
+                    for (_, d) in &j.free {
+                        for (name, f) in
+                            [("fct_K", d.fct_k), ("fct_C", d.fct_c), ("fct_F", d.fct_f)]
+                        {
+                            self.check_fct(f, &p.card.loc, &kw, name)?;
+                        }
+                    }
+                    continue;
+                }
                 _ => continue,
             };
             let kw = format!("/PROP/{kw}/{}", p.card.id);
@@ -960,7 +971,8 @@ fn add_element(
             Some(
                 PropertyKind::Spring(_)
                 | PropertyKind::GeneralSpring(_)
-                | PropertyKind::SpringBeam(_),
+                | PropertyKind::SpringBeam(_)
+                | PropertyKind::Joint(_),
             ),
         ) => true,
         (ElementKind::Truss, Some(PropertyKind::Truss(_))) => true,
@@ -985,7 +997,7 @@ fn add_element(
                     ElementKind::Brick8 | ElementKind::Tetra4 => "/PROP/SOLID (TYPE14)",
                     ElementKind::Truss => "/PROP/TRUSS (TYPE2)",
                     ElementKind::Beam => "/PROP/BEAM (TYPE3)",
-                    _ => "/PROP/SPRING (TYPE4), /PROP/SPR_GENE (TYPE8) or /PROP/SPR_BEAM (TYPE13)",
+                    _ => "/PROP/SPRING (TYPE4), /PROP/SPR_GENE (TYPE8), /PROP/SPR_BEAM (TYPE13) or /PROP/KJOINT2 (TYPE45)",
                 }
             ),
         ));

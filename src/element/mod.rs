@@ -12,6 +12,7 @@ pub mod ha8;
 pub mod heph;
 pub mod hex8;
 pub mod hex8_total;
+pub mod joint;
 pub mod shell3;
 pub mod shell4;
 pub mod shell4_qbat;

@@ -44,6 +44,14 @@ impl RigidBodyState {
         let jw = mat_vec(&sym(&self.j0), wb);
         0.5 * (wb[0] * jw[0] + wb[1] * jw[1] + wb[2] * jw[2])
     }
+
+    /// J w with J the body's inertia turned to its orientation (R J₀ Rᵀ w):
+    /// the angular momentum of spin w.
+    pub fn inertia_times(&self, w: V3) -> V3 {
+        let r = &self.rot;
+        let wb: V3 = [0, 1, 2].map(|i| r[0][i] * w[0] + r[1][i] * w[1] + r[2][i] * w[2]);
+        mat_vec(r, mat_vec(&sym(&self.j0), wb))
+    }
 }
 
 fn sym(j: &[f64; 6]) -> [[f64; 3]; 3] {

@@ -28,6 +28,73 @@ pub enum PropertyKind {
     Truss(TrussProperty),
     /// /PROP/TYPE3 (/PROP/BEAM).
     Beam(BeamProperty),
+    /// /PROP/TYPE45 (/PROP/KJOINT2): a penalty joint between two rigid bodies.
+    Joint(JointProperty),
+}
+
+/// /PROP/TYPE45 (/PROP/KJOINT2), defaults resolved as the reference
+/// starter (research note `docs/notes/kjoint2_research.md` §2): Cr 0 →
+/// 0.05, ScF 0 → 1 (Kn = 0, automatic) or 10 (Kn given).
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct JointProperty {
+    /// 1 spherical, 2 revolute, 3 cylindrical, 4 planar, 5 universal,
+    /// 6 translational, 7 Oldham, 8 rigid, 9 free.
+    pub joint_type: i64,
+    /// Stiffness of the blocked degrees of freedom (0: automatic).
+    pub kn: f64,
+    pub scf: f64,
+    /// Critical damping factor of the blocked degrees of freedom.
+    pub cr: f64,
+    pub sens_id: super::Id,
+    pub skew_ids: [super::Id; 2],
+    /// The free degrees of freedom of the type, in the order Tx, Ty, Tz,
+    /// Rx, Ry, Rz: (which, its cards).
+    pub free: Vec<(usize, JointDof)>,
+}
+
+/// The three cards of one free degree of freedom of a KJOINT2.
+#[derive(Clone, Debug, Default, Serialize, Deserialize, PartialEq)]
+pub struct JointDof {
+    /// Stiffness (the scale on `fct_k` when given).
+    pub k: f64,
+    pub fct_k: super::Id,
+    /// Stops: the displacement or angle below S− and above S+ (0: none).
+    pub stop_minus: f64,
+    pub stop_plus: f64,
+    /// Combined stops (input versions after 2017; 0: none).
+    pub icomb: i64,
+    /// Damping (the scale on `fct_c` when given).
+    pub c: f64,
+    pub fct_c: super::Id,
+    /// Friction stiffness, force or moment and its function.
+    pub kf: f64,
+    pub friction: f64,
+    pub fct_f: super::Id,
+}
+
+impl JointProperty {
+    /// Kn asks for the automatic stiffness: the reference tests the nearest
+    /// integer of Kn against 0.
+    pub fn automatic(kn: f64) -> bool {
+        kn.round() == 0.0
+    }
+
+    /// The free degrees of freedom of a joint type (0-2 translations, 3-5
+    /// rotations), research note §2: None for a type that does not exist.
+    pub fn free_dofs(joint_type: i64) -> Option<&'static [usize]> {
+        Some(match joint_type {
+            1 => &[3, 4, 5],
+            2 => &[3],
+            3 => &[0, 3],
+            4 => &[1, 2, 3],
+            5 => &[4, 5],
+            6 => &[0],
+            7 => &[1, 2],
+            8 => &[],
+            9 => &[0, 1, 2, 3, 4, 5],
+            _ => return None,
+        })
+    }
 }
 
 /// /PROP/TYPE2 (/PROP/TRUSS): the cross-section and the initial gap.

@@ -44,7 +44,7 @@
 //! translation-only main nodes (diagonal masses): it is left out of the
 //! dynamics and of the kinetic energy alike.
 
-use crate::contact::geometry::{add, cross, dot, norm, scale, sub, V3};
+use crate::contact::geometry::{add, cross, dot, scale, sub, V3};
 
 /// One tie's share on corner i: force and moment (6 components).
 pub type Share = [f64; 6];
@@ -179,19 +179,6 @@ pub fn recover(shape: &[f64; 4], v: &[V3; 4], w: &[V3; 4], d: V3, turn: &Turn) -
     (add(vp, cross(wp, d)), wp)
 }
 
-/// d turned by the rotation of rotational velocity w over dt (Rodrigues).
-pub fn rotate(d: V3, w: V3, dt: f64) -> V3 {
-    let th = norm(w) * dt;
-    if th == 0.0 {
-        return d;
-    }
-    let n = scale(w, 1.0 / norm(w));
-    let (s, c) = th.sin_cos();
-    let nxd = cross(n, d);
-    let nd = dot(n, d);
-    [0, 1, 2].map(|k| d[k] * c + nxd[k] * s + n[k] * nd * (1.0 - c))
-}
-
 /// Mass and rotational inertia added to corner i (set-up, once).
 pub fn mass_share(shape: &[f64; 4], ms: f64, is: f64, d: V3, rot: bool) -> [(f64, f64); 4] {
     let d2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
@@ -209,6 +196,7 @@ pub fn mass_share(shape: &[f64; 4], ms: f64, is: f64, d: V3, rot: bool) -> [(f64
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::vec3::rotate;
 
     fn dot6(a: &Share, v: V3, w: V3) -> f64 {
         a[0] * v[0] + a[1] * v[1] + a[2] * v[2] + a[3] * w[0] + a[4] * w[1] + a[5] * w[2]

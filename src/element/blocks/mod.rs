@@ -15,6 +15,7 @@ mod ha8;
 mod heph;
 mod hex8;
 mod hex8_total;
+mod joint;
 mod line;
 pub mod registry;
 mod sections;
@@ -35,7 +36,7 @@ pub use tet4::Tet4Block;
 
 use super::SLOT;
 use crate::domain::LocalElements;
-use crate::model::{ElementKind, Function, MaterialSpec, Part, Property};
+use crate::model::{ElementKind, Function, MaterialSpec, Part, Property, RigidBody};
 use crate::parallel::ExactSum;
 
 /// Per-element result the solver needs after a step.
@@ -129,6 +130,19 @@ pub struct BlockInput<'a> {
     pub props: &'a [Property],
     pub mats: &'a [MaterialSpec],
     pub functions: &'a [Function],
+    pub ctx: BlockContext<'a>,
+}
+
+/// What a block may need of the model beyond its elements' parts,
+/// properties and materials (today: the joints' rigid bodies).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct BlockContext<'a> {
+    /// The rigid bodies (dense global node indices).
+    pub rigid_bodies: &'a [RigidBody],
+    /// The global index of each local node (empty: local is global).
+    pub node_global: &'a [u32],
+    /// /DTIX bound of every step (0: none).
+    pub dt_max: f64,
 }
 
 /// Builds the block of one formulation (a line of [`registry::FORMULATIONS`]).

@@ -12,8 +12,10 @@
 
 use super::sections::{part_material, shell_property, solid_property};
 use super::sections::{SHELL_WITHOUT_MATERIAL, SOLID_WITHOUT_MATERIAL};
-use super::{ha8, heph, hex8, hex8_total, line, shell3, shell4_bt, shell4_qbat, spring, tet4};
-use super::{Block, BlockInput, BuildBlock};
+use super::{
+    ha8, heph, hex8, hex8_total, joint, line, shell3, shell4_bt, shell4_qbat, spring, tet4,
+};
+use super::{Block, BlockContext, BlockInput, BuildBlock};
 use crate::domain::LocalElements;
 use crate::model::{ElementKind, Function, MaterialSpec, Part, Property, PropertyKind};
 use std::collections::HashMap;
@@ -139,6 +141,14 @@ pub const FORMULATIONS: &[Formulation] = &[
         build: spring::build_beam,
     },
     Formulation {
+        kind: ElementKind::Spring,
+        flag: "/PROP/TYPE",
+        numbers: &[45],
+        ismstr: &[],
+        name: "KJOINT2 joint between rigid bodies",
+        build: joint::build,
+    },
+    Formulation {
         kind: ElementKind::Truss,
         flag: "/PROP/TYPE",
         numbers: &[2],
@@ -227,8 +237,9 @@ fn formulation_number(
                 PropertyKind::Spring(_) => Ok((4, 0)),
                 PropertyKind::GeneralSpring(_) => Ok((8, 0)),
                 PropertyKind::SpringBeam(_) => Ok((13, 0)),
+                PropertyKind::Joint(_) => Ok((45, 0)),
                 _ => Err(format!(
-                    "/PROP/{}: a spring part needs a spring property (/PROP/TYPE4, TYPE8 or TYPE13)",
+                    "/PROP/{}: a spring part needs a spring property (/PROP/TYPE4, TYPE8, TYPE13 or TYPE45)",
                     prop.card.id
                 )),
             }
@@ -314,6 +325,7 @@ pub fn make_block(
     props: &[Property],
     mats: &[MaterialSpec],
     functions: &[Function],
+    ctx: BlockContext,
 ) -> Result<Vec<Box<dyn Block>>, String> {
     if le.global.is_empty() {
         return Ok(Vec::new());
@@ -329,6 +341,7 @@ pub fn make_block(
             props,
             mats,
             functions,
+            ctx,
         })?);
     }
     Ok(blocks)
@@ -371,6 +384,11 @@ mod tests {
             &m.properties,
             &m.materials,
             &m.functions,
+            BlockContext {
+                rigid_bodies: &m.rigid_bodies,
+                node_global: &[],
+                dt_max: m.engine.as_ref().map_or(0.0, |e| e.dtix.1),
+            },
         )
     }
 
@@ -483,6 +501,7 @@ mod tests {
                 props: &m.properties,
                 mats: &m.materials,
                 functions: &m.functions,
+                ctx: BlockContext::default(),
             })
             .unwrap()
         };

@@ -191,9 +191,9 @@ fn constrain_body(cx: &Ctx, s: &mut State, b: usize) {
         }
     }
     let counts = lb.main_local.is_some_and(|l| cx.owned[l as usize]);
-    let v_prior = s.bodies_v_before[b].0;
+    let (v_prior, w_prior) = s.bodies_v_before[b];
     let body = &mut s.bodies[b];
-    let spin_before = body.rotational_energy();
+    let w_free = body.omega;
     for (k, val) in imposed.iter().enumerate() {
         let Some(val) = *val else {
             continue;
@@ -208,9 +208,17 @@ fn constrain_body(cx: &Ctx, s: &mut State, b: usize) {
             body.omega[k - 3] = val;
         }
     }
-    // An imposed spin does the work of the rotational energy it changes.
+    // An imposed spin: the reaction's angular impulse J(ω − ω_free) times
+    // the mean spin ½(ω^{n−½} + ω^{n+½}), as for the translations (a body
+    // held still does no work).
     if counts && imposed[3..].iter().any(Option::is_some) {
-        s.w_ext.add(body.rotational_energy() - spin_before);
+        let w = body.omega;
+        let dl = body.inertia_times(crate::vec3::sub(w, w_free));
+        s.w_ext.add(
+            (0..3)
+                .map(|k| dl[k] * 0.5 * (w_prior[k] + w[k]))
+                .sum::<f64>(),
+        );
     }
 }
 

@@ -183,6 +183,11 @@ fn check_supported(m: &Model) -> Result<(), String> {
                 &m.properties,
                 &m.materials,
                 &m.functions,
+                crate::element::blocks::BlockContext {
+                    rigid_bodies: &m.rigid_bodies,
+                    node_global: &[],
+                    dt_max: m.engine.as_ref().map_or(0.0, |e| e.dtix.1),
+                },
             )
             .map_err(|err| {
                 let part = &m.parts[set.part[e] as usize];

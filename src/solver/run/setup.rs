@@ -524,6 +524,11 @@ fn element_blocks(cx: &Ctx, x: &[[f64; 3]]) -> Result<Vec<Box<dyn Block>>, RunEr
                 &g.properties,
                 &g.materials,
                 &g.functions,
+                crate::element::blocks::BlockContext {
+                    rigid_bodies: &g.rigid_bodies,
+                    node_global: &sd.node_global,
+                    dt_max: g.engine.dtix.1,
+                },
             )
             .map_err(RunError::Input)?,
         );
