@@ -82,3 +82,36 @@ pub fn rotate(d: V3, w: V3, dt: f64) -> V3 {
     let nd = dot(n, d);
     [0, 1, 2].map(|k| d[k] * c + nxd[k] * s + n[k] * nd * (1.0 - c))
 }
+
+/// The inverse of a 3×3 matrix (cofactors over the determinant); None when
+/// the determinant is not positive (a compliance or stiffness must be).
+pub fn inverse_positive(a: &[[f64; 3]; 3]) -> Option<[[f64; 3]; 3]> {
+    let cof = |i: usize, j: usize| {
+        let (r0, r1) = ((i + 1) % 3, (i + 2) % 3);
+        let (c0, c1) = ((j + 1) % 3, (j + 2) % 3);
+        a[r0][c0] * a[r1][c1] - a[r0][c1] * a[r1][c0]
+    };
+    let det = a[0][0] * cof(0, 0) + a[0][1] * cof(0, 1) + a[0][2] * cof(0, 2);
+    if !(det > 0.0) {
+        return None;
+    }
+    Some(std::array::from_fn(|i| {
+        std::array::from_fn(|j| cof(j, i) / det)
+    }))
+}
+
+/// R σ Rᵀ of a Voigt stress [σxx σyy σzz σxy σyz σzx].
+pub fn rotate_voigt(r: &[[f64; 3]; 3], s: &[f64; 6]) -> [f64; 6] {
+    let m = [[s[0], s[3], s[5]], [s[3], s[1], s[4]], [s[5], s[4], s[2]]];
+    let mut o = [[0.0; 3]; 3];
+    for i in 0..3 {
+        for j in 0..3 {
+            for k in 0..3 {
+                for l in 0..3 {
+                    o[i][j] += r[i][k] * m[k][l] * r[j][l];
+                }
+            }
+        }
+    }
+    [o[0][0], o[1][1], o[2][2], o[0][1], o[1][2], o[2][0]]
+}

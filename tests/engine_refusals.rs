@@ -209,3 +209,46 @@ fn brick_mass_scaling_on_bricks_is_refused_by_name() {
         ],
     );
 }
+
+/// LOI12 (LAW12 on /PROP/TYPE6 with /FAIL/HASHIN Ifail_so 0) runs; the
+/// Hashin relaxation and deletion (Ifail_so 1) and an isotropic law on an
+/// orthotropic section are refused by name.
+#[test]
+fn hashin_relaxation_and_isotropic_laws_on_sol_orth_are_refused_by_name() {
+    let src = qa_deck("LOIS_LOI12_test1").with_file_name("LOI12_0000.rad");
+    let text = std::fs::read_to_string(&src).unwrap();
+    let hashin = "/FAIL/HASHIN/1\n#---1----|----2----|----3----|----4----|----5----|----6----|----7----|----8----|----9----|---10----|\n         1         2     \n";
+    assert!(text.contains(hashin));
+    let relaxing = hashin.replace(
+        "         1         2     \n",
+        "         1         2         1\n",
+    );
+    let mat = "/MAT/LAW12/1\ntest des directions d_orthotropie\n";
+    assert!(text.contains(mat));
+    for (tag, deck, expect) in [
+        ("hashin", text.replace(hashin, &relaxing), "Ifail_so = 1"),
+        (
+            "iso",
+            // The material block made an elastic LAW1.
+            {
+                let (a, b) = (
+                    text.find(mat).unwrap(),
+                    text.find("/FAIL/HASHIN/1").unwrap(),
+                );
+                let elastic = format!(
+                    "/MAT/ELAST/1\nisotropic\n{:>20}\n{:>20}{:>20}\n",
+                    0.0078, 10.0, 0.3
+                );
+                format!("{}{elastic}{}", &text[..a], &text[b..])
+            },
+            "on /PROP/TYPE6 (SOL_ORTH)",
+        ),
+    ] {
+        let dir = scratch(&format!("refusal-loi12-{tag}"));
+        std::fs::write(dir.join("LOI12_0000.rad"), deck).unwrap();
+        for f in ["LOI12_0001.rad", "qadiags.inc"] {
+            std::fs::copy(src.with_file_name(f), dir.join(f)).unwrap();
+        }
+        run_refused(&dir.join("LOI12_0000.rad"), &[expect]);
+    }
+}

@@ -1,5 +1,5 @@
-//! /FAIL/JOHNSON (Johnson-Cook failure) and /FAIL/TAB (tabulated failure,
-//! `failure_tab.rs`), attached to the material of the same id. Other failure
+//! /FAIL/JOHNSON (Johnson-Cook failure), /FAIL/TAB (tabulated failure,
+//! `failure_tab.rs`) and /FAIL/HASHIN, attached to the material of the same id. Other failure
 //! models stay unsupported (the keyword policy refuses them by name).
 //!
 //! Card (reference guide /FAIL/JOHNSON, no title line):
@@ -18,6 +18,30 @@ use crate::model::{
     MaterialSpec, TabFailure,
 };
 
+/// /FAIL/HASHIN (research note `docs/notes/law12_research.md` §3.1): the
+/// first card Iform (1-10), Ifail_sh (11-20), Ifail_so (21-30); the
+/// strengths that follow set the criteria, which change the solution only
+/// with Ifail_so > 0 (refused by the engine, with shells).
+fn read_fail_hashin(block: &Block) -> InputResult<(Id, FailureModel)> {
+    let mat_id = header_id(block, 2, "mat_ID")?;
+    header_id_opt(block, 3, "unit_ID")?;
+    let mut cards = Cards::new(block);
+    let c1 = cards.next("the card with Iform, Ifail_sh, Ifail_so")?;
+    let iform = c1.flag(1, "Iform", 1, &[0, 1, 2])?;
+    let ifail_sh = c1.flag(11, "Ifail_sh", 0, &[0, 1, 2])?;
+    let ifail_so = c1.flag(21, "Ifail_so", 0, &[0, 1, 2])?;
+    // The strengths (three more cards) are the criteria's only.
+    while cards.next_opt().is_some() {}
+    Ok((
+        mat_id,
+        FailureModel::Hashin(crate::model::HashinFailure {
+            iform: if iform == 0 { 1 } else { iform },
+            ifail_sh,
+            ifail_so,
+        }),
+    ))
+}
+
 /// A failure card read, before it is attached to its material.
 #[derive(Clone, Debug, serde::Serialize, serde::Deserialize)]
 pub struct FailureCard {
@@ -25,24 +49,27 @@ pub struct FailureCard {
     pub spec: FailureSpec,
 }
 
-/// Reads /FAIL/JOHNSON/mat_ID and /FAIL/TAB/mat_ID; false for another
-/// failure model.
+/// Reads /FAIL/JOHNSON, /FAIL/TAB and /FAIL/HASHIN (/mat_ID); false for
+/// another failure model.
 pub(super) fn parse_failure(block: &Block, deck: &mut Deck) -> InputResult<bool> {
-    match block.parts.get(1).map(String::as_str) {
-        Some("JOHNSON") => {}
-        Some("TAB") => {
-            let (mat_id, model) = super::failure_tab::read_fail_tab(block, deck)?;
-            deck.failures.push(FailureCard {
-                mat_id,
-                spec: FailureSpec {
-                    model,
-                    loc: block.loc.clone(),
-                },
-            });
-            return Ok(true);
-        }
+    let (mat_id, model) = match block.parts.get(1).map(String::as_str) {
+        Some("JOHNSON") => read_fail_johnson(block, deck)?,
+        Some("TAB") => super::failure_tab::read_fail_tab(block, deck)?,
+        Some("HASHIN") => read_fail_hashin(block)?,
         _ => return Ok(false),
-    }
+    };
+    deck.failures.push(FailureCard {
+        mat_id,
+        spec: FailureSpec {
+            model,
+            loc: block.loc.clone(),
+        },
+    });
+    Ok(true)
+}
+
+/// /FAIL/JOHNSON (the card of the module doc).
+fn read_fail_johnson(block: &Block, deck: &mut Deck) -> InputResult<(Id, FailureModel)> {
     let mat_id = header_id(block, 2, "mat_ID")?;
     header_id_opt(block, 3, "unit_ID")?;
     let mut cards = Cards::new(block);
@@ -81,14 +108,7 @@ pub(super) fn parse_failure(block: &Block, deck: &mut Deck) -> InputResult<bool>
         epsf_min,
         ixfem: if matches!(ixfem, 1 | 2) { ixfem } else { 0 },
     });
-    deck.failures.push(FailureCard {
-        mat_id,
-        spec: FailureSpec {
-            model,
-            loc: block.loc.clone(),
-        },
-    });
-    Ok(true)
+    Ok((mat_id, model))
 }
 
 /// The deck's materials with their failure cards attached (the curves of a
@@ -105,6 +125,7 @@ pub(super) fn materials_with_failures(deck: &Deck) -> Result<Vec<MaterialSpec>, 
         let kw = match f.spec.model {
             FailureModel::Johnson(_) => "/FAIL/JOHNSON",
             FailureModel::Tab(_) => "/FAIL/TAB",
+            FailureModel::Hashin(_) => "/FAIL/HASHIN",
         };
         let m = index.resolve(f.mat_id, &f.spec.loc, kw, "mat_ID")?;
         let mut spec = f.spec.clone();

@@ -29,6 +29,10 @@ pub(super) fn parse_material(block: &Block, deck: &mut Deck) -> InputResult<bool
         super::material_law62::parse_law62(block, deck)?;
         return Ok(true);
     }
+    if matches!(law, "LAW12" | "3D_COMP") {
+        super::material_law12::parse_law12(block, deck)?;
+        return Ok(true);
+    }
     if matches!(law, "LAW44" | "COWPER") {
         super::material_law44::parse_law44(block, deck)?;
         return Ok(true);

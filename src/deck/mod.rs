@@ -24,6 +24,7 @@ mod joint_props;
 pub mod keyword_policy;
 mod lines;
 mod list_end;
+mod material_law12;
 mod material_law21;
 mod material_law27;
 mod material_law36;

@@ -4,13 +4,13 @@
 //! Values are kept as written (0 = "default"); `to_model` resolves the
 //! defaults that depend on other cards (/DEF_SHELL, the material law).
 
-use super::fields::{zero_default, Cards};
+use super::fields::{zero_default, Card, Cards};
 use super::source::Block;
 use super::spring_props;
 use super::{header_id, header_id_opt, Deck, Id};
 use crate::model::{
     DefShell, DefSolid, Function, InputError, InputResult, Loc, PropertyKind, PropertySpec,
-    ShellProperty, SolidProperty,
+    ShellProperty, SolidOrtho, SolidProperty,
 };
 use serde::{Deserialize, Serialize};
 
@@ -71,6 +71,7 @@ pub(super) fn parse_property(block: &Block, deck: &mut Deck) -> InputResult<bool
         "TYPE2" | "TRUSS" => 2,
         "TYPE3" | "BEAM" => 3,
         "TYPE45" | "KJOINT2" => 45,
+        "TYPE6" | "SOL_ORTH" => 6,
         _ => return Ok(false),
     };
     let id = header_id(block, 2, "prop_ID")?;
@@ -97,6 +98,7 @@ pub(super) fn parse_property(block: &Block, deck: &mut Deck) -> InputResult<bool
         2 => PropertyKind::Truss(super::beam_props::read_truss(&mut cards)?),
         3 => PropertyKind::Beam(super::beam_props::read_beam(&mut cards)?),
         45 => PropertyKind::Joint(super::joint_props::read_joint(&mut cards)?),
+        6 => PropertyKind::Solid(read_solid_ortho(&mut cards)?),
         _ => PropertyKind::SpringBeam(spring_props::read_spring_beam(
             &mut cards,
             &mut deck.warnings,
@@ -156,14 +158,11 @@ fn read_shell(cards: &mut Cards) -> InputResult<ShellProperty> {
     Ok(p)
 }
 
-fn read_solid(cards: &mut Cards) -> InputResult<SolidProperty> {
-    // Isolid (1-10) Ismstr (11-20) Icpre (31-40) Itetra10 (41-50) Inpts (51-60) Itetra4 (61-70) Iframe (71-80) dn (81-100)
-    let c1 =
-        cards.next("the card with Isolid, Ismstr, Icpre, Itetra10, Inpts, Itetra4, Iframe, dn")?;
-    // qa (1-20) qb (21-40) h (41-60) LAMBDA_v (61-80) MU_v (81-100)
-    let c2 = cards.next("the card with qa, qb, h, LAMBDA_v, MU_v")?;
-    // dtmin (1-20) Istrain (21-30) Ihkt (31-40) — optional
-    let c3 = cards.next_opt();
+/// The cards /PROP/SOLID and /PROP/SOL_ORTH share: Isolid (1-10) Ismstr
+/// (11-20) Icpre (31-40) Itetra10 (41-50) Inpts (51-60) Itetra4 (61-70)
+/// Iframe (71-80) dn (81-100); qa (1-20) qb (21-40) h (41-60); and,
+/// optional, dtmin (1-20) Istrain (21-30).
+fn solid_cards(c1: &Card, c2: &Card, c_dt: Option<Card>) -> InputResult<SolidProperty> {
     let or = zero_default;
     let p = SolidProperty {
         isolid: c1.int(1, "Isolid", 0)?,
@@ -177,22 +176,73 @@ fn read_solid(cards: &mut Cards) -> InputResult<SolidProperty> {
         qa: or(c2.real(1, "qa", 0.0)?, 1.1),
         qb: or(c2.real(21, "qb", 0.0)?, 0.05),
         h: or(c2.real(41, "h", 0.0)?, 0.1),
-        lambda_v: c2.real(61, "LAMBDA_v", 0.0)?,
-        mu_v: c2.real(81, "MU_v", 0.0)?,
-        dtmin: match c3 {
+        lambda_v: 0.0,
+        mu_v: 0.0,
+        dtmin: match &c_dt {
             Some(c) => c.real(1, "dtmin", 0.0)?,
             None => 0.0,
         },
-        istrain: match c3 {
+        // Istrain selects the strain output only (research note
+        // law12_research.md §2.2).
+        istrain: match &c_dt {
             Some(c) => c.int(21, "Istrain", 0)?,
             None => 0,
         },
+        ortho: None,
     };
-    for (v, name, card) in [(p.qa, "qa", c2), (p.qb, "qb", c2), (p.h, "h", c2)] {
+    for (v, name) in [(p.qa, "qa"), (p.qb, "qb"), (p.h, "h")] {
         if v < 0.0 {
-            return Err(card.err(name, format!("{v}: expected a value >= 0")));
+            return Err(c2.err(name, format!("{v}: expected a value >= 0")));
         }
     }
+    Ok(p)
+}
+
+fn read_solid(cards: &mut Cards) -> InputResult<SolidProperty> {
+    let c1 =
+        cards.next("the card with Isolid, Ismstr, Icpre, Itetra10, Inpts, Itetra4, Iframe, dn")?;
+    // qa (1-20) qb (21-40) h (41-60) LAMBDA_v (61-80) MU_v (81-100)
+    let c2 = cards.next("the card with qa, qb, h, LAMBDA_v, MU_v")?;
+    // dtmin (1-20) Istrain (21-30) Ihkt (31-40) — optional
+    let c3 = cards.next_opt();
+    let mut p = solid_cards(&c1, &c2, c3)?;
+    p.lambda_v = c2.real(61, "LAMBDA_v", 0.0)?;
+    p.mu_v = c2.real(81, "MU_v", 0.0)?;
+    Ok(p)
+}
+
+/// /PROP/TYPE6 (/PROP/SOL_ORTH): the /PROP/SOLID cards with the
+/// orthotropic directions (research note `docs/notes/law28_sol_orth_research.md`
+/// §2.1; the same first card in the 2017 to 2022 layouts, Itetra10 and
+/// Itetra4 blank before 2021).
+fn read_solid_ortho(cards: &mut Cards) -> InputResult<SolidProperty> {
+    let c1 =
+        cards.next("the card with Isolid, Ismstr, Icpre, Itetra10, Inpts, Itetra4, Iframe, dn")?;
+    let c2 = cards.next("the card with qa, qb, h")?;
+    // Vx (1-20) Vy (21-40) Vz (41-60) skew_ID (61-70) Ip (71-80) Iorth (81-90)
+    let c3 = cards.next("the card with Vx, Vy, Vz, skew_ID, Ip, Iorth")?;
+    // phi (1-20)
+    let c4 = cards.next_opt();
+    // dt_min (1-20) Istrain (21-30) Ihkt (31-40)
+    let mut p = solid_cards(&c1, &c2, cards.next_opt())?;
+    let ip = c3.int(71, "Ip", 0)?;
+    if !matches!(ip, 0..=5 | 11..=13 | 20..=24) {
+        return Err(c3.err("Ip", format!("{ip}: expected 0 to 5, 11 to 13 or 20 to 24")));
+    }
+    p.ortho = Some(SolidOrtho {
+        v: [
+            c3.real(1, "Vx", 0.0)?,
+            c3.real(21, "Vy", 0.0)?,
+            c3.real(41, "Vz", 0.0)?,
+        ],
+        skew_id: c3.id_opt(61, "skew_ID")?,
+        ip,
+        iorth: c3.int(81, "Iorth", 0)?,
+        phi: match c4 {
+            Some(c) => c.real(1, "phi", 0.0)?,
+            None => 0.0,
+        },
+    });
     Ok(p)
 }
 

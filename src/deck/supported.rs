@@ -106,6 +106,17 @@ pub const SUPPORTED: &[Supported] = &[
         &["/FAIL/TAB/1"],
         "tabulated failure: ε_f(η) per strain rate (linear in ε̇), element-size and temperature factors, damage exponent n and Dcrit; card layout by input version (110, 120/130); shells (Ifail_sh 1, 2, 3 with P_thickfail; element deleted at once) and solids (Ifail_so 1, 2; no size factor); Ixfem refused; D (softening) read and, as in the reference engine, not applied",
     ),
+    s(
+        "/FAIL/HASHIN",
+        &["/FAIL/HASHIN/1"],
+        "Hashin composite criteria on solids with Ifail_so 0, which the reference reports and which change nothing in the solution (Ifail_so 1, 2: stress relaxation and deletion, and shells refused by name)",
+    ),
+    s(
+        "/MAT/LAW12 (/MAT/3D_COMP)",
+        &["/MAT/LAW12/1", "/MAT/3D_COMP/1"],
+        "orthotropic solid composite on /PROP/TYPE6 bricks: E11, E22, E33, nu, G (0 allowed), tension damage per direction (sigma_t, DELTA), Tsai-Wu plasticity with work hardening 1 + B Wp^n to fmax (the element deleted at fmax); internal energy without the bulk viscosity's work, as the reference (strain-rate term c refused by name)",
+    ),
+    s("/PROP/TYPE6 (/PROP/SOL_ORTH)", &["/PROP/TYPE6/1", "/PROP/SOL_ORTH/1"], "orthotropic solid sections on one-point bricks (Isolid 1, 2) and HEPH (24): Ip 0 (global axes), 1, 2, 3 (angle phi in an element plane), directions following the element; skews, Iorth 1, other Ip and other formulations refused by name; laws other than LAW12 refused there"),
     s("/PROP/TYPE1 (/PROP/SHELL)", &["/PROP/TYPE1/1", "/PROP/SHELL/1"], "shell sections: Ishell, Ismstr, Ithick, Iplas, N, thickness, hourglass coefficients"),
     s("/PROP/TYPE14 (/PROP/SOLID)", &["/PROP/TYPE14/1", "/PROP/SOLID/1"], "solid sections: Isolid 1, 2 (one point; Ismstr 10, total strain, with LAW62), 12 (S8), 14 (HA8), 17 (H8C; an input version before 2019 reads 12 as 17), Icpre and Inpts, hourglass coefficients, dtmin"),
     s("/PROP/TYPE4 (/PROP/SPRING)", &["/PROP/TYPE4/1", "/PROP/SPRING/1"], "axial springs: K, C, the force curve with hardening H = 0, 1, 2, 4, 5, 6, 7, 8 and its unloading curve, the rate terms A + B ln(δ̇/D) + E g(δ̇/F) and Hscale h(δ̇/F), failure bounds, Ileng (sensor refused)"),

@@ -57,6 +57,7 @@ use serde::{Deserialize, Serialize};
 /// co-rotational element frame.
 pub fn ha8_section(r: &ResolvedSolid, m: &Material) -> Result<SolidSection, String> {
     let isolid = r.isolid;
+    super::hex8::refuse_ortho(r, "the fully integrated bricks (Isolid 12, 14, 17)")?;
     if isolid == 14 && !matches!(r.inpts, 0 | 222) {
         return Err(format!(
             "Isolid = 14 with Inpts = {}: only the 2×2×2 rule (Inpts = 222) is computed",

@@ -75,16 +75,34 @@ pub struct HephState {
     pub vol0: f64,
     pub vol: f64,
     pub eps_dot: f64,
+    /// /PROP/TYPE6 sections: the directions in the element frame (constant:
+    /// the frame is co-rotational) and the law's point state.
+    #[serde(default)]
+    pub ortho: super::ortho::OrthoState,
 }
 
-pub fn heph_init(_sec: &SolidSection, x: &[[f64; 3]; 8]) -> HephState {
+pub fn heph_init(sec: &SolidSection, x: &[[f64; 3]; 8]) -> HephState {
     let vol = volume(x).unwrap_or(0.0);
+    let mut ortho = super::ortho::OrthoState::default();
+    if let Some(o) = &sec.ortho {
+        // The directions at t = 0 (element axes as Isolid 1), then in this
+        // element's co-rotational frame.
+        let e = super::ortho::element_axes(x);
+        let d = super::ortho::material_axes(&super::ortho::initial_gama(o, &e), &e);
+        let r = element_frame(x);
+        let (d1, d2) = (mat_vec(&r, d[0]), mat_vec(&r, d[1]));
+        ortho.gama = [d1[0], d1[1], d1[2], d2[0], d2[1], d2[2]];
+    }
     HephState {
         vol0: vol,
         vol,
+        ortho,
         ..Default::default()
     }
 }
+
+/// The material axes of a /PROP/TYPE6 element in its co-rotational frame.
+const LOCAL: [[f64; 3]; 3] = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
 
 /// The centre volume V = j_ξ·(j_η × j_ζ)/64 (exact for a parallelepiped).
 fn volume(x: &[[f64; 3]; 8]) -> Option<f64> {
@@ -183,7 +201,20 @@ pub fn heph_step(
         let temp = mat.temperature(st.eint / vol);
         let deps = [d[0], d[1], d[2], 2.0 * d[3], 2.0 * d[4], 2.0 * d[5]].map(|e| e * dt);
         let old = st.sig_l;
-        let wp = mat.solid_update_at(&mut st.sig_l, &mut st.eps_p, deps, st.eps_dot, temp);
+        let wp = match (&sec.ortho, mat.composite3d()) {
+            (Some(_), Some(law)) => {
+                let axes = super::ortho::material_axes(&st.ortho.gama, &LOCAL);
+                super::ortho::update(
+                    law,
+                    &axes,
+                    &mut st.sig_l,
+                    &mut st.eps_p,
+                    &mut st.ortho,
+                    deps,
+                )
+            }
+            _ => mat.solid_update_at(&mut st.sig_l, &mut st.eps_p, deps, st.eps_dot, temp),
+        };
         let w: f64 = (0..6).map(|k| 0.5 * (old[k] + st.sig_l[k]) * deps[k]).sum();
         let vm_vol: f64 = gm.vol_p.iter().sum();
         out.d_eint = w * vm_vol;
@@ -203,7 +234,10 @@ pub fn heph_step(
     let mut q = 0.0;
     if compress > 0.0 {
         q = super::hex8::bulk_viscosity(sec, st.vol0, vol, compress);
-        out.d_eint += q * compress * vol * dt;
+        // LAW12 books the law's work only (as `super::hex8`).
+        if mat.composite3d().is_none() {
+            out.d_eint += q * compress * vol * dt;
+        }
     }
     // Hourglass forces: F̂ = F J + c_v q̇ (note eq. 22), Q of eq. 24.
     let rho = mat.rho() * st.vol0 / vol;

@@ -54,6 +54,7 @@
 
 use crate::material::{FailAt, Failure, Material};
 use crate::model::ResolvedSolid;
+pub(crate) use crate::vec3::rotate_voigt;
 use serde::{Deserialize, Serialize};
 
 /// Resolved section data for one solid part (from [`ResolvedSolid`] + the part's [`Material`]).
@@ -75,6 +76,8 @@ pub struct SolidSection {
     pub failure: Option<Failure>,
     /// Icpre as the formulation uses it (HA8: 0, 1 or 2; 0 elsewhere).
     pub icpre: i64,
+    /// /PROP/TYPE6: the orthotropic directions (`super::ortho`).
+    pub ortho: Option<crate::model::SolidOrtho>,
 }
 
 fn check_ismstr(r: &ResolvedSolid) -> Result<i64, String> {
@@ -111,6 +114,16 @@ fn refuse_total_strain(m: &Material) -> Result<(), String> {
     Ok(())
 }
 
+/// /PROP/TYPE6 on a formulation that does not compute its directions.
+pub(crate) fn refuse_ortho(r: &ResolvedSolid, what: &str) -> Result<(), String> {
+    if r.ortho.is_some() {
+        return Err(format!(
+            "/PROP/TYPE6 (SOL_ORTH) on {what}: the orthotropic directions are computed on the one-point bricks (Isolid 1, 2) and HEPH (Isolid 24) only"
+        ));
+    }
+    Ok(())
+}
+
 fn dilatational_speed(m: &Material) -> f64 {
     let (e, nu) = (m.young(), m.poisson());
     let lam_2mu = e * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu));
@@ -138,6 +151,9 @@ impl SolidSection {
         m.check_supported()?;
         refuse_tension_damage(m)?;
         refuse_total_strain(m)?;
+        if let Some(why) = r.ortho.as_ref().and_then(super::ortho::refusal) {
+            return Err(why);
+        }
         Ok(SolidSection {
             isolid: r.isolid,
             ismstr,
@@ -148,6 +164,7 @@ impl SolidSection {
             c: dilatational_speed(m),
             failure: None,
             icpre: 0,
+            ortho: r.ortho.clone(),
         })
     }
 
@@ -164,6 +181,7 @@ impl SolidSection {
         m.check_supported()?;
         refuse_tension_damage(m)?;
         refuse_total_strain(m)?;
+        refuse_ortho(r, "tetrahedra")?;
         Ok(SolidSection {
             isolid: 0,
             ismstr,
@@ -174,6 +192,7 @@ impl SolidSection {
             c: dilatational_speed(m),
             failure: None,
             icpre: 0,
+            ortho: None,
         })
     }
 }
@@ -206,6 +225,9 @@ pub struct Hex8State {
     pub eps_dot: f64,
     /// The integration point failed: the element is deleted.
     pub deleted: bool,
+    /// /PROP/TYPE6 sections: the directions and the law's point state.
+    #[serde(default)]
+    pub ortho: super::ortho::OrthoState,
 }
 
 /// What one element step returns.
@@ -400,6 +422,7 @@ pub(crate) fn solid_point_update(
     hist: &mut f64,
     eps_dot: &mut f64,
     eint: f64,
+    ortho: Option<(&[[f64; 3]; 3], &mut super::ortho::OrthoState)>,
 ) -> SolidPoint {
     let mat = &sec.material;
     let d = [
@@ -440,7 +463,12 @@ pub(crate) fn solid_point_update(
             2.0 * d[5] * dt,
         ];
         let ep0 = *eps_p;
-        let wp = mat.solid_update_volumetric(sig, eps_p, hist, deps, *eps_dot, temp, vol0 / vol);
+        let law12 = mat.composite3d();
+        let wp = match (ortho, law12) {
+            // The orthotropic law in its material axes (`super::ortho`).
+            (Some((axes, os)), Some(law)) => super::ortho::update(law, axes, sig, eps_p, os, deps),
+            _ => mat.solid_update_volumetric(sig, eps_p, hist, deps, *eps_dot, temp, vol0 / vol),
+        };
         out.failed = mat.has_failed(*eps_p);
         if let (Some(f), false) = (&sec.failure, out.failed) {
             let tstar = mat.homologous_temperature(temp);
@@ -465,7 +493,12 @@ pub(crate) fn solid_point_update(
     let mut q = 0.0;
     if compress > 0.0 && !out.failed {
         q = bulk_viscosity(sec, vol0, vol, compress);
-        out.d_eint += q * compress * vol_mid * dt;
+        // LAW12 books the law's work only: its bulk viscosity's work is
+        // outside the internal energy, as the reference's (note
+        // law12_research.md §1.3, step 10).
+        if sec.material.composite3d().is_none() {
+            out.d_eint += q * compress * vol_mid * dt;
+        }
     }
     out.sig_f = *sig;
     for k in 0..3 {
@@ -479,22 +512,6 @@ pub(crate) fn solid_point_update(
 pub(crate) fn solid_time_step(sec: &SolidSection, lc: f64, compress: f64) -> f64 {
     let q = sec.qb * sec.c + lc * sec.qa * sec.qa * compress;
     lc / (q + (q * q + sec.c * sec.c).sqrt())
-}
-
-/// R σ Rᵀ of a Voigt stress [σxx σyy σzz σxy σyz σzx].
-pub(crate) fn rotate_voigt(r: &[[f64; 3]; 3], s: &[f64; 6]) -> [f64; 6] {
-    let m = [[s[0], s[3], s[5]], [s[3], s[1], s[4]], [s[5], s[4], s[2]]];
-    let mut o = [[0.0; 3]; 3];
-    for i in 0..3 {
-        for j in 0..3 {
-            for k in 0..3 {
-                for l in 0..3 {
-                    o[i][j] += r[i][k] * m[k][l] * r[j][l];
-                }
-            }
-        }
-    }
-    [o[0][0], o[1][1], o[2][2], o[0][1], o[1][2], o[2][0]]
 }
 
 /// Von Mises stress of a Voigt stress.
@@ -515,12 +532,18 @@ pub(crate) fn stress_force(s: &[f64; 6], b: [f64; 3]) -> [f64; 3] {
     ]
 }
 
-/// Element state at t = 0 (stress-free).
-pub fn hex8_init(_sec: &SolidSection, x: &[[f64; 3]; 8]) -> Hex8State {
+/// Element state at t = 0 (stress-free; a /PROP/TYPE6 section's
+/// directions in the element axes).
+pub fn hex8_init(sec: &SolidSection, x: &[[f64; 3]; 8]) -> Hex8State {
     let (_, vol) = hex_gradient(x);
+    let mut ortho = super::ortho::OrthoState::default();
+    if let Some(o) = &sec.ortho {
+        ortho.gama = super::ortho::initial_gama(o, &super::ortho::element_axes(x));
+    }
     Hex8State {
         vol0: vol,
         vol,
+        ortho,
         ..Default::default()
     }
 }
@@ -644,6 +667,11 @@ pub fn hex8_step(
         return out;
     }
     let l = velocity_gradient(v, &bm, volm);
+    // /PROP/TYPE6: the material axes follow the element axes (Iframe 1).
+    let axes = sec
+        .ortho
+        .as_ref()
+        .map(|_| super::ortho::material_axes(&st.ortho.gama, &super::ortho::element_axes(x)));
     let p = solid_point_update(
         sec,
         &l,
@@ -657,6 +685,7 @@ pub fn hex8_step(
         &mut st.hist,
         &mut st.eps_dot,
         st.eint,
+        axes.as_ref().map(|a| (a, &mut st.ortho)),
     );
     st.vol = vol;
     st.eint += p.d_eint;
@@ -711,6 +740,7 @@ pub(crate) mod tests {
             h,
             dtmin: 0.0,
             dn: 0.0,
+            ortho: None,
         }
     }
 

@@ -70,6 +70,7 @@ pub fn total_section(r: &ResolvedSolid, m: &Material) -> Result<SolidSection, St
         ));
     }
     m.check_supported()?;
+    super::hex8::refuse_ortho(r, "the total-strain brick (Ismstr 10)")?;
     Ok(SolidSection {
         isolid: r.isolid,
         ismstr: 10,
@@ -80,6 +81,7 @@ pub fn total_section(r: &ResolvedSolid, m: &Material) -> Result<SolidSection, St
         c: (law.rest_rho_c2() / m.rho_ref()).sqrt(),
         failure: None,
         icpre: 0,
+        ortho: None,
     })
 }
 

@@ -13,6 +13,7 @@ pub mod heph;
 pub mod hex8;
 pub mod hex8_total;
 pub mod joint;
+pub mod ortho;
 pub mod shell3;
 pub mod shell4;
 pub mod shell4_qbat;

@@ -160,6 +160,7 @@ pub fn tet4_step(
         &mut st.hist,
         &mut st.eps_dot,
         st.eint,
+        None,
     );
     st.vol = vol;
     st.eint += p.d_eint;

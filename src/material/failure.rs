@@ -15,6 +15,11 @@ pub enum Failure {
     Johnson(FailJohnson),
     /// /FAIL/TAB.
     Tab(FailTab),
+    /// /FAIL/HASHIN with Ifail_so 0 on solids: the reference reports the
+    /// criteria and changes nothing in the solution (research note
+    /// `docs/notes/law12_research.md` §3.3); its relaxation and deletion
+    /// (Ifail_so 1, 2) and shells are refused by name.
+    Hashin(crate::model::HashinFailure),
 }
 
 impl Failure {
@@ -26,6 +31,7 @@ impl Failure {
             [one] => match &one.model {
                 FailureModel::Johnson(j) => Ok(Some(Failure::Johnson(FailJohnson::new(j)?))),
                 FailureModel::Tab(t) => Ok(Some(Failure::Tab(FailTab::new(t)?))),
+                FailureModel::Hashin(h) => Ok(Some(Failure::Hashin(h.clone()))),
             },
             _ => Err(format!(
                 "{} failure models on one material: only one /FAIL card per material is computed",
@@ -44,6 +50,7 @@ impl Failure {
         match self {
             Failure::Johnson(f) => f.solid(sig, dmg, dep, at.rate, at.tstar),
             Failure::Tab(f) => f.solid(sig, dmg, dep, at),
+            Failure::Hashin(_) => false,
         }
     }
 
@@ -53,6 +60,10 @@ impl Failure {
             Failure::Tab(f) if f.has_size_function() => Some(
                 "/FAIL/TAB with an element-size function (fct_IDel, Fscale_el) on solids is not computed yet (shells only)".into(),
             ),
+            Failure::Hashin(h) if h.ifail_so != 0 => Some(format!(
+                "/FAIL/HASHIN with Ifail_so = {}: the stress relaxation and deletion after failure are not computed yet (Ifail_so = 0, which reports the criteria only, is)",
+                h.ifail_so
+            )),
             _ => None,
         }
     }
@@ -62,7 +73,7 @@ impl Failure {
     pub fn shell(&self) -> Option<&FailTab> {
         match self {
             Failure::Tab(f) => Some(f),
-            Failure::Johnson(_) => None,
+            Failure::Johnson(_) | Failure::Hashin(_) => None,
         }
     }
 
@@ -72,6 +83,9 @@ impl Failure {
             Failure::Johnson(_) => Some(
                 "/FAIL/JOHNSON on shell elements is not computed yet (solids only; /FAIL/TAB works on both)".into(),
             ),
+            Failure::Hashin(_) => {
+                Some("/FAIL/HASHIN on shell elements is not computed yet".into())
+            }
             Failure::Tab(_) => None,
         }
     }

@@ -12,6 +12,7 @@
 
 use super::law::{ElasticConstants, Law};
 use super::law1::Law1;
+use super::law12::Law12;
 use super::law2::Law2;
 use super::law21::Law21;
 use super::law27::Law27;
@@ -78,6 +79,8 @@ registry! {
     BrittlePlastic(Law27),
     /// LAW62: hyper-visco-elastic (Ogden-type with a Prony series; bricks).
     ViscoHyperelastic(Law62),
+    /// LAW12: orthotropic composite solid (Tsai-Wu; /PROP/TYPE6 bricks).
+    Composite3d(Law12),
 }
 
 /// The name of law number `number` when the registry has it; otherwise the
@@ -233,6 +236,14 @@ impl Material {
     /// [`Law::total_strain`]).
     pub fn total_strain(&self) -> bool {
         each_law!(self, l => l.total_strain())
+    }
+
+    /// LAW12's parameters when this is LAW12.
+    pub fn composite3d(&self) -> Option<&Law12> {
+        match self {
+            Material::Composite3d(l) => Some(l),
+            _ => None,
+        }
     }
 
     /// LAW62's parameters when this is LAW62.

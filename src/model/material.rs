@@ -39,6 +39,20 @@ pub enum FailureModel {
     /// /FAIL/TAB: tabulated failure strain ε_f(η, ε̇)·g(L/L_ref)·h(T*),
     /// damage D = Σ w(D)·Δε_p/ε_f, the point fails at Dcrit.
     Tab(TabFailure),
+    /// /FAIL/HASHIN: the Hashin criteria of unidirectional (model 1) or
+    /// fabric (model 2) composites.
+    Hashin(HashinFailure),
+}
+
+/// /FAIL/HASHIN, as the card gives it (research note
+/// `docs/notes/law12_research.md` §3).
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct HashinFailure {
+    pub iform: i64,
+    pub ifail_sh: i64,
+    /// Solids: 0 = the criteria are reported only, 1 or 2 = the stress
+    /// relaxes and the element is deleted.
+    pub ifail_so: i64,
 }
 
 /// /FAIL/TAB parameters (reference guide /FAIL/TAB; research note
@@ -123,6 +137,58 @@ pub enum MaterialLaw {
     /// LAW62 (/MAT/VISC_HYP): Ogden-type (Hill/Storåkers) hyperelasticity
     /// on the full principal stretches with a Prony series.
     ViscoHyperelastic(ViscoHyperelastic),
+    /// LAW12 (/MAT/3D_COMP): orthotropic solid composite, Tsai-Wu
+    /// plasticity with work hardening, tension damage per direction.
+    Composite3d(Composite3d),
+}
+
+/// /MAT/LAW12 parameters in the material frame (directions 1, 2, 3; shears
+/// 12, 23, 31), defaults resolved as the reference starter (research note
+/// `docs/notes/law12_research.md` §1.2): blank strengths are 1e20, σ_t2,3
+/// → σ_t1, DELTA 0 → 0.05, Wplaref 0 → 1, n 0 → 1, fmax 0 → 1e10, ICC 0
+/// → 1.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct Composite3d {
+    pub e: [f64; 3],
+    /// ν12, ν23, ν31.
+    pub nu: [f64; 3],
+    /// G12, G23, G31.
+    pub g: [f64; 3],
+    /// Tension-damage thresholds and the damage increment.
+    pub sig_t: [f64; 3],
+    pub delta: f64,
+    /// Tsai-Wu limit 1 + B·Wpⁿ (Wp the plastic work over Wplaref), capped
+    /// at fmax.
+    pub b: f64,
+    pub n: f64,
+    pub fmax: f64,
+    pub wplaref: f64,
+    /// Yield stresses in tension and compression: 1, 2, 3, 12, 23, 31.
+    pub yt: [f64; 6],
+    pub yc: [f64; 6],
+    /// Strain-rate term c, reference rate and ICC.
+    pub c: f64,
+    pub eps_rate0: f64,
+    pub icc: i64,
+}
+
+impl Composite3d {
+    /// The normal compliance C11 = 1/E11, C12 = −ν12/E11, C13 = −ν31/E33,
+    /// C23 = −ν23/E22 (symmetric; note §1.2).
+    pub fn compliance(&self) -> [[f64; 3]; 3] {
+        let [e1, e2, e3] = self.e;
+        let [n12, n23, n31] = self.nu;
+        [
+            [1.0 / e1, -n12 / e1, -n31 / e3],
+            [-n12 / e1, 1.0 / e2, -n23 / e2],
+            [-n31 / e3, -n23 / e2, 1.0 / e3],
+        ]
+    }
+
+    /// The normal stiffness D = C⁻¹; None when C is not positive.
+    pub fn stiffness(&self) -> Option<[[f64; 3]; 3]> {
+        crate::vec3::inverse_positive(&self.compliance())
+    }
 }
 
 /// /MAT/LAW62 parameters (reference guide /MAT/LAW62; research note

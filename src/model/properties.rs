@@ -95,6 +95,9 @@ pub struct ResolvedSolid {
     /// Hourglass viscous coefficient of HEPH (Isolid 24) as given (0 blank).
     #[serde(default)]
     pub dn: f64,
+    /// The orthotropic directions of a /PROP/TYPE6 section.
+    #[serde(default)]
+    pub ortho: Option<super::SolidOrtho>,
 }
 
 /// Isolid 0 → /DEF_SOLID → 1; Ismstr → 4; Iframe → 1; Itetra4 → 1000;
@@ -112,5 +115,6 @@ pub fn resolve_solid(p: &SolidProperty, d: Option<&DefSolid>) -> ResolvedSolid {
         h: p.h,
         dtmin: p.dtmin,
         dn: p.dn,
+        ortho: p.ortho.clone(),
     }
 }

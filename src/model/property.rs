@@ -183,6 +183,9 @@ pub struct SolidProperty {
     pub mu_v: f64,
     pub dtmin: f64,
     pub istrain: i64,
+    /// /PROP/TYPE6 (SOL_ORTH): the orthotropic directions (None: TYPE14).
+    #[serde(default)]
+    pub ortho: Option<SolidOrtho>,
 }
 
 /// One degree of freedom of a spring property: the three cards
@@ -325,4 +328,18 @@ pub struct DefSolid {
     pub ismstr: i64,
     pub istrain: i64,
     pub iframe: i64,
+}
+
+/// The orthotropic directions of a /PROP/TYPE6 (/PROP/SOL_ORTH) solid
+/// (research note `docs/notes/law28_sol_orth_research.md` §2): Ip 1, 2, 3
+/// put direction 1 at φ in the element's (1,2), (2,3) or (3,1) plane; Ip 0
+/// takes the skew's X and Y axes.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct SolidOrtho {
+    pub v: [f64; 3],
+    pub skew_id: super::Id,
+    pub ip: i64,
+    pub iorth: i64,
+    /// φ in degrees.
+    pub phi: f64,
 }

@@ -461,6 +461,7 @@ impl RunFile {
                     MaterialLaw::DruckerPrager(_) => "LAW21 Drucker-Prager",
                     MaterialLaw::BrittlePlastic(_) => "LAW27 brittle plastic",
                     MaterialLaw::ViscoHyperelastic(_) => "LAW62 visco-hyperelastic",
+                    MaterialLaw::Composite3d(_) => "LAW12 orthotropic composite (Tsai-Wu)",
                 })
             })
             .collect();

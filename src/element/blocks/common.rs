@@ -5,6 +5,7 @@
 use super::ElemStep;
 use crate::domain::LocalElements;
 use crate::element::hex8::Hex8State;
+use crate::element::hex8::SolidSection;
 use crate::element::shell3::Shell3State;
 use crate::element::shell4::Shell4State;
 use crate::element::tet4::Tet4State;
@@ -125,3 +126,37 @@ impl HourglassEnergy for crate::element::heph::HephState {
 pub(super) fn hourglass_of<S: HourglassEnergy>(s: &S) -> f64 {
     s.hourglass_energy()
 }
+
+/// The nodal stiffness a solid gives each of its corners for /DT/NODA/CST
+/// (None: the formulation does not give it and the run refuses the option
+/// by name). The one-point bricks: K = ρ₀V₀/(4Δt_e²) with Δt_e their
+/// unscaled element step (without the compression term), so that a node of
+/// mass ρ₀V₀/8 gets √(2m/K) = Δt_e (research note law12_research.md §2.3,
+/// the reference's STI = ρV/Δt² spread as 2·STI/8).
+pub(super) trait SolidNodalStiffness {
+    fn corner_stiffness(&self, _sec: &SolidSection, _x: &[[f64; 3]]) -> Option<f64> {
+        None
+    }
+}
+
+fn one_point_stiffness(sec: &SolidSection, x: &[[f64; 3]], vol0: f64) -> Option<f64> {
+    let x: &[[f64; 3]; 8] = x.try_into().ok()?;
+    let (_, vol) = crate::element::hex8::hex_gradient(x);
+    let lc = vol / crate::element::hex8::hex_max_face_area(x);
+    let dt = crate::element::hex8::solid_time_step(sec, lc, 0.0);
+    (dt > 0.0).then(|| sec.material.rho() * vol0 / (4.0 * dt * dt))
+}
+
+impl SolidNodalStiffness for crate::element::hex8::Hex8State {
+    fn corner_stiffness(&self, sec: &SolidSection, x: &[[f64; 3]]) -> Option<f64> {
+        one_point_stiffness(sec, x, self.vol0)
+    }
+}
+impl SolidNodalStiffness for crate::element::heph::HephState {
+    fn corner_stiffness(&self, sec: &SolidSection, x: &[[f64; 3]]) -> Option<f64> {
+        one_point_stiffness(sec, x, self.vol0)
+    }
+}
+impl SolidNodalStiffness for crate::element::tet4::Tet4State {}
+impl SolidNodalStiffness for crate::element::ha8::Ha8State {}
+impl SolidNodalStiffness for crate::element::hex8_total::Hex8TotalState {}

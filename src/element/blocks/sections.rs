@@ -132,6 +132,17 @@ pub(super) fn solid_sections(
             return Err(format!("{}: {why}", card.loc));
         }
         let mut section = new_section(prop, &material)?;
+        match (section.ortho.is_some(), material.composite3d().is_some()) {
+            (true, false) => return Err(format!(
+                "/MAT/LAW{} on /PROP/TYPE6 (SOL_ORTH): an isotropic law kept in the element's frame is not computed yet (the engine computes /MAT/LAW12 there)",
+                material.law_number()
+            )),
+            (false, true) => return Err(format!(
+                "{}: /MAT/LAW12 needs the orthotropic directions of /PROP/TYPE6 (SOL_ORTH)",
+                card.loc
+            )),
+            _ => {}
+        }
         section.failure = Failure::of_material(&card.failures)?;
         if let (Some(f), Some(spec)) = (&section.failure, card.failures.first()) {
             if let Some(why) = f.solid_refusal() {

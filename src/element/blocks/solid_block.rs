@@ -90,6 +90,38 @@ macro_rules! solid_block {
             fn steps(&self) -> &[ElemStep] {
                 &self.steps
             }
+            fn nodal_stiffness(&self, x: &[[f64; 3]], contrib: &mut [[f64; SLOT]]) -> bool {
+                use super::common::SolidNodalStiffness;
+                let (le, sections, section) = (&self.le, &self.sections, &self.section);
+                let ks: Vec<Option<f64>> = self
+                    .state
+                    .par_iter()
+                    .zip(self.alive.par_iter())
+                    .enumerate()
+                    .map(|(e, (st, alive))| {
+                        let k = st.corner_stiffness(
+                            &sections[section[e] as usize],
+                            &gather::<$nn>(le, e, x),
+                        );
+                        if *alive {
+                            k
+                        } else {
+                            k.map(|_| 0.0)
+                        }
+                    })
+                    .collect();
+                if ks.iter().any(Option::is_none) {
+                    return false;
+                }
+                contrib
+                    .par_chunks_mut($nn)
+                    .zip(ks.par_iter())
+                    .for_each(|(c, k)| {
+                        let k = k.unwrap_or(0.0);
+                        c.iter_mut().for_each(|s| *s = [k, 0.0, 0.0, 0.0, 0.0, 0.0]);
+                    });
+                true
+            }
             fn settle(&mut self) -> Option<(u32, &'static str)> {
                 settle_common(
                     &mut self.alive,
