@@ -209,9 +209,18 @@ fn rigid_plate_with(tag: &str, loads: &[&str]) -> Vec<Vec<f64>> {
 /// `rigid_plate_with`, the card giving the body the added inertia Jxx = Jyy
 /// = Jzz = `j` (at its main node).
 fn rigid_plate_inertia(tag: &str, j: f64, loads: &[&str]) -> Vec<Vec<f64>> {
+    rigid_plate_body(tag, j, 0, loads)
+}
+
+/// `rigid_plate_inertia` with the card's ISPHER; the run writes its
+/// energies to `tmp(tag)/energies.csv`.
+fn rigid_plate_body(tag: &str, j: f64, ispher: i64, loads: &[&str]) -> Vec<Vec<f64>> {
     let src = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("decks/free_plate");
     let dir = tmp(tag);
     let inertia = format!("{j:>20}{j:>20}{j:>20}");
+    let rbody = format!(
+        "      1000         0         0{ispher:>10}                 0.5         7         0         0         0"
+    );
     let starter = std::fs::read_to_string(src.join("free_plate_0000.rad")).unwrap();
     let head = &starter[..starter.find("/INIVEL/TRA/1").unwrap()];
     let body: [&str; 17] = [
@@ -222,7 +231,7 @@ fn rigid_plate_inertia(tag: &str, j: f64, loads: &[&str]) -> Vec<Vec<f64>> {
         "         1",
         "/RBODY/1",
         "plate as one rigid body",
-        "      1000         0         0         0                 0.5         7         0         0         0",
+        &rbody,
         &inertia,
         "                   0                   0                   0",
         "/FUNCT/3",
@@ -250,6 +259,8 @@ fn rigid_plate_inertia(tag: &str, j: f64, loads: &[&str]) -> Vec<Vec<f64>> {
         "--quiet",
         "--final-state",
         fs.to_str().unwrap(),
+        "--energies",
+        dir.join("energies.csv").to_str().unwrap(),
     ]);
     common::ok(&out, "run");
     std::fs::read_to_string(&fs)
@@ -409,6 +420,38 @@ fn an_initial_spin_on_a_rigid_bodys_main_node_spins_the_body() {
             (speed - omega * r).abs() < 1e-4 * omega * r.max(1.0),
             "node {}",
             c[0]
+        );
+    }
+}
+
+/// A spinning rigid body's kinetic energy is its main node's, as the
+/// reference lists it: K-ENERGY T ½Mv² of its centre (0 here) and K-ENERGY R
+/// ½ωᵀJω with the inertia its motion uses (ISPHER 1: the trace over 3), its
+/// nodes not counted again (QA RESSORT_kjoint2: K-ENERGY R 33.54). Free
+/// spin about a principal axis: both stay as they started.
+#[test]
+fn a_spinning_rigid_bodys_energy_is_its_own_not_its_nodes() {
+    let spin = [
+        "/INIVEL/ROT/9",
+        "spin about z",
+        "                   0                   0                0.01         8         0",
+    ];
+    let tag = "rbody-spin-energy";
+    rigid_plate_body(tag, 0.0, 1, &spin);
+    let (head, rows) = common::read_csv(&tmp(tag).join("energies.csv"));
+    let col = |name: &str| head.iter().position(|h| h == name).unwrap();
+    let (kin, rot) = (col("kinetic"), col("rotational"));
+    let r0 = rows[0][rot];
+    assert!(r0 > 0.0, "rotational energy {r0}");
+    for r in &rows {
+        assert!(
+            r[kin].abs() <= 1e-12 * r0,
+            "the nodes' spin counted as translational energy: {r:?}"
+        );
+        assert!(
+            (r[rot] - r0).abs() <= 1e-9 * r0,
+            "rotational {} vs {r0}",
+            r[rot]
         );
     }
 }

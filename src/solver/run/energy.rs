@@ -5,11 +5,14 @@ use super::setup::{Ctx, State};
 use crate::kinematics::rigid_body::RigidBodyState;
 use crate::parallel::exact_sum::{sum_over_ranks, ExactSum};
 
-/// Translational and rotational kinetic energy (owned nodes, rigid-body
-/// main masses once; rigid-body main nodes and tied secondary nodes skip
-/// the translational energy), with the moving rigid walls' own kinetic
-/// energy (free or driven) in the translational one, as the Radioss
-/// listing counts it.
+/// Translational and rotational kinetic energy (owned nodes; tied secondary
+/// nodes skip the translational energy), with the moving rigid walls' own
+/// kinetic energy (free or driven) in the translational one, as the Radioss
+/// listing counts it. A rigid body counts as its main node does in the
+/// reference: ½Mv² of its centre in K-ENERGY T and ½ωᵀJω of its inertia
+/// (the one its motion uses: with the card's J, ICOG 3 or ISPHER 1) in
+/// K-ENERGY R, its nodes not again (QA RESSORT_kjoint2: K-ENERGY R
+/// ½·670800·0.01² of a spinning body of brick nodes).
 pub(super) fn kinetic(
     cx: &Ctx,
     v: &[[f64; 3]],
@@ -21,26 +24,21 @@ pub(super) fn kinetic(
     let (owned, skip) = (&cx.owned, &cx.ke_skip);
     let mut e = [ExactSum::default(); 2];
     for l in 0..v.len() {
-        if owned[l] && !skip[l] {
+        if !owned[l] || cx.in_body[l] {
+            continue;
+        }
+        if !skip[l] {
             e[0].add(0.5 * mass[l] * (v[l][0] * v[l][0] + v[l][1] * v[l][1] + v[l][2] * v[l][2]));
         }
-        if owned[l] {
-            e[1].add(
-                0.5 * inertia[l]
-                    * (vr[l][0] * vr[l][0] + vr[l][1] * vr[l][1] + vr[l][2] * vr[l][2]),
-            );
-        }
+        e[1].add(
+            0.5 * inertia[l] * (vr[l][0] * vr[l][0] + vr[l][1] * vr[l][1] + vr[l][2] * vr[l][2]),
+        );
     }
     for (b, lb) in cx.local_bodies.iter().enumerate() {
         if lb.main_local.is_some() {
-            let vb = bodies[b].v;
-            e[0].add(0.5 * lb.main_mass * (vb[0] * vb[0] + vb[1] * vb[1] + vb[2] * vb[2]));
-            // The inertia the card adds (Jxx … Jxz), turned with the body;
-            // its nodes' own rotational energy is in the nodal sums above.
-            e[1].add(added_rotational(
-                &cx.g.rigid_bodies[b].card.inertia,
-                &bodies[b],
-            ));
+            let (vb, m) = (bodies[b].v, bodies[b].mass);
+            e[0].add(0.5 * m * (vb[0] * vb[0] + vb[1] * vb[1] + vb[2] * vb[2]));
+            e[1].add(bodies[b].rotational_energy());
         }
     }
     if cx.world.rank() == 0 {
@@ -52,23 +50,6 @@ pub(super) fn kinetic(
     }
     sum_over_ranks(cx.world, &mut e);
     (e[0].value(), e[1].value())
-}
-
-/// ½ ωᵀ (R J Rᵀ) ω of a body's added inertia J (xx, yy, zz, xy, yz, xz).
-fn added_rotational(j: &[f64; 6], body: &RigidBodyState) -> f64 {
-    if j.iter().all(|&x| x == 0.0) {
-        return 0.0;
-    }
-    let w = body.omega;
-    // ω in the body's initial axes: Rᵀω.
-    let r = &body.rot;
-    let wb: [f64; 3] = std::array::from_fn(|i| r[0][i] * w[0] + r[1][i] * w[1] + r[2][i] * w[2]);
-    let jw = [
-        j[0] * wb[0] + j[3] * wb[1] + j[5] * wb[2],
-        j[3] * wb[0] + j[1] * wb[1] + j[4] * wb[2],
-        j[5] * wb[0] + j[4] * wb[1] + j[2] * wb[2],
-    ];
-    0.5 * (wb[0] * jw[0] + wb[1] * jw[1] + wb[2] * jw[2])
 }
 
 /// The kinetic energies at t^n: from `State::at_n` when the cycle has

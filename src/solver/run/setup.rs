@@ -23,8 +23,6 @@ pub(super) struct LocalBody {
     /// (local node, global node) of the secondary nodes this rank holds (the main node is `main_local`).
     pub members: Vec<(u32, u32)>,
     pub main_local: Option<u32>,
-    /// Card MASS + main node's own mass: what the main node carries.
-    pub main_mass: f64,
     /// The main node's /BCS (fixed degrees of freedom, global frame) and
     /// /IMPVEL cards (indices into `GlobalData::imposed_velocities`): they
     /// act on the body, as in Radioss.
@@ -290,7 +288,7 @@ pub(super) fn context<'a>(
 /// Which local nodes are rigid-body main nodes, the bodies this rank holds,
 /// and the kinetic-energy masks that follow.
 fn rigid_body_roles(cx: &mut Ctx) {
-    let (g, sd, n) = (cx.g, cx.sd, cx.n);
+    let (g, n) = (cx.g, cx.n);
     for rb in &g.rigid_bodies {
         let mut members: Vec<(u32, u32)> = rb
             .secondary_nodes
@@ -324,7 +322,6 @@ fn rigid_body_roles(cx: &mut Ctx) {
         cx.local_bodies.push(LocalBody {
             members,
             main_local,
-            main_mass: rb.card.mass + main_local.map(|l| sd.mass[l as usize]).unwrap_or(0.0),
             main_fixed,
             main_impvel,
             main_impdisp,
