@@ -3,7 +3,7 @@
 //! nodes (their masses, inertias and arms set its reduced mass, its
 //! automatic stiffness and its step).
 
-use super::common::{decode_state, gather, settle_common};
+use super::common::{decode_state, gather};
 use super::{Block, BlockContext, BlockInput, ElemOut, ElemRow, ElemStep};
 use crate::domain::LocalElements;
 use crate::element::joint::{Joint, JointState, Side};
@@ -12,23 +12,49 @@ use crate::element::SLOT;
 use crate::model::{ElementKind, PropertyKind, RigidBody};
 use crate::vec3::{dot, sub};
 use rayon::prelude::*;
+use std::collections::HashMap;
 
 pub struct JointBlock {
     le: LocalElements,
     joints: Vec<Joint>,
     state: Vec<JointState>,
-    alive: Vec<bool>,
     steps: Vec<ElemStep>,
+}
+
+/// Where a node stands in the rigid bodies: the main node of body b, or a
+/// secondary node of body b.
+#[derive(Clone, Copy)]
+enum InBody {
+    Main,
+    Secondary(usize),
+}
+
+/// Every body node's place, built once for the block.
+fn body_nodes(bodies: &[RigidBody]) -> HashMap<u32, InBody> {
+    let mut map = HashMap::new();
+    for (b, body) in bodies.iter().enumerate() {
+        for &n in &body.secondary_nodes {
+            map.entry(n).or_insert(InBody::Secondary(b));
+        }
+    }
+    for body in bodies {
+        map.insert(body.main_node, InBody::Main);
+    }
+    map
 }
 
 /// The side of a joint whose node is `node` (global index) at `x`: the
 /// rigid body holding it as a secondary node.
-fn side_of(bodies: &[RigidBody], node: u32, x: [f64; 3]) -> Result<Side, String> {
-    if bodies.iter().any(|b| b.main_node == node) {
-        return Err("a joint node is the main node of a rigid body: expected secondary nodes of two rigid bodies".into());
-    }
-    let Some(b) = bodies.iter().find(|b| b.secondary_nodes.contains(&node)) else {
-        return Err("a joint node outside a rigid body is not computed yet: expected secondary nodes of two rigid bodies".into());
+fn side_of(
+    bodies: &[RigidBody],
+    of_node: &HashMap<u32, InBody>,
+    node: u32,
+    x: [f64; 3],
+) -> Result<Side, String> {
+    let b = match of_node.get(&node) {
+        Some(InBody::Secondary(b)) => &bodies[*b],
+        Some(InBody::Main) => return Err("a joint node is the main node of a rigid body: expected secondary nodes of two rigid bodies".into()),
+        None => return Err("a joint node outside a rigid body is not computed yet: expected secondary nodes of two rigid bodies".into()),
     };
     let j = &b.inertia;
     let principal = nalgebra::Matrix3::new(j[0], j[3], j[5], j[3], j[1], j[4], j[5], j[4], j[2])
@@ -65,6 +91,7 @@ impl JointBlock {
                 node_global[n as usize]
             }
         };
+        let of_node = body_nodes(rigid_bodies);
         let n = le.global.len();
         let mut joints = Vec::with_capacity(n);
         let mut state = Vec::with_capacity(n);
@@ -75,7 +102,8 @@ impl JointBlock {
                 return Err(format!("/PROP/{}: not a KJOINT2 property", prop.card.id));
             };
             let xe = gather::<2>(&le, e, x);
-            let sides = [0, 1].map(|k| side_of(rigid_bodies, global(le.nodes[2 * e + k]), xe[k]));
+            let sides =
+                [0, 1].map(|k| side_of(rigid_bodies, &of_node, global(le.nodes[2 * e + k]), xe[k]));
             let [s1, s2] = sides;
             let d = sub(xe[1], xe[0]);
             let (s1, s2) = (s1?, s2?);
@@ -88,7 +116,6 @@ impl JointBlock {
             le,
             joints,
             state,
-            alive: vec![true; n],
             steps: vec![ElemStep::default(); n],
         })
     }
@@ -138,11 +165,12 @@ impl Block for JointBlock {
     fn steps(&self) -> &[ElemStep] {
         &self.steps
     }
+    /// A joint neither fails nor inverts: nothing to settle.
     fn settle(&mut self) -> Option<(u32, &'static str)> {
-        settle_common(&mut self.alive, &self.steps, &self.le, "")
+        None
     }
-    fn alive(&self, e: usize) -> bool {
-        self.alive[e]
+    fn alive(&self, _e: usize) -> bool {
+        true
     }
     fn rows(&self) -> Vec<ElemRow> {
         (0..self.le.global.len())
