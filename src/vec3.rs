@@ -39,6 +39,32 @@ pub fn norm(a: V3) -> f64 {
     dot(a, a).sqrt()
 }
 
+/// The Hughes-Winget rotation of the spin increment W Δt:
+/// Q = (I − ½ΔtW)⁻¹(I + ½ΔtW); `None` without spin.
+#[inline]
+pub fn spin_rotation(w: &[[f64; 3]; 3], dt: f64) -> Option<[[f64; 3]; 3]> {
+    // ω with W = [[0, −ω3, ω2], [ω3, 0, −ω1], [−ω2, ω1, 0]] · (scaled by ½Δt).
+    let h = 0.5 * dt;
+    let (o1, o2, o3) = (h * w[2][1], h * w[0][2], h * w[1][0]);
+    if o1 == 0.0 && o2 == 0.0 && o3 == 0.0 {
+        return None;
+    }
+    // Q = I + 2/(1+|ω|²) (Ω + Ω²), the Cayley transform of Ω = ½ΔtW.
+    let om = [[0.0, -o3, o2], [o3, 0.0, -o1], [-o2, o1, 0.0]];
+    let k = 2.0 / (1.0 + o1 * o1 + o2 * o2 + o3 * o3);
+    let mut q = [[0.0; 3]; 3];
+    for i in 0..3 {
+        for j in 0..3 {
+            let mut om2 = 0.0;
+            for m in 0..3 {
+                om2 += om[i][m] * om[m][j];
+            }
+            q[i][j] = if i == j { 1.0 } else { 0.0 } + k * (om[i][j] + om2);
+        }
+    }
+    Some(q)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -1743,3 +1743,46 @@ fn kjoint2_type_and_damping_are_checked_at_their_card() {
         );
     }
 }
+
+/// /MAT/LAW70: the number of loading curves and the order of their strain
+/// rates are checked at their card.
+#[test]
+fn law70_curves_are_checked_at_their_card() {
+    let curve = |rate: &str| i10(1) + &r20(rate) + &r20("1.0");
+    for (tag, nl, rates, line, field, phrases) in [
+        ("law70-nl", 0, &[][..], 5, "NL", &["0", "1 to 100"][..]),
+        (
+            "law70-rates",
+            2,
+            &["0.1", "0.1"][..],
+            7,
+            "strain rate",
+            &["0.1", "must increase"][..],
+        ),
+    ] {
+        let c = Case::new(tag);
+        let mut d = base_deck();
+        let at = line_no(&d, "/PART/1") - 1;
+        let mut card = vec![
+            s("/MAT/LAW70/9"),
+            s("foam"),
+            r20("5e-8"),
+            r20("0.01") + &r20("0") + &r20("10") + &r20("0.8"),
+            r20("0") + &i10(0) + &i10(nl) + &i10(0) + &i10(4),
+        ];
+        card.extend(rates.iter().map(|r| curve(r)));
+        for (k, l) in card.into_iter().enumerate() {
+            d.insert(at + k, l);
+        }
+        assert_error(
+            &c.check(&d),
+            Expect {
+                file: DECK,
+                line: at + line,
+                keyword: "/MAT/LAW70/9",
+                field,
+                phrases,
+            },
+        );
+    }
+}

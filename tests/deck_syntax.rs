@@ -462,11 +462,11 @@ fn bcs_trarot_short_forms_read_by_column() {
 #[test]
 fn a_dangling_id_names_the_unsupported_keyword_that_would_define_it() {
     // As OpenRadioss QA AMS_boxbeam did before /GRNOD/GRSHEL was read: a
-    // condition names node group 5, which /GRNOD/BOX/5 (not supported) defines.
+    // condition names node group 5, which /GRNOD/GENE/5 (not supported) defines.
     let c = Case::new("dangling");
     let deck = two_bricks(&[
-        "/GRNOD/BOX/5",
-        "from a box",
+        "/GRNOD/GENE/5",
+        "generated",
         &i10(1),
         "/BCS/1",
         "fix",
@@ -477,7 +477,7 @@ fn a_dangling_id_names_the_unsupported_keyword_that_would_define_it() {
     assert_eq!(e.field, "grnod_ID");
     assert!(
         e.message.contains("node group 5 is not defined")
-            && e.message.contains("/GRNOD/BOX/5 at")
+            && e.message.contains("/GRNOD/GENE/5 at")
             && e.message.contains("not supported"),
         "{e}"
     );
@@ -576,4 +576,95 @@ fn rbody_icog_and_ispher_set_the_centre_and_the_inertia() {
         e.contains("ICOG") && e.contains("2: this centre-of-mass option is not computed"),
         "{e}"
     );
+}
+
+/// Two plates on the bricks' bottom face (z = 0, nodes 1-6: shell 11 on
+/// x ∈ [0, 1], shell 12 on [1, 2]) and a shell group per box given.
+fn plates_in_boxes(boxes: &[&str]) -> String {
+    let mut extra = vec![
+        "/PROP/SHELL/2".to_string(),
+        "plate".into(),
+        i10(0) + &i10(0),
+        r20(0) + &r20(0) + &r20(0) + &r20(0) + &r20(0),
+        i10(1) + &i10(0) + &r20(1),
+        "/PART/2".into(),
+        "plates".into(),
+        i10(2) + &i10(1) + &i10(0),
+        "/SHELL/2".into(),
+        [11, 1, 2, 5, 4].map(i10).concat(),
+        [12, 2, 3, 6, 5].map(i10).concat(),
+    ];
+    extra.extend(boxes.iter().map(|s| s.to_string()));
+    let extra: Vec<&str> = extra.iter().map(String::as_str).collect();
+    two_bricks(&extra)
+}
+
+/// /GRSHEL/BOX takes the shells with every node in the box (or on its
+/// surface), /GRSHEL/BOX2 those with at least one; boxes from nodes or
+/// coordinates (reference guide, Boxes and /GRSHEL/BOX).
+#[test]
+fn shell_groups_by_box_take_the_shells_in_the_box() {
+    let c = Case::new("grshel-box");
+    let group =
+        |kind: &str, id: u64, bx: u64| [format!("/GRSHEL/{kind}/{id}"), "g".into(), i10(bx)];
+    let mut lines: Vec<String> = vec![
+        // A rectangle around shell 11 only.
+        "/BOX/RECTA/1".into(),
+        "rect".into(),
+        i10(0) + &i10(0) + &i10(0),
+        r20(1.1) + &r20(1.5) + &r20(0.5),
+        r20(-0.1) + &r20(-0.5) + &r20(-0.5),
+        // A sphere of radius 1.1 on node 1: nodes 1, 2, 4.
+        "/BOX/SPHER/2".into(),
+        "sphere".into(),
+        i10(1) + &" ".repeat(30) + &r20(2.2),
+        r20(0) + &r20(0) + &r20(0),
+        // A cylinder of radius 0.5 along y = 0.5: every node on its surface.
+        "/BOX/CYLIN/3".into(),
+        "cylinder".into(),
+        i10(0) + &i10(0) + &" ".repeat(20) + &r20(1.0),
+        r20(0) + &r20(0.5) + &r20(0),
+        r20(2) + &r20(0.5) + &r20(0),
+    ];
+    for (k, (kind, bx)) in [("BOX", 1), ("BOX2", 1), ("BOX", 2), ("BOX2", 2), ("BOX", 3)]
+        .iter()
+        .enumerate()
+    {
+        lines.extend(group(kind, 101 + k as u64, *bx));
+    }
+    let lines: Vec<&str> = lines.iter().map(String::as_str).collect();
+    let m = c.model(&plates_in_boxes(&lines));
+    let shells: Vec<Vec<u32>> = m.shell_groups.iter().map(|g| g.shells.clone()).collect();
+    assert_eq!(
+        shells,
+        vec![vec![0], vec![0, 1], vec![], vec![0, 1], vec![0, 1]]
+    );
+}
+
+#[test]
+fn a_box_of_an_unknown_node_or_a_flat_cylinder_is_an_error() {
+    let c = Case::new("box-errors");
+    let deck = plates_in_boxes(&[
+        "/BOX/SPHER/2",
+        "sphere",
+        &(i10(99) + &" ".repeat(30) + &r20(2.2)),
+        &(r20(0) + &r20(0) + &r20(0)),
+    ]);
+    let d = c.read(&deck, None).unwrap_or_else(|e| panic!("{e}"));
+    let e = build_model(&d).unwrap_err();
+    assert!(e.keyword == "/BOX/SPHER/2" && e.field == "N1", "{e}");
+    let deck = plates_in_boxes(&[
+        "/BOX/CYLIN/3",
+        "cylinder",
+        &(i10(0) + &i10(0) + &" ".repeat(20) + &r20(1.0)),
+        &(r20(1) + &r20(0.5) + &r20(0)),
+        &(r20(1) + &r20(0.5) + &r20(0)),
+    ]);
+    let d = c.read(&deck, None).unwrap_or_else(|e| panic!("{e}"));
+    let e = build_model(&d).unwrap_err();
+    assert!(e.message.contains("coincide"), "{e}");
+    let deck = plates_in_boxes(&["/GRSHEL/BOX/7", "g", &i10(5)]);
+    let d = c.read(&deck, None).unwrap_or_else(|e| panic!("{e}"));
+    let e = build_model(&d).unwrap_err();
+    assert!(e.keyword == "/GRSHEL/BOX/7" && e.field == "box_ID", "{e}");
 }

@@ -85,7 +85,7 @@ fn names_a_keyword(msg: &str) -> bool {
 /// Decks that run but not yet within 10% of their reference (issue 15's
 /// bar), with why; every other deck that runs is held to 10%.
 /// Decks that ran to their end when this floor was last raised: fewer is a regression.
-const MIN_RUNNING: usize = 27;
+const MIN_RUNNING: usize = 28;
 
 const KNOWN_OFF: &[(&str, &str)] = &[(
     "COQUES3N_ct3a",

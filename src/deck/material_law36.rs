@@ -163,6 +163,11 @@ pub(super) fn resolve_curves(
     time_si: f64,
 ) -> Result<(), InputError> {
     for m in mats.iter_mut() {
+        if let MaterialLaw::FoamTab(f) = &mut m.law {
+            let kw = format!("/MAT/LAW70/{}", m.id);
+            super::material_law70::resolve_foam_curves(f, m.e, functions, &m.loc, &kw)?;
+            continue;
+        }
         if let MaterialLaw::DruckerPrager(d) = &mut m.law {
             let Some(f) = functions.iter().find(|f| f.id == d.fct) else {
                 return Err(InputError::new(

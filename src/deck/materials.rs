@@ -1,7 +1,7 @@
 //! /MAT/LAW1 (/MAT/ELAST) and /MAT/LAW2 (/MAT/PLAS_JOHNS); /MAT/LAW36 in
 //! `material_law36.rs`, /MAT/LAW44 in `material_law44.rs`, /MAT/LAW21 in
 //! `material_law21.rs`, /MAT/LAW27 in `material_law27.rs`, /MAT/LAW62 in
-//! `material_law62.rs`.
+//! `material_law62.rs`, /MAT/LAW70 in `material_law70.rs`.
 //! Other laws are reported as unsupported (the caller warns, or fails with --strict).
 
 use super::source::Block;
@@ -31,6 +31,10 @@ pub(super) fn parse_material(block: &Block, deck: &mut Deck) -> InputResult<bool
     }
     if matches!(law, "LAW12" | "3D_COMP") {
         super::material_law12::parse_law12(block, deck)?;
+        return Ok(true);
+    }
+    if matches!(law, "LAW70" | "FOAM_TAB") {
+        super::material_law70::parse_law70(block, deck)?;
         return Ok(true);
     }
     if matches!(law, "LAW44" | "COWPER") {

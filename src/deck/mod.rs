@@ -12,6 +12,7 @@ pub mod fields;
 pub mod source;
 
 mod beam_props;
+mod boxes;
 mod conditions;
 mod controls;
 pub(crate) mod engine;
@@ -30,6 +31,7 @@ mod material_law27;
 mod material_law36;
 mod material_law44;
 mod material_law62;
+mod material_law70;
 mod material_opening;
 mod materials;
 mod mesh;
@@ -100,6 +102,7 @@ pub struct Deck {
     pub interfaces: Vec<InterfaceSpec>,
     pub time_histories: Vec<TimeHistorySpec>,
     pub skews: Vec<skews::SkewCard>,
+    pub boxes: Vec<boxes::BoxCard>,
     pub final_geometries: Vec<impdisp_fgeo::FgeoCard>,
     pub move_functs: Vec<move_funct::MoveFunct>,
     pub animations: Vec<AnimationSpec>,
@@ -293,6 +296,7 @@ pub(crate) fn read_starter_block(block: &Block, deck: &mut Deck) -> InputResult<
         "RANDOM" => random_noise::parse_random(block, deck)?,
         "PLOAD" => pressure_load::parse_pload(block, deck)?,
         "SKEW" => skews::parse_skew(block, deck)?,
+        "BOX" => boxes::parse_box(block, deck)?,
         "IMPDISP" if block.parts.get(1).is_some_and(|p| p == "FGEO") => {
             impdisp_fgeo::parse_fgeo(block, deck)?
         }

@@ -164,6 +164,7 @@ fn read_shell(cards: &mut Cards) -> InputResult<ShellProperty> {
 /// optional, dtmin (1-20) Istrain (21-30).
 fn solid_cards(c1: &Card, c2: &Card, c_dt: Option<Card>) -> InputResult<SolidProperty> {
     let or = zero_default;
+    let (qa, qb) = (c2.real(1, "qa", 0.0)?, c2.real(21, "qb", 0.0)?);
     let p = SolidProperty {
         isolid: c1.int(1, "Isolid", 0)?,
         ismstr: c1.int(11, "Ismstr", 0)?,
@@ -173,8 +174,9 @@ fn solid_cards(c1: &Card, c2: &Card, c_dt: Option<Card>) -> InputResult<SolidPro
         itetra4: c1.int(61, "Itetra4", 0)?,
         iframe: c1.int(71, "Iframe", 0)?,
         dn: c1.real(81, "dn", 0.0)?,
-        qa: or(c2.real(1, "qa", 0.0)?, 1.1),
-        qb: or(c2.real(21, "qb", 0.0)?, 0.05),
+        qa: or(qa, 1.1),
+        qb: or(qb, 0.05),
+        q_blank: qa == 0.0 && qb == 0.0,
         h: or(c2.real(41, "h", 0.0)?, 0.1),
         lambda_v: 0.0,
         mu_v: 0.0,

@@ -19,6 +19,10 @@ pub struct SetContext<'a> {
     pub elements: &'a [ElementSet],
     /// The resolved surfaces and their ids (/GRNOD/SURF), once known.
     pub surfaces: Option<(&'a [Surface], &'a IdIndex)>,
+    /// The initial node positions and the resolved boxes with their ids
+    /// (/GRSHEL/BOX).
+    pub x: &'a [[f64; 3]],
+    pub boxes: (&'a [super::boxes::SelectionBox], &'a IdIndex),
     /// The resolved shell groups and their ids (/GRNOD/GRSHEL), once known.
     pub shell_groups: Option<(&'a [ShellGroup], &'a IdIndex)>,
 }
@@ -113,6 +117,12 @@ fn resolve_group(
                     }
                 }
             }
+            NodeGroupKind::Box => {
+                let (boxes, index) = ctx.boxes;
+                let b = &boxes[index.resolve(id, loc, &kw, "box_ID")? as usize];
+                let inside = ctx.x.iter().enumerate().filter(|(_, p)| b.contains(**p));
+                target.extend(inside.map(|(n, _)| n as u32));
+            }
             NodeGroupKind::Grshel => {
                 let (groups, index) = ctx
                     .shell_groups
@@ -154,6 +164,10 @@ pub fn shell_groups(
     )?;
     let mut out = Vec::new();
     for c in cards {
+        if let Some((box_id, all)) = c.by_box {
+            out.push(shells_in_box(c, box_id, all, ctx)?);
+            continue;
+        }
         let kw = format!("/GRSHEL/SHEL/{}", c.id);
         let mut add = BTreeSet::new();
         let mut remove = BTreeSet::new();
@@ -175,6 +189,36 @@ pub fn shell_groups(
         });
     }
     Ok(out)
+}
+
+/// /GRSHEL/BOX (`all`: every node of the shell in the box) and /GRSHEL/BOX2
+/// (at least one node), on the initial geometry (guide, /GRSHEL/BOX).
+fn shells_in_box(
+    c: &ShellGroupCard,
+    box_id: Id,
+    all: bool,
+    ctx: &SetContext,
+) -> Result<ShellGroup, InputError> {
+    let kw = format!("/GRSHEL/{}/{}", if all { "BOX" } else { "BOX2" }, c.id);
+    let (boxes, index) = ctx.boxes;
+    let b = &boxes[index.resolve(box_id, &c.loc, &kw, "box_ID")? as usize];
+    let shells = &ctx.elements[0];
+    let inside = |e: usize| {
+        let mut nodes = shells.nodes_of(e).iter().map(|&n| ctx.x[n as usize]);
+        if all {
+            nodes.all(|p| b.contains(p))
+        } else {
+            nodes.any(|p| b.contains(p))
+        }
+    };
+    Ok(ShellGroup {
+        id: c.id,
+        title: c.title.clone(),
+        shells: (0..shells.len())
+            .filter(|&e| inside(e))
+            .map(|e| e as u32)
+            .collect(),
+    })
 }
 
 /// Segment of a shell, reversed if `flip` (n1 n4 n3 n2 keeps n4 = n3 triangles valid as n1 n3 n2 n2).

@@ -1,4 +1,5 @@
-//! Sets: /GRNOD/NODE, /GRNOD/GRNOD, /GRNOD/PART, /GRNOD/SURF, /GRNOD/GRSHEL, /GRSHEL/SHEL, /SURF/PART
+//! Sets: /GRNOD/NODE, /GRNOD/GRNOD, /GRNOD/PART, /GRNOD/SURF, /GRNOD/GRSHEL, /GRNOD/BOX, /GRSHEL/SHEL (and /GRSHEL/BOX,
+//! /GRSHEL/BOX2: the 4-node shells in a box of `boxes.rs`), /SURF/PART
 //! (and /SURF/PART/EXT, /SURF/PART/ALL), /SURF/SEG, /SURF/GRSHEL, /SUBSET. Each is a title line then a list of ids,
 //! ten 10-column fields a line, until the next keyword (/SURF/SEG: one
 //! segment a line). Ids are resolved by `to_model`.
@@ -23,6 +24,8 @@ pub enum NodeGroupKind {
     Surf,
     /// /GRNOD/GRSHEL: every node of the shells of the shell groups.
     Grshel,
+    /// /GRNOD/BOX: every node in the box (`boxes.rs`; one box id).
+    Box,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -38,12 +41,17 @@ pub struct NodeGroupCard {
     pub loc: Loc,
 }
 
-/// /GRSHEL/SHEL: a list of 4-node shell ids.
+/// /GRSHEL/SHEL: a list of 4-node shell ids; /GRSHEL/BOX and /GRSHEL/BOX2:
+/// the 4-node shells in a box.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct ShellGroupCard {
     pub id: Id,
     pub title: String,
     pub items: Vec<i64>,
+    /// /GRSHEL/BOX (all nodes in the box: `true`) or /GRSHEL/BOX2 (at least
+    /// one node: `false`), with the box id; `items` is then empty.
+    #[serde(default)]
+    pub by_box: Option<(Id, bool)>,
     #[serde(default)]
     pub item_locs: ItemLocs,
     pub loc: Loc,
@@ -132,6 +140,23 @@ pub(super) fn parse_set(block: &Block, deck: &mut Deck) -> InputResult<bool> {
                 loc: block.loc.clone(),
             });
         }
+        ("GRNOD", "BOX") => {
+            let id = header_id(block, 2, "grnd_ID")?;
+            let mut cards = Cards::new(block);
+            let title = cards.title();
+            let c = cards.next("the card with box_ID")?;
+            let box_id = c.id(1, "box_ID")?;
+            warn_after_box_id(&c, &block.header, box_id, "nodes", &mut deck.warnings);
+            super::warn_surplus(&cards, "box_ID", &mut deck.warnings);
+            deck.node_groups.push(NodeGroupCard {
+                id,
+                title,
+                kind: NodeGroupKind::Box,
+                items: vec![box_id as i64],
+                item_locs: vec![(0, c.loc())],
+                loc: block.loc.clone(),
+            });
+        }
         ("GRSHEL", "SHEL") => {
             let id = header_id(block, 2, "grshel_ID")?;
             let mut cards = Cards::new(block);
@@ -142,6 +167,24 @@ pub(super) fn parse_set(block: &Block, deck: &mut Deck) -> InputResult<bool> {
                 title,
                 items,
                 item_locs,
+                by_box: None,
+                loc: block.loc.clone(),
+            });
+        }
+        ("GRSHEL", "BOX" | "BOX2") => {
+            let id = header_id(block, 2, "grshel_ID")?;
+            let mut cards = Cards::new(block);
+            let title = cards.title();
+            let c = cards.next("the card with box_ID")?;
+            let box_id = c.id(1, "box_ID")?;
+            warn_after_box_id(&c, &block.header, box_id, "shells", &mut deck.warnings);
+            super::warn_surplus(&cards, "box_ID", &mut deck.warnings);
+            deck.shell_groups.push(ShellGroupCard {
+                id,
+                title,
+                items: Vec::new(),
+                item_locs: Vec::new(),
+                by_box: Some((box_id, p1 == "BOX")),
                 loc: block.loc.clone(),
             });
         }
@@ -234,6 +277,27 @@ pub(super) fn parse_set(block: &Block, deck: &mut Deck) -> InputResult<bool> {
         _ => return Ok(false),
     }
     Ok(true)
+}
+
+/// The reference reads one box (guide: box_ID, columns 1-10); what follows
+/// on the card is not read, and said so.
+fn warn_after_box_id(
+    c: &super::fields::Card,
+    kw: &str,
+    box_id: Id,
+    what: &str,
+    warnings: &mut Vec<Warning>,
+) {
+    let rest = c.text(11, 90);
+    if !rest.is_empty() {
+        warnings.push(Warning {
+            loc: c.loc(),
+            keyword: kw.to_string(),
+            message: format!(
+                "'{rest}' after box_ID (columns 11-100) is not read: the group takes the {what} of box {box_id} only, as the reference starter does"
+            ),
+        });
+    }
 }
 
 /// Ten 10-column ids a line until the block ends (or a line of text ends

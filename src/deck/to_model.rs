@@ -77,7 +77,12 @@ fn build(deck: &Deck) -> Result<Model, InputError> {
         read_elements(deck, &node_index, &part_index, &parts, &properties)?;
 
     // Sets.
+    // Groups select by box on the positions as read (before /RANDOM).
+    let x_read = nodes.x.clone();
+    let (boxes, box_index) = super::boxes::resolve_boxes(deck, &node_index, &x_read)?;
     let ctx = SetContext {
+        x: &x_read,
+        boxes: (&boxes, &box_index),
         nodes: &node_index,
         parts: &part_index,
         shells4: &shell4_index,

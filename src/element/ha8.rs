@@ -88,6 +88,7 @@ pub fn ha8_section(r: &ResolvedSolid, m: &Material) -> Result<SolidSection, Stri
             ))
         }
     };
+    super::hex8::refuse_small_and_foam(r, m, "Isolid = 14 (HA8)")?;
     let mut plain = r.clone();
     plain.isolid = 1;
     plain.iframe = 1;
@@ -613,6 +614,17 @@ mod tests {
                 1.1 * p[2] + d[a][2],
             ]
         })
+    }
+
+    #[test]
+    fn small_strain_is_refused_by_name() {
+        let mut r = resolved(14, 1.1, 0.05, 0.1);
+        r.ismstr = 1;
+        let e = ha8_section(&r, &mat()).unwrap_err();
+        assert!(
+            e.contains("Ismstr = 1 (small strain) on Isolid = 14"),
+            "{e}"
+        );
     }
 
     /// b_I + Σ_α γ_Iα ∇φ_α is the exact ∂N_I/∂x at every Gauss point of a

@@ -44,6 +44,7 @@ pub fn heph_section(r: &ResolvedSolid, m: &Material) -> Result<SolidSection, Str
             ))
         }
     };
+    super::hex8::refuse_small_and_foam(r, m, "Isolid = 24 (HEPH)")?;
     let mut plain = r.clone();
     plain.isolid = 1;
     plain.iframe = 1;

@@ -21,8 +21,9 @@
 //! * **Strain measure** (Ismstr, reference guide /PROP/SOLID): 4 = full
 //!   geometric non-linearity, the rate form above (default); 2 = the same
 //!   (Radioss switches such an element to small strain only under /DT/BRICK/CST,
-//!   which this engine does not have); −1 (automatic) → 4. Ismstr = 1, 3, 10,
-//!   11, 12 (small-strain and total-strain variants) are refused by name.
+//!   which this engine does not have); −1 (automatic) → 4; 1 = small strain
+//!   from t = 0 on the reference shape (`super::hex8_small`). Ismstr = 3, 11,
+//!   12 are refused by name (10: `super::hex8_total`).
 //! * **Material**: `Material::solid_update_at` with Δε = D Δt (engineering
 //!   shears), the filtered equivalent rate √(⅔ D′:D′) for Johnson-Cook, and the
 //!   adiabatic temperature from the element's internal energy per volume.
@@ -52,9 +53,11 @@
 //!
 //! No heap allocation: everything is fixed-size on the stack.
 
-use crate::material::{FailAt, Failure, Material};
+use super::hex8_small::SmallStrainRef;
+use crate::material::{FailAt, Failure, Law70Point, Material};
 use crate::model::ResolvedSolid;
 pub(crate) use crate::vec3::rotate_voigt;
+use crate::vec3::spin_rotation;
 use serde::{Deserialize, Serialize};
 
 /// Resolved section data for one solid part (from [`ResolvedSolid`] + the part's [`Material`]).
@@ -82,10 +85,11 @@ pub struct SolidSection {
 
 fn check_ismstr(r: &ResolvedSolid) -> Result<i64, String> {
     match r.ismstr {
-        2 | 4 => Ok(r.ismstr),
+        1 if r.isolid == 1 || r.isolid == 2 => Ok(1),
         -1 => Ok(4),
+        2 | 4 => Ok(r.ismstr),
         v => Err(format!(
-            "Ismstr = {v} is not supported: the engine computes solids with Ismstr = 2 or 4 (full geometric non-linearity, rate form)"
+            "Ismstr = {v} is not supported here: the engine computes solids with Ismstr = 2 or 4 (full geometric non-linearity, rate form), and Ismstr = 1 (small strain from t = 0) on the one-point bricks Isolid 1 and 2"
         )),
     }
 }
@@ -109,6 +113,26 @@ fn refuse_total_strain(m: &Material) -> Result<(), String> {
         return Err(format!(
             "/MAT/LAW{} computes its stress from the total deformation: expected a one-point brick (Isolid 1 or 2) with Ismstr = 10",
             m.law_number()
+        ));
+    }
+    Ok(())
+}
+
+/// Ismstr = 1 (small strain, `super::hex8_small`) and LAW70 are computed
+/// on the one-point bricks (Isolid 1, 2) only: `what` refuses them by name.
+pub(crate) fn refuse_small_and_foam(
+    r: &ResolvedSolid,
+    m: &Material,
+    what: &str,
+) -> Result<(), String> {
+    if r.ismstr == 1 {
+        return Err(format!(
+            "Ismstr = 1 (small strain) on {what}: the engine computes it on the one-point bricks (Isolid 1, 2) only"
+        ));
+    }
+    if m.foam_tab().is_some() {
+        return Err(format!(
+            "/MAT/LAW70 on {what}: the engine computes it on the one-point bricks (Isolid 1, 2) only"
         ));
     }
     Ok(())
@@ -154,11 +178,14 @@ impl SolidSection {
         if let Some(why) = r.ortho.as_ref().and_then(super::ortho::refusal) {
             return Err(why);
         }
+        // LAW70 with qa and qb blank has no bulk viscosity: the reference
+        // engine sets FACQ0 = 0 for it (research note law70_research.md §3).
+        let no_q = r.q_blank && m.foam_tab().is_some();
         Ok(SolidSection {
             isolid: r.isolid,
             ismstr,
-            qa: r.qa,
-            qb: r.qb,
+            qa: if no_q { 0.0 } else { r.qa },
+            qb: if no_q { 0.0 } else { r.qb },
             h: r.h,
             material: m.clone(),
             c: dilatational_speed(m),
@@ -177,6 +204,7 @@ impl SolidSection {
                 r.itetra4
             ));
         }
+        refuse_small_and_foam(r, m, "tetrahedra")?;
         let ismstr = check_ismstr(r)?;
         m.check_supported()?;
         refuse_tension_damage(m)?;
@@ -197,8 +225,9 @@ impl SolidSection {
     }
 }
 
-/// Per-element state kept by the solver (small, `Copy`).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+/// Per-element state kept by the solver (fixed size; what only some
+/// sections need is boxed).
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct Hex8State {
     /// Cauchy stress [σxx σyy σzz σxy σyz σzx] (global frame), without bulk viscosity.
     pub sig: [f64; 6],
@@ -228,6 +257,12 @@ pub struct Hex8State {
     /// /PROP/TYPE6 sections: the directions and the law's point state.
     #[serde(default)]
     pub ortho: super::ortho::OrthoState,
+    /// Ismstr = 1: the reference shape (`super::hex8_small`).
+    #[serde(default)]
+    pub small: Option<Box<SmallStrainRef>>,
+    /// LAW70: the point's total strain and history.
+    #[serde(default)]
+    pub foam: Option<Box<Law70Point>>,
 }
 
 /// What one element step returns.
@@ -361,28 +396,12 @@ pub(crate) fn velocity_gradient<const N: usize>(
 }
 
 /// Hughes-Winget rotation of a Voigt stress by the spin increment W Δt:
-/// σ ← Q σ Qᵀ, Q = (I − ½ΔtW)⁻¹(I + ½ΔtW).
+/// σ ← Q σ Qᵀ (`crate::vec3::spin_rotation`).
 #[inline]
 pub(crate) fn rotate_stress(s: &mut [f64; 6], w: &[[f64; 3]; 3], dt: f64) {
-    // ω with W = [[0, −ω3, ω2], [ω3, 0, −ω1], [−ω2, ω1, 0]] · (scaled by ½Δt).
-    let h = 0.5 * dt;
-    let (o1, o2, o3) = (h * w[2][1], h * w[0][2], h * w[1][0]);
-    if o1 == 0.0 && o2 == 0.0 && o3 == 0.0 {
+    let Some(q) = spin_rotation(w, dt) else {
         return;
-    }
-    // Q = I + 2/(1+|ω|²) (Ω + Ω²), the Cayley transform of Ω = ½ΔtW.
-    let om = [[0.0, -o3, o2], [o3, 0.0, -o1], [-o2, o1, 0.0]];
-    let k = 2.0 / (1.0 + o1 * o1 + o2 * o2 + o3 * o3);
-    let mut q = [[0.0; 3]; 3];
-    for i in 0..3 {
-        for j in 0..3 {
-            let mut om2 = 0.0;
-            for m in 0..3 {
-                om2 += om[i][m] * om[m][j];
-            }
-            q[i][j] = if i == j { 1.0 } else { 0.0 } + k * (om[i][j] + om2);
-        }
-    }
+    };
     let sm = [[s[0], s[3], s[5]], [s[3], s[1], s[4]], [s[5], s[4], s[2]]];
     let mut qs = [[0.0; 3]; 3];
     for i in 0..3 {
@@ -394,6 +413,14 @@ pub(crate) fn rotate_stress(s: &mut [f64; 6], w: &[[f64; 3]; 3], dt: f64) {
     *s = [r(0, 0), r(1, 1), r(2, 2), r(0, 1), r(1, 2), r(2, 0)];
 }
 
+/// A strain with engineering shears turned as a stress ([`rotate_stress`]).
+#[inline]
+fn rotate_strain(e: &mut [f64; 6], w: &[[f64; 3]; 3], dt: f64) {
+    let mut t = [e[0], e[1], e[2], 0.5 * e[3], 0.5 * e[4], 0.5 * e[5]];
+    rotate_stress(&mut t, w, dt);
+    *e = [t[0], t[1], t[2], 2.0 * t[3], 2.0 * t[4], 2.0 * t[5]];
+}
+
 /// Result of the shared one-point stress update of a solid.
 pub(crate) struct SolidPoint {
     /// Stress used for the forces: σ − q I.
@@ -403,6 +430,9 @@ pub(crate) struct SolidPoint {
     pub failed: bool,
     /// max(0, −tr D), for the time step.
     pub compress: f64,
+    /// The wave speed after the update (the section's, or LAW70's of the
+    /// point's secant modulus).
+    pub c: f64,
 }
 
 /// Stress update of a one-point solid from the mid-step velocity gradient:
@@ -423,6 +453,7 @@ pub(crate) fn solid_point_update(
     eps_dot: &mut f64,
     eint: f64,
     ortho: Option<(&[[f64; 3]; 3], &mut super::ortho::OrthoState)>,
+    mut foam: Option<&mut Law70Point>,
 ) -> SolidPoint {
     let mat = &sec.material;
     let d = [
@@ -441,6 +472,7 @@ pub(crate) fn solid_point_update(
         d_eplas: 0.0,
         failed: false,
         compress,
+        c: sec.c,
     };
     if dt > 0.0 {
         let w = [
@@ -464,10 +496,21 @@ pub(crate) fn solid_point_update(
         ];
         let ep0 = *eps_p;
         let law12 = mat.composite3d();
-        let wp = match (ortho, law12) {
-            // The orthotropic law in its material axes (`super::ortho`).
-            (Some((axes, os)), Some(law)) => super::ortho::update(law, axes, sig, eps_p, os, deps),
-            _ => mat.solid_update_volumetric(sig, eps_p, hist, deps, *eps_dot, temp, vol0 / vol),
+        let wp = if let (Some(pt), Some(law)) = (foam.as_deref_mut(), mat.foam_tab()) {
+            // LAW70 on its total strain, turned as the stress is.
+            rotate_strain(&mut pt.eps, &w, dt);
+            *sig = law.update(pt, &deps, *eps_dot);
+            0.0
+        } else {
+            match (ortho, law12) {
+                // The orthotropic law in its material axes (`super::ortho`).
+                (Some((axes, os)), Some(law)) => {
+                    super::ortho::update(law, axes, sig, eps_p, os, deps)
+                }
+                _ => {
+                    mat.solid_update_volumetric(sig, eps_p, hist, deps, *eps_dot, temp, vol0 / vol)
+                }
+            }
         };
         out.failed = mat.has_failed(*eps_p);
         if let (Some(f), false) = (&sec.failure, out.failed) {
@@ -490,9 +533,12 @@ pub(crate) fn solid_point_update(
         out.d_eint = p * vol_mid * dt;
         out.d_eplas = wp * vol_mid;
     }
+    if let (Some(pt), Some(law)) = (foam.as_deref(), mat.foam_tab()) {
+        out.c = law.point_sound_speed(pt);
+    }
     let mut q = 0.0;
     if compress > 0.0 && !out.failed {
-        q = bulk_viscosity(sec, vol0, vol, compress);
+        q = bulk_viscosity_c(sec, out.c, vol0, vol, compress);
         // LAW12 books the law's work only: its bulk viscosity's work is
         // outside the internal energy, as the reference's (note
         // law12_research.md §1.3, step 10).
@@ -510,8 +556,14 @@ pub(crate) fn solid_point_update(
 /// Δt = l_c / (Q + √(Q² + c²)), Q = qb c + l_c qa² ḋ (reference engine MQVISCB).
 #[inline]
 pub(crate) fn solid_time_step(sec: &SolidSection, lc: f64, compress: f64) -> f64 {
-    let q = sec.qb * sec.c + lc * sec.qa * sec.qa * compress;
-    lc / (q + (q * q + sec.c * sec.c).sqrt())
+    solid_time_step_c(sec, sec.c, lc, compress)
+}
+
+/// [`solid_time_step`] with the wave speed `c` of the point.
+#[inline]
+pub(crate) fn solid_time_step_c(sec: &SolidSection, c: f64, lc: f64, compress: f64) -> f64 {
+    let q = sec.qb * c + lc * sec.qa * sec.qa * compress;
+    lc / (q + (q * q + c * c).sqrt())
 }
 
 /// Von Mises stress of a Voigt stress.
@@ -544,6 +596,8 @@ pub fn hex8_init(sec: &SolidSection, x: &[[f64; 3]; 8]) -> Hex8State {
         vol0: vol,
         vol,
         ortho,
+        small: (sec.ismstr == 1).then(|| Box::new(SmallStrainRef::new(x))),
+        foam: sec.material.foam_tab().map(|_| Box::default()),
         ..Default::default()
     }
 }
@@ -552,9 +606,14 @@ pub fn hex8_init(sec: &SolidSection, x: &[[f64; 3]; 8]) -> Hex8State {
 /// (> 0): q = ρ l ḋ (qa² l ḋ + qb c), l = V^{1/3}, ρ = ρ_I V₀/V. Shared by
 /// every brick formulation (`super::ha8`, `super::heph`).
 pub(crate) fn bulk_viscosity(sec: &SolidSection, vol0: f64, vol: f64, compress: f64) -> f64 {
+    bulk_viscosity_c(sec, sec.c, vol0, vol, compress)
+}
+
+/// [`bulk_viscosity`] with the wave speed `c` of the point.
+fn bulk_viscosity_c(sec: &SolidSection, c: f64, vol0: f64, vol: f64, compress: f64) -> f64 {
     let rho = sec.material.rho() * vol0 / vol;
     let al = vol.cbrt();
-    rho * al * compress * (sec.qa * sec.qa * al * compress + sec.qb * sec.c)
+    rho * al * compress * (sec.qa * sec.qa * al * compress + sec.qb * c)
 }
 
 /// The viscous hourglass of a one-point brick (Isolid 1: Flanagan-Belytschko
@@ -634,6 +693,94 @@ pub(crate) fn mid_step_gradient(
     hex_gradient(&xm)
 }
 
+impl Hex8State {
+    /// The unscaled time step of the element at rest in the shape `x` (no
+    /// compression term): the reference shape under small strain, LAW70's
+    /// wave speed of the point's secant modulus.
+    pub fn rest_time_step(&self, sec: &SolidSection, x: &[[f64; 3]; 8]) -> f64 {
+        let x = self.small.as_deref().map_or(*x, SmallStrainRef::corners);
+        let (_, vol) = hex_gradient(&x);
+        let c = match (self.foam.as_deref(), sec.material.foam_tab()) {
+            (Some(pt), Some(law)) => law.point_sound_speed(pt),
+            _ => sec.c,
+        };
+        solid_time_step_c(sec, c, vol / hex_max_face_area(&x), 0.0)
+    }
+}
+
+/// The geometry a step of one brick uses: gradient vectors and volume for
+/// the strain rate (mid-step) and for the forces, and the corners of the
+/// hourglass and the time step. Ismstr = 1 takes the reference shape for
+/// all of them (`super::hex8_small`); otherwise x^{n+½} and x^{n+1}.
+struct StepGeometry {
+    bm: [[f64; 3]; 8],
+    volm: f64,
+    b: [[f64; 3]; 8],
+    vol: f64,
+    x: [[f64; 3]; 8],
+}
+
+fn step_geometry(
+    x: &[[f64; 3]; 8],
+    v: &[[f64; 3]; 8],
+    dt: f64,
+    small: Option<&mut SmallStrainRef>,
+) -> Option<StepGeometry> {
+    if let Some(r) = small {
+        return small_strain_geometry(r, v, dt);
+    }
+    let (b, vol) = hex_gradient(x);
+    if !(vol > 0.0) {
+        return None;
+    }
+    let (bm, volm) = if dt > 0.0 {
+        mid_step_gradient(x, v, dt)
+    } else {
+        (b, vol)
+    };
+    (volm > 0.0).then_some(StepGeometry {
+        bm,
+        volm,
+        b,
+        vol,
+        x: *x,
+    })
+}
+
+/// Ismstr = 1: the strain rate on the reference shape turned by half the
+/// step's spin (the spin of the shape at the step's start first), the
+/// forces on the shape turned by the whole step, which `r` keeps: a rigid
+/// turn gives a strain of the third order in the step's angle.
+fn small_strain_geometry(
+    r: &mut SmallStrainRef,
+    v: &[[f64; 3]; 8],
+    dt: f64,
+) -> Option<StepGeometry> {
+    let (b0, vol0) = hex_gradient(&r.corners());
+    if !(vol0 > 0.0) {
+        return None;
+    }
+    let (bm, volm) = if dt > 0.0 {
+        let mut half = *r;
+        half.turn(&velocity_gradient(v, &b0, vol0), 0.5 * dt);
+        let (bm, volm) = hex_gradient(&half.corners());
+        half.turn(&velocity_gradient(v, &bm, volm), 0.5 * dt);
+        r.x = half.x;
+        (bm, volm)
+    } else {
+        (b0, vol0)
+    };
+    let x = r.corners();
+    let (b, vol) = hex_gradient(&x);
+    Some(StepGeometry {
+        bm,
+        volm,
+        b,
+        vol,
+        x,
+    })
+}
+
 /// One explicit step of one brick: stress from x^{n+1} and v^{n+½}, internal
 /// corner forces at x^{n+1}, energies and the element time step.
 /// With `dt = 0` only the forces of the current stress and the time step are computed.
@@ -652,21 +799,19 @@ pub fn hex8_step(
         out.failed = true;
         return out;
     }
-    let (b, vol) = hex_gradient(x);
-    if !(vol > 0.0) {
+    let Some(g) = step_geometry(x, v, dt, st.small.as_deref_mut()) else {
         out.bad_volume = true;
         return out;
-    }
-    let (bm, volm) = if dt > 0.0 {
-        mid_step_gradient(x, v, dt)
-    } else {
-        (b, vol)
     };
-    if !(volm > 0.0) {
-        out.bad_volume = true;
-        return out;
-    }
-    let l = velocity_gradient(v, &bm, volm);
+    let l = velocity_gradient(v, &g.bm, g.volm);
+    // The volume the density follows: V₀ρ₀/ρ under small strain.
+    let vol_rho = match st.small.as_deref_mut() {
+        Some(r) => {
+            r.advance_density(l[0][0] + l[1][1] + l[2][2], st.vol0, g.volm, dt);
+            st.vol0 / r.rho_ratio
+        }
+        None => g.vol,
+    };
     // /PROP/TYPE6: the material axes follow the element axes (Iframe 1).
     let axes = sec
         .ortho
@@ -675,8 +820,8 @@ pub fn hex8_step(
     let p = solid_point_update(
         sec,
         &l,
-        volm,
-        vol,
+        g.volm,
+        vol_rho,
         st.vol0,
         dt,
         &mut st.sig,
@@ -686,8 +831,9 @@ pub fn hex8_step(
         &mut st.eps_dot,
         st.eint,
         axes.as_ref().map(|a| (a, &mut st.ortho)),
+        st.foam.as_deref_mut(),
     );
-    st.vol = vol;
+    st.vol = vol_rho;
     st.eint += p.d_eint;
     st.eplas += p.d_eplas;
     out.d_eint = p.d_eint;
@@ -698,17 +844,20 @@ pub fn hex8_step(
         return out;
     }
     for a in 0..8 {
-        out.f[a] = stress_force(&p.sig_f, b[a]);
+        out.f[a] = stress_force(&p.sig_f, g.b[a]);
     }
 
     if sec.h > 0.0 {
-        let rho = sec.material.rho() * st.vol0 / vol;
-        out.d_ehg = viscous_hourglass(sec, x, v, &b, vol, rho, sec.c, dt, &mut out.f, &mut st.hg);
+        // Small strain: ρ₀ and V_ref (research note solid_ismstr1_research.md §4).
+        let rho = sec.material.rho() * st.vol0 / if st.small.is_some() { st.vol0 } else { g.vol };
+        out.d_ehg = viscous_hourglass(
+            sec, &g.x, v, &g.b, g.vol, rho, p.c, dt, &mut out.f, &mut st.hg,
+        );
         st.ehg += out.d_ehg;
     }
 
-    let lc = vol / hex_max_face_area(x);
-    out.dt = solid_time_step(sec, lc, p.compress);
+    let lc = g.vol / hex_max_face_area(&g.x);
+    out.dt = solid_time_step_c(sec, p.c, lc, p.compress);
     out
 }
 
@@ -737,6 +886,7 @@ pub(crate) mod tests {
             inpts: 0,
             qa,
             qb,
+            q_blank: false,
             h,
             dtmin: 0.0,
             dn: 0.0,
@@ -1376,10 +1526,15 @@ pub(crate) mod tests {
         let e = SolidSection::new(&resolved(24, 1.1, 0.05, 0.1), &m).unwrap_err();
         assert!(e.contains("Isolid = 24"), "{e}");
         let mut r = resolved(1, 1.1, 0.05, 0.1);
-        r.ismstr = 1;
+        r.ismstr = 3;
         assert!(SolidSection::new(&r, &m)
             .unwrap_err()
-            .contains("Ismstr = 1"));
+            .contains("Ismstr = 3"));
+        r.ismstr = 1;
+        assert_eq!(SolidSection::new(&r, &m).unwrap().ismstr, 1);
+        assert!(SolidSection::for_tetra(&r, &m)
+            .unwrap_err()
+            .contains("Ismstr = 1 (small strain) on tetrahedra"));
         let mut r = resolved(2, 1.1, 0.05, 0.1);
         r.iframe = 2;
         assert!(SolidSection::new(&r, &m)
@@ -1557,3 +1712,7 @@ pub(crate) mod tests {
         }
     }
 }
+
+#[cfg(test)]
+#[path = "hex8_small_tests.rs"]
+mod small_tests;

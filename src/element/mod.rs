@@ -11,6 +11,7 @@ pub mod blocks;
 pub mod ha8;
 pub mod heph;
 pub mod hex8;
+pub mod hex8_small;
 pub mod hex8_total;
 pub mod joint;
 pub mod ortho;

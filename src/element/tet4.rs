@@ -161,6 +161,7 @@ pub fn tet4_step(
         &mut st.eps_dot,
         st.eint,
         None,
+        None,
     );
     st.vol = vol;
     st.eint += p.d_eint;

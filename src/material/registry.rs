@@ -19,6 +19,7 @@ use super::law27::Law27;
 use super::law36::Law36;
 use super::law44::Law44;
 use super::law62::Law62;
+use super::law70::Law70;
 use super::point::{PlaneStressResult, PointLaw};
 use crate::model::MaterialSpec;
 use serde::{Deserialize, Serialize};
@@ -81,6 +82,8 @@ registry! {
     ViscoHyperelastic(Law62),
     /// LAW12: orthotropic composite solid (Tsai-Wu; /PROP/TYPE6 bricks).
     Composite3d(Law12),
+    /// LAW70: tabulated visco-elastic foam (one-point bricks).
+    FoamTab(Law70),
 }
 
 /// The name of law number `number` when the registry has it; otherwise the
@@ -242,6 +245,14 @@ impl Material {
     pub fn composite3d(&self) -> Option<&Law12> {
         match self {
             Material::Composite3d(l) => Some(l),
+            _ => None,
+        }
+    }
+
+    /// LAW70's parameters when this is LAW70.
+    pub fn foam_tab(&self) -> Option<&Law70> {
+        match self {
+            Material::FoamTab(l) => Some(l),
             _ => None,
         }
     }

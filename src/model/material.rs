@@ -140,6 +140,36 @@ pub enum MaterialLaw {
     /// LAW12 (/MAT/3D_COMP): orthotropic solid composite, Tsai-Wu
     /// plasticity with work hardening, tension damage per direction.
     Composite3d(Composite3d),
+    /// LAW70 (/MAT/FOAM_TAB): tabulated visco-elastic foam, loading curves
+    /// per strain rate, secant modulus, hysteresis on unloading.
+    FoamTab(FoamTab),
+}
+
+/// /MAT/LAW70 parameters (reference guide /MAT/LAW70; research note
+/// `docs/notes/law70_research.md` §1.1), defaults resolved as the reference
+/// starter: eps_max 0 → 1, Shape 0 → 1, Hys 0 → 1, a curve scale 0 → 1,
+/// the first loading rate → 0, E_max 0 → the largest slope of the scaled
+/// loading curves (not below E0), F_cut 0 → no filter. E0 and ν are the
+/// card's `MaterialSpec::e`, `nu`.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct FoamTab {
+    pub e_max: f64,
+    /// Strain past which the curves are continued with slope E_max.
+    pub eps_max: f64,
+    /// Strain-rate filter frequency in the deck's time unit (0: none) and
+    /// ISRATE (Fsmooth; 0: no filter).
+    pub f_cut: f64,
+    pub israte: i64,
+    /// Unloading model Iflag (0-4), Shape and Hys of the hysteresis.
+    pub iflag: i64,
+    pub shape: f64,
+    pub hys: f64,
+    /// Itens: tension handled apart (its pressure-factor curve).
+    pub itens: i64,
+    /// The loading curves σ = Fscale·f(ε) by increasing strain rate, and
+    /// the unloading ones (points filled by the model builder).
+    pub loading: Vec<RateCurve>,
+    pub unloading: Vec<RateCurve>,
 }
 
 /// /MAT/LAW12 parameters in the material frame (directions 1, 2, 3; shears

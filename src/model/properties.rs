@@ -90,6 +90,9 @@ pub struct ResolvedSolid {
     pub inpts: i64,
     pub qa: f64,
     pub qb: f64,
+    /// qa and qb both blank on the card (see `SolidProperty::q_blank`).
+    #[serde(default)]
+    pub q_blank: bool,
     pub h: f64,
     pub dtmin: f64,
     /// Hourglass viscous coefficient of HEPH (Isolid 24) as given (0 blank).
@@ -112,6 +115,7 @@ pub fn resolve_solid(p: &SolidProperty, d: Option<&DefSolid>) -> ResolvedSolid {
         inpts: p.inpts,
         qa: p.qa,
         qb: p.qb,
+        q_blank: p.q_blank,
         h: p.h,
         dtmin: p.dtmin,
         dn: p.dn,

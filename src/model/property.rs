@@ -177,6 +177,10 @@ pub struct SolidProperty {
     pub qa: f64,
     /// Linear bulk viscosity (0 → 0.05).
     pub qb: f64,
+    /// qa and qb were both 0 or blank on the card: LAW70 then has no bulk
+    /// viscosity (the reference engine's FACQ0 = 0 for it).
+    #[serde(default)]
+    pub q_blank: bool,
     /// Hourglass coefficient (0 → 0.1).
     pub h: f64,
     pub lambda_v: f64,

@@ -462,6 +462,7 @@ impl RunFile {
                     MaterialLaw::BrittlePlastic(_) => "LAW27 brittle plastic",
                     MaterialLaw::ViscoHyperelastic(_) => "LAW62 visco-hyperelastic",
                     MaterialLaw::Composite3d(_) => "LAW12 orthotropic composite (Tsai-Wu)",
+                    MaterialLaw::FoamTab(_) => "LAW70 tabulated visco-elastic foam",
                 })
             })
             .collect();

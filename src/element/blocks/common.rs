@@ -149,7 +149,8 @@ fn one_point_stiffness(sec: &SolidSection, x: &[[f64; 3]], vol0: f64) -> Option<
 
 impl SolidNodalStiffness for crate::element::hex8::Hex8State {
     fn corner_stiffness(&self, sec: &SolidSection, x: &[[f64; 3]]) -> Option<f64> {
-        one_point_stiffness(sec, x, self.vol0)
+        let dt = self.rest_time_step(sec, x.try_into().ok()?);
+        (dt > 0.0).then(|| sec.material.rho() * self.vol0 / (4.0 * dt * dt))
     }
 }
 impl SolidNodalStiffness for crate::element::heph::HephState {

@@ -110,22 +110,16 @@ pub(super) fn nodal_steps(cx: &Ctx, s: &mut State) -> Result<Option<(f64, u64)>,
 
 /// The stiffness slots of elements whose nodes all belong to one rigid body.
 fn inside_bodies(cx: &Ctx, s: &State) -> Vec<u32> {
-    let mut body_of = vec![u32::MAX; cx.n];
-    for (b, lb) in cx.local_bodies.iter().enumerate() {
-        for &(l, _) in &lb.members {
-            body_of[l as usize] = b as u32;
-        }
-    }
     let mut out = Vec::new();
     for (i, blk) in s.blocks.iter().enumerate() {
-        let (le, nc, stride) = (blk.local(), blk.corners(), blk.kind().nodes());
-        for e in 0..le.global.len() {
-            let nodes = &le.nodes[stride * e..stride * e + nc];
-            let b = body_of[nodes[0] as usize];
-            if b != u32::MAX && nodes.iter().all(|&l| body_of[l as usize] == b) {
-                let first = cx.offsets[i] + e * nc;
-                out.extend((first..first + nc).map(|k| k as u32));
-            }
+        let nc = blk.corners();
+        for (e, _) in s.in_body[i]
+            .iter()
+            .enumerate()
+            .filter(|(_, &inside)| inside)
+        {
+            let first = cx.offsets[i] + e * nc;
+            out.extend((first..first + nc).map(|k| k as u32));
         }
     }
     out

@@ -135,6 +135,9 @@ pub(super) struct State {
     pub mass_added: f64,
     /// The stiffness slots of elements inside a rigid body (no stiffness).
     pub kinactive: Vec<u32>,
+    /// Per block, the elements inside one rigid body (deactivated: no time
+    /// step), `elements_in_bodies`.
+    pub in_body: Vec<Vec<bool>>,
     pub contrib: Vec<[f64; SLOT]>,
     /// /PLOAD segments this rank carries (None without /PLOAD).
     pub pressure: Option<super::pressure::PressureState>,
@@ -478,6 +481,7 @@ pub(super) fn initial_state(
         added: Vec::new(),
         mass_added: 0.0,
         kinactive: Vec::new(),
+        in_body: elements_in_bodies(&cx, &blocks),
         was_alive: blocks
             .iter()
             .map(|b| vec![true; b.local().global.len()])
@@ -571,4 +575,33 @@ fn initial_walls(cx: &Ctx) -> Walls {
         force: vec![[ExactSum::default(); 3]; g.rigid_walls.len()],
         tied: cx.walls.iter().map(|(l, _)| vec![false; l.len()]).collect(),
     }
+}
+
+/// Per block, the elements whose nodes all belong to one rigid body: the
+/// reference starter deactivates them (reference guide /RBODY: "all the
+/// elements belonging to the rigid body are deactivated"), so they give no
+/// time step and no nodal stiffness.
+fn elements_in_bodies(
+    cx: &Ctx,
+    blocks: &[Box<dyn crate::element::blocks::Block>],
+) -> Vec<Vec<bool>> {
+    let mut body_of = vec![u32::MAX; cx.n];
+    for (b, lb) in cx.local_bodies.iter().enumerate() {
+        for &(l, _) in &lb.members {
+            body_of[l as usize] = b as u32;
+        }
+    }
+    blocks
+        .iter()
+        .map(|blk| {
+            let (le, nc, stride) = (blk.local(), blk.corners(), blk.kind().nodes());
+            (0..le.global.len())
+                .map(|e| {
+                    let nodes = &le.nodes[stride * e..stride * e + nc];
+                    let b = body_of[nodes[0] as usize];
+                    b != u32::MAX && nodes.iter().all(|&l| body_of[l as usize] == b)
+                })
+                .collect()
+        })
+        .collect()
 }

@@ -28,23 +28,40 @@ pub(super) struct Found {
 /// The kind index that names a node (NODE) in the step's candidates.
 const NODE: usize = usize::MAX - 1;
 
-/// This rank's smallest element time step: (dt, kind index, element id).
-fn smallest_element_step(cx: &Ctx, blocks: &[Box<dyn Block>]) -> (f64, usize, u64) {
-    let mut best = (f64::INFINITY, usize::MAX, u64::MAX);
-    for b in blocks {
+/// A step candidate: (dt, kind index, element or node id).
+type Candidate = (f64, usize, u64);
+
+/// The smaller candidate; ties: smallest kind, then id.
+fn smaller(a: Candidate, b: Candidate) -> Candidate {
+    if b.0 < a.0 || (b.0 == a.0 && (b.1, b.2) < (a.1, a.2)) {
+        b
+    } else {
+        a
+    }
+}
+
+/// This rank's smallest element time step, and apart that of the elements
+/// inside a rigid body (`in_body`): the reference deactivates them, so they
+/// set the step only in a model with no other element.
+fn smallest_element_step(
+    cx: &Ctx,
+    blocks: &[Box<dyn Block>],
+    in_body: &[Vec<bool>],
+) -> (Candidate, Candidate) {
+    let none = (f64::INFINITY, usize::MAX, u64::MAX);
+    let (mut free, mut body) = (none, none);
+    for (b, inside) in blocks.iter().zip(in_body) {
         let ki = b.kind().index();
         let le = b.local();
         for (e, st) in b.steps().iter().enumerate() {
             if b.alive(e) {
                 let id = cx.g.element_ids[ki][le.global[e] as usize];
-                let cand = (st.dt, ki, id);
-                if cand.0 < best.0 || (cand.0 == best.0 && (cand.1, cand.2) < (best.1, best.2)) {
-                    best = cand;
-                }
+                let best = if inside[e] { &mut body } else { &mut free };
+                *best = smaller(*best, (st.dt, ki, id));
             }
         }
     }
-    best
+    (free, body)
 }
 
 /// Global minimum of the scaled element time steps and the contact steps
@@ -52,9 +69,10 @@ fn smallest_element_step(cx: &Ctx, blocks: &[Box<dyn Block>]) -> (f64, usize, u6
 pub(super) fn global_step(cx: &Ctx, s: &State, found: Found) -> Result<Step, RunError> {
     let (cycle, t) = (s.cycle, s.t);
     // The nodal step carries its own scale (ΔTsca): undo the /DT one applied below.
-    let best = match found.nodal {
-        Some((d, id)) => (d / cx.g.engine.dt_scale, NODE, id),
-        None => smallest_element_step(cx, &s.blocks),
+    let none = (f64::INFINITY, usize::MAX, u64::MAX);
+    let (best, body) = match found.nodal {
+        Some((d, id)) => ((d / cx.g.engine.dt_scale, NODE, id), none),
+        None => smallest_element_step(cx, &s.blocks, &s.in_body),
     };
     let prob = found.element.map(|(k, ge, m)| {
         format!(
@@ -68,22 +86,18 @@ pub(super) fn global_step(cx: &Ctx, s: &State, found: Found) -> Result<Step, Run
         kin_dt: f64::INFINITY,
         ..Default::default()
     });
-    let all: Vec<(f64, usize, u64, Option<String>, ContactStep)> =
-        cx.world.allgather(&(best.0, best.1, best.2, prob, cs));
-    if let Some(m) = all.iter().find_map(|(_, _, _, p, _)| p.clone()) {
+    let all: Vec<(Candidate, Candidate, Option<String>, ContactStep)> =
+        cx.world.allgather(&(best, body, prob, cs));
+    if let Some(m) = all.iter().find_map(|(_, _, p, _)| p.clone()) {
         return Err(RunError::Physics(m));
     }
-    let (d, ki, id) = all.iter().fold(
-        (f64::INFINITY, usize::MAX, u64::MAX),
-        |acc, &(d, k, id, _, _)| {
-            if d < acc.0 || (d == acc.0 && (k, id) < (acc.1, acc.2)) {
-                (d, k, id)
-            } else {
-                acc
-            }
-        },
-    );
-    let contacts: Vec<ContactStep> = all.into_iter().map(|a| a.4).collect();
+    let free = all.iter().fold(none, |acc, a| smaller(acc, a.0));
+    let (d, ki, id) = if free.0.is_finite() {
+        free
+    } else {
+        all.iter().fold(none, |acc, a| smaller(acc, a.1))
+    };
+    let contacts: Vec<ContactStep> = all.into_iter().map(|a| a.3).collect();
     let step = if d.is_finite() {
         Step {
             dt: d,
