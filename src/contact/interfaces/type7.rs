@@ -329,10 +329,16 @@ pub fn pair(p: &Pair, st: &mut PairState) -> Option<PairForce> {
     } else {
         f64::INFINITY
     };
-    // The stiffness of the nodal time step: Kt, or the friction damper over
-    // the last step where that is stiffer.
-    let k_step = if p.friction.active() && p.dt > 0.0 {
-        kt.max(p.friction.visf * (2.0 * kd * p.ms).sqrt() / p.dt)
+    // The stiffness of the nodal time step (note contact_time_step_research.md
+    // §2): Kt and the normal damper over the last step, or the friction
+    // damper where that is stiffer.
+    let k_step = if p.dt > 0.0 {
+        let k = kt + c / p.dt;
+        if p.friction.active() {
+            k.max(p.friction.visf * (2.0 * kd * p.ms).sqrt() / p.dt)
+        } else {
+            k
+        }
     } else {
         kt
     };
@@ -480,9 +486,11 @@ mod tests {
         inp.viss = 0.05;
         let f = pair(&inp, &mut st).unwrap();
         let kt = 1000.0 * 4.0;
-        assert!((f.kt - kt).abs() < 1e-9);
         // Closing at 2: C = VISs·√(2·Kt·M) + 0.4²·2·M·2/(Gap − P).
         let c = 0.05 * (2.0f64 * kt).sqrt() + 0.16 * 2.0 * 2.0 / 0.05;
+        // The nodal step's stiffness: Kt and the damper over the step (note
+        // contact_time_step_research.md §2).
+        assert!((f.kt - (kt + c / 1e-3)).abs() < 1e-9 * kt);
         let expect = 100.0 + c * 2.0;
         assert!((f.fs[2] - expect).abs() < 1e-9);
         // EQ. 8.8.5.1: 0.5·(Gap − P)/(dP/dt) = 0.5·0.05/2.

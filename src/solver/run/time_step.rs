@@ -127,7 +127,7 @@ pub(super) fn global_step(cx: &Ctx, s: &State, found: Found) -> Result<Step, Run
             "no element left to set the time step at cycle {cycle}, time {t:e}"
         )));
     };
-    let mut step = with_contact(step, &contacts);
+    let mut step = with_contact(step, &contacts, cx.g.engine.dt_scale);
     step.dt *= cx.g.engine.dt_scale;
     step.dt *= super::damping::step_factor(cx, s.t, step.dt);
     // /DTIX: the first step at most ΔT_ini, every step at most ΔT_max.
@@ -147,10 +147,21 @@ pub(super) fn global_step(cx: &Ctx, s: &State, found: Found) -> Result<Step, Run
     Ok(step)
 }
 
-/// Contact (EQ. 8.8.5.1–2): nodes held by their elements and contact springs
-/// together, Δt = 1/√(1/Δt_el² + max K/(2M)); then the kinematic step.
-/// Ties: the smallest node / interface id.
-fn with_contact(mut step: Step, all: &[ContactStep]) -> Step {
+/// The element part of a contact node's stiffness, over 2M/Δt_el²: the
+/// reference shell gives each of its nodes K_el = 0.81·½·V·E/L² (its CDT3,
+/// research note `docs/notes/contact_time_step_research.md` §3), which with
+/// the nodal mass ¼ρV of each element and Δt_el = L/√(E/ρ) is
+/// 0.81·2M/Δt_el²: a node alone has the step Δt_el/0.9.
+const ELEMENT_PART: f64 = 0.81;
+
+/// Contact (EQ. 8.8.5.1–2; note `contact_time_step_research.md` §6): a
+/// contact node's step √(2M/(K_el + K_c)) = 1/√(0.81/Δt_el² + K_c/(2M)),
+/// with Δt_el the smallest element step (no node's own is larger: the
+/// step is never overestimated), a candidate beside the element step, not
+/// added to it; then the kinematic step 0.5·(Gap − P)/(dP/dt), which the
+/// /DT scale does not reduce (`scale`). Ties: the smallest node /
+/// interface id.
+fn with_contact(mut step: Step, all: &[ContactStep], scale: f64) -> Step {
     let d = step.dt;
     let (mut q, mut qid) = (0.0f64, 0u64);
     let (mut kin, mut kid) = (f64::INFINITY, 0u64);
@@ -165,21 +176,20 @@ fn with_contact(mut step: Step, all: &[ContactStep]) -> Step {
         }
     }
     if q > 0.0 {
-        let combined = 1.0 / (1.0 / (d * d) + q).sqrt();
-        // Named after the node once contact costs more than 1% of the step.
-        if combined < 0.99 * d {
+        let nodal = 1.0 / (ELEMENT_PART / (d * d) + q).sqrt();
+        if nodal < d {
             step = Step {
-                dt: combined,
+                dt: nodal,
                 what: "NODE",
                 id: qid,
             };
-        } else {
-            step.dt = combined;
         }
     }
-    if kin < step.dt {
+    // Compared before the caller scales the step: the kinematic step is
+    // taken whole.
+    if kin / scale < step.dt {
         step = Step {
-            dt: kin,
+            dt: kin / scale,
             what: "INTER",
             id: kid,
         };
