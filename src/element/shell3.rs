@@ -15,7 +15,10 @@
 //! * **Rates** (as in `shell4`, on the mid-step geometry x^{n+½} = x^{n+1} − ½Δt v):
 //!   membrane d = (Σb_x v_x, Σb_y v_y, Σ(b_y v_x + b_x v_y)), curvature
 //!   κ = (Σb_x θ_y, −Σb_y θ_x, Σ(b_y θ_y − b_x θ_x)), transverse shear
-//!   γ_xz = Σb_x v_z + ⅓Σθ_y, γ_yz = Σb_y v_z − ⅓Σθ_x (rotations at the centroid).
+//!   γ_xz = Σb_x v_z + Σ(c_i θ_x,i + d_i θ_y,i), γ_yz likewise, with the
+//!   reference's node-specific weights ([`ShearWeights`]: no shear for any
+//!   constant-curvature Kirchhoff state, so no shear locking; a uniform
+//!   rotation gives ±θ as the centroid rotation ⅓Σθ did).
 //! * **Through the thickness**: the quad's rule ([`ShellSection`]: N points,
 //!   trapezoidal membrane weights, exact bending weights for a piecewise-linear
 //!   stress; N = 0 as the quad, global integration with Ilyushin's resultant
@@ -24,8 +27,9 @@
 //!   elastic (k G); Ithick = 1 updates the thickness.
 //! * **Corner forces** (internal, power-conjugate, at x^{n+1}; the solver does
 //!   M a = f_ext − f): f_x = A(b_x N_xx + b_y N_xy), f_y = A(b_y N_yy + b_x N_xy),
-//!   f_z = A(b_x Q_x + b_y Q_y), m_x = −A(b_y M_yy + b_x M_xy) − ⅓A Q_y,
-//!   m_y = A(b_x M_xx + b_y M_xy) + ⅓A Q_x, m_z = 0 (no drilling stiffness).
+//!   f_z = A(b_x Q_x + b_y Q_y), m_x = −A(b_y M_yy + b_x M_xy) + A(c_zx Q_x + c_yz Q_y),
+//!   m_y = A(b_x M_xx + b_y M_xy) + A(d_zx Q_x + d_yz Q_y) (the shear weights'
+//!   transpose), m_z = 0 (no drilling stiffness).
 //!   No hourglass modes.
 //! * **Time step** (reference engine C3DERI3: ALDT = 2A / max edge, the smallest
 //!   height): Δt = (2A / l_max) / √(E/ρ₀), unscaled, the same wave speed as the quad.
@@ -118,6 +122,42 @@ fn dot3(a: &[f64; 3], b: &[f64; 3]) -> f64 {
 
 /// Corotational geometry of one configuration.
 #[derive(Clone, Copy, Debug)]
+/// The nodal rotations' weights in the transverse shears (reference engine
+/// C3CURV3 / C3FINT3; research note `docs/notes/shell3_c0_research.md`,
+/// difference 1): γ_zx = Σb_x v_z + Σ(zx[0]_i θx_i + zx[1]_i θy_i), γ_yz
+/// likewise; the corner moments take the transpose. Each row sums to the
+/// uniform rotation's ±1 (as ⅓Σθ), and every constant-curvature Kirchhoff
+/// state (w quadratic, θ = ∇w) gives γ = 0 on any triangle: no shear
+/// locking (the centroid rotation ⅓Σθ locks: the QA plate COQUES3N bent
+/// about 45 % too stiff).
+struct ShearWeights {
+    zx: [[f64; 3]; 2],
+    yz: [[f64; 3]; 2],
+}
+
+/// [`ShearWeights`] in the element frame: x2 = x₂ − x₁ (e1 runs along 1→2),
+/// (x3, y3) = node 3 − node 1.
+fn shear_weights(g: &Geom) -> ShearWeights {
+    let x2 = g.x[1] - g.x[0];
+    let (x3, y3) = (g.x[2] - g.x[0], g.y[2] - g.y[0]);
+    let (a, b) = (6.0 * x2, 6.0 * x2 * y3);
+    ShearWeights {
+        zx: [
+            [-y3 / a, y3 / a, 0.0],
+            [(2.0 * x2 + x3) / a, (3.0 * x2 - x3) / a, 1.0 / 6.0],
+        ],
+        yz: [
+            [-(2.0 * x2 - x3) / a, -(x2 + x3) / a, -0.5],
+            [
+                (x2 * x2 - x3 * x3) / b,
+                -x3 * (2.0 * x2 - x3) / b,
+                -(x2 - 2.0 * x3) / (6.0 * y3),
+            ],
+        ],
+    }
+}
+
+#[derive(Clone, Copy)]
 struct Geom {
     /// Rows e1, e2, e3.
     e: [[f64; 3]; 3],
@@ -289,9 +329,9 @@ pub fn shell3_step(
     let kxx = dot3(bx, &wy);
     let kyy = -dot3(by, &wx);
     let kxy = dot3(by, &wy) - dot3(bx, &wx);
-    let third = 1.0 / 3.0;
-    let gxz = dot3(bx, &vz) + third * (wy[0] + wy[1] + wy[2]);
-    let gyz = dot3(by, &vz) - third * (wx[0] + wx[1] + wx[2]);
+    let sw = shear_weights(&gm);
+    let gxz = dot3(bx, &vz) + dot3(&sw.zx[0], &wx) + dot3(&sw.zx[1], &wy);
+    let gyz = dot3(by, &vz) + dot3(&sw.yz[0], &wx) + dot3(&sw.yz[1], &wy);
 
     let t = st.thick;
     if dt > 0.0 {
@@ -362,6 +402,7 @@ pub fn shell3_step(
     // ---- resultants and corner forces at x^{n+1} -----------------------------
     let (nr, mr, q) = shell4_resultants(sec, t, sig);
     let a = ge.area;
+    let sw = shear_weights(&ge);
     for i in 0..3 {
         let (bxi, byi) = (ge.bx[i], ge.by[i]);
         let fl = [
@@ -370,8 +411,8 @@ pub fn shell3_step(
             a * (bxi * q[0] + byi * q[1]),
         ];
         let ml = [
-            -a * (byi * mr[1] + bxi * mr[2]) - third * a * q[1],
-            a * (bxi * mr[0] + byi * mr[2]) + third * a * q[0],
+            -a * (byi * mr[1] + bxi * mr[2]) + a * (sw.zx[0][i] * q[0] + sw.yz[0][i] * q[1]),
+            a * (bxi * mr[0] + byi * mr[2]) + a * (sw.zx[1][i] * q[0] + sw.yz[1][i] * q[1]),
             0.0,
         ];
         out.f[i] = ge.to_global(fl);
@@ -388,6 +429,42 @@ pub fn shell3_step(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Every constant-curvature Kirchhoff state w = a x² + b xy + c y²,
+    /// θx = ∂w/∂y, θy = −∂w/∂x (crashsim's sign: γ_zx = ∂w/∂x + θy), gives
+    /// no transverse shear on a skewed triangle; a uniform rotation gives
+    /// γ = ±θ.
+    #[test]
+    fn kirchhoff_bending_makes_no_transverse_shear() {
+        let g = Geom::new(&[[0.3, -0.2, 0.1], [2.1, 0.4, -0.3], [0.7, 1.9, 0.5]]).unwrap();
+        let sw = shear_weights(&g);
+        let shear = |vz: [f64; 3], wx: [f64; 3], wy: [f64; 3]| {
+            (
+                dot3(&g.bx, &vz) + dot3(&sw.zx[0], &wx) + dot3(&sw.zx[1], &wy),
+                dot3(&g.by, &vz) + dot3(&sw.yz[0], &wx) + dot3(&sw.yz[1], &wy),
+            )
+        };
+        for (a, b, c) in [
+            (1.0, 0.0, 0.0),
+            (0.0, 1.0, 0.0),
+            (0.0, 0.0, 1.0),
+            (0.3, -0.7, 1.1),
+        ] {
+            let w = |i: usize| a * g.x[i] * g.x[i] + b * g.x[i] * g.y[i] + c * g.y[i] * g.y[i];
+            let vz = [w(0), w(1), w(2)];
+            let wx: [f64; 3] = std::array::from_fn(|i| b * g.x[i] + 2.0 * c * g.y[i]);
+            let wy: [f64; 3] = std::array::from_fn(|i| -(2.0 * a * g.x[i] + b * g.y[i]));
+            let (zx, yz) = shear(vz, wx, wy);
+            assert!(
+                zx.abs() < 1e-13 && yz.abs() < 1e-13,
+                "{a} {b} {c}: {zx} {yz}"
+            );
+        }
+        let (zx, yz) = shear([0.0; 3], [0.0; 3], [1.0; 3]);
+        assert!((zx - 1.0).abs() < 1e-14 && yz.abs() < 1e-14);
+        let (zx, yz) = shear([0.0; 3], [1.0; 3], [0.0; 3]);
+        assert!(zx.abs() < 1e-14 && (yz + 1.0).abs() < 1e-14);
+    }
 
     fn mat() -> Material {
         let (e, nu) = (210.0, 0.3);
@@ -604,7 +681,8 @@ mod tests {
             let m = &sec.material;
             let (e, nu) = (m.young(), m.poisson());
             let t = 1.5;
-            // Centroid at the origin; rotation rate θ_y = κ̇ x gives κ_xx = κ̇, no shear.
+            // Centroid at the origin; the Kirchhoff state w = −½κ̇x², θ_y = κ̇ x
+            // gives κ_xx = κ̇ and no shear.
             let x = [[-1.0, -1.0, 0.0], [2.0, -1.0, 0.0], [-1.0, 2.0, 0.0]];
             let kd = 0.01;
             let vr = [
@@ -612,9 +690,11 @@ mod tests {
                 [0.0, kd * x[1][0], 0.0],
                 [0.0, kd * x[2][0], 0.0],
             ];
+            let v: [[f64; 3]; 3] =
+                std::array::from_fn(|i| [0.0, 0.0, -0.5 * kd * x[i][0] * x[i][0]]);
             let dt = 1e-3;
             let mut el = El::new(&sec, &x, t);
-            let o = el.step(&sec, &x, &[[0.0; 3]; 3], &vr, dt);
+            let o = el.step(&sec, &x, &v, &vr, dt);
             let (nr, mr, q) = shell4_resultants(&sec, t, &el.sig);
             let d = e * t * t * t / (12.0 * (1.0 - nu * nu));
             let dk = kd * dt;
@@ -624,16 +704,21 @@ mod tests {
                 mr[0],
                 d * dk
             );
-            assert!((mr[0] - d * dk).abs() < 1e-12 * d * dk);
-            assert!((mr[1] - nu * d * dk).abs() < 1e-12 * d * dk);
-            assert!(nr.iter().all(|v| v.abs() < 1e-15) && q.iter().all(|v| v.abs() < 1e-15));
+            // The mid-step shape tilts by ½Δt·v_z: 1e-10 of D κ elsewhere.
+            let small = 1e-9 * d * dk;
+            assert!((mr[0] - d * dk).abs() < small);
+            assert!((mr[1] - nu * d * dk).abs() < small);
+            // The deflection's second-order membrane strain ½(∂w/∂x)² only.
+            assert!(nr.iter().all(|v| v.abs() < 1e-5 * e * t * dk), "{nr:?}");
+            assert!(q.iter().all(|v| v.abs() < small), "{q:?}");
             // Corner moments m_y = A b_x M_xx, m_x = −A b_y M_yy; no forces.
             let ge = Geom::new(&x).unwrap();
             for i in 0..3 {
-                assert!((o.m[i][1] - ge.area * ge.bx[i] * mr[0]).abs() < 1e-12 * d * dk);
-                assert!((o.m[i][0] + ge.area * ge.by[i] * mr[1]).abs() < 1e-12 * d * dk);
+                assert!((o.m[i][1] - ge.area * ge.bx[i] * mr[0]).abs() < small);
+                assert!((o.m[i][0] + ge.area * ge.by[i] * mr[1]).abs() < small);
             }
-            assert!(maxabs(&o.f) < 1e-15);
+            // Forces: the membrane resultant's, of the same second order.
+            assert!(maxabs(&o.f) < 1e-5 * e * t * dk * ge.area, "{:?}", o.f);
             // Energy ½ M κ A.
             assert!(
                 (o.d_eint - 0.5 * (mr[0] * dk + mr[1] * 0.0) * ge.area).abs() < 1e-9 * o.d_eint

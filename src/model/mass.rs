@@ -15,7 +15,8 @@
 //!
 //! - shell nodes also get a rotational inertia (isotropic, for the
 //!   rotational degrees of freedom): ρ·t·A/4 · (A/9 + t²/12) per node, with
-//!   A/12 instead of A/9 for Ishell ≥ 11 (QBAT, QEPH); it counts in the part
+//!   A/12 instead of A/9 for Ishell ≥ 11 (QBAT, QEPH) and A/4.5 for 3-node
+//!   shells (the reference's C3INMAS); it counts in the part
 //!   inertia as Radioss reports it.
 //!
 //! This is how the Radioss starter distributes mass (its NODAL MASSES,
@@ -275,7 +276,8 @@ fn corner_shares(model: &Model, n: &[u32]) -> [f64; 3] {
 }
 
 /// Rotational inertia per unit nodal mass of a shell's nodes, A/9 + t²/12
-/// (A/12 + t²/12 for Ishell ≥ 11); 0 for other elements.
+/// (A/12 + t²/12 for Ishell ≥ 11, A/4.5 + t²/12 for triangles); 0 for
+/// other elements.
 fn shell_rotational_factor(model: &Model, set: &ElementSet, e: usize) -> f64 {
     if !matches!(set.kind, ElementKind::Shell4 | ElementKind::Shell3) {
         return 0.0;
@@ -303,7 +305,14 @@ fn shell_rotational_factor(model: &Model, set: &ElementSet, e: usize) -> f64 {
         })
         .unwrap_or(1);
     let t = set.thick[e];
-    area / if ishell >= 11 { 12.0 } else { 9.0 } + t * t / 12.0
+    // Triangles: A/4.5 (the reference starter's C3INMAS, its share by
+    // corner angle as the mass; QA COQUES3N_ct3a's part Iyy 6.452).
+    let divisor = match (set.kind, ishell >= 11) {
+        (ElementKind::Shell3, _) => 4.5,
+        (_, true) => 12.0,
+        (_, false) => 9.0,
+    };
+    area / divisor + t * t / 12.0
 }
 
 /// Total mass and centre: nodal masses (elements + /ADMAS) plus rigid-body MASS on main nodes.
