@@ -39,6 +39,12 @@ pub fn norm(a: V3) -> f64 {
     dot(a, a).sqrt()
 }
 
+/// The spin W = ½(L − Lᵀ) of a velocity gradient L.
+#[inline]
+pub fn spin(l: &[[f64; 3]; 3]) -> [[f64; 3]; 3] {
+    std::array::from_fn(|i| std::array::from_fn(|j| 0.5 * (l[i][j] - l[j][i])))
+}
+
 /// The Hughes-Winget rotation of the spin increment W Δt:
 /// Q = (I − ½ΔtW)⁻¹(I + ½ΔtW); `None` without spin.
 #[inline]

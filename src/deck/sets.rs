@@ -141,19 +141,13 @@ pub(super) fn parse_set(block: &Block, deck: &mut Deck) -> InputResult<bool> {
             });
         }
         ("GRNOD", "BOX") => {
-            let id = header_id(block, 2, "grnd_ID")?;
-            let mut cards = Cards::new(block);
-            let title = cards.title();
-            let c = cards.next("the card with box_ID")?;
-            let box_id = c.id(1, "box_ID")?;
-            warn_after_box_id(&c, &block.header, box_id, "nodes", &mut deck.warnings);
-            super::warn_surplus(&cards, "box_ID", &mut deck.warnings);
+            let g = read_box_group(block, "grnd_ID", "nodes", &mut deck.warnings)?;
             deck.node_groups.push(NodeGroupCard {
-                id,
-                title,
+                id: g.id,
+                title: g.title,
                 kind: NodeGroupKind::Box,
-                items: vec![box_id as i64],
-                item_locs: vec![(0, c.loc())],
+                items: vec![g.box_id as i64],
+                item_locs: vec![(0, g.box_loc)],
                 loc: block.loc.clone(),
             });
         }
@@ -172,19 +166,13 @@ pub(super) fn parse_set(block: &Block, deck: &mut Deck) -> InputResult<bool> {
             });
         }
         ("GRSHEL", "BOX" | "BOX2") => {
-            let id = header_id(block, 2, "grshel_ID")?;
-            let mut cards = Cards::new(block);
-            let title = cards.title();
-            let c = cards.next("the card with box_ID")?;
-            let box_id = c.id(1, "box_ID")?;
-            warn_after_box_id(&c, &block.header, box_id, "shells", &mut deck.warnings);
-            super::warn_surplus(&cards, "box_ID", &mut deck.warnings);
+            let g = read_box_group(block, "grshel_ID", "shells", &mut deck.warnings)?;
             deck.shell_groups.push(ShellGroupCard {
-                id,
-                title,
+                id: g.id,
+                title: g.title,
                 items: Vec::new(),
                 item_locs: Vec::new(),
-                by_box: Some((box_id, p1 == "BOX")),
+                by_box: Some((g.box_id, p1 == "BOX")),
                 loc: block.loc.clone(),
             });
         }
@@ -279,25 +267,46 @@ pub(super) fn parse_set(block: &Block, deck: &mut Deck) -> InputResult<bool> {
     Ok(true)
 }
 
-/// The reference reads one box (guide: box_ID, columns 1-10); what follows
-/// on the card is not read, and said so.
-fn warn_after_box_id(
-    c: &super::fields::Card,
-    kw: &str,
+/// A group by box (/GRNOD/BOX, /GRSHEL/BOX, /GRSHEL/BOX2): its id, title,
+/// and the one box it takes, with where that card is.
+struct BoxGroup {
+    id: Id,
+    title: String,
     box_id: Id,
+    box_loc: Loc,
+}
+
+/// Reads a group by box. The reference reads one box (guide: box_ID,
+/// columns 1-10); what follows on the card is not read, and said so
+/// (`what` names the group's items).
+fn read_box_group(
+    block: &Block,
+    id_name: &str,
     what: &str,
     warnings: &mut Vec<Warning>,
-) {
+) -> InputResult<BoxGroup> {
+    let id = header_id(block, 2, id_name)?;
+    let mut cards = Cards::new(block);
+    let title = cards.title();
+    let c = cards.next("the card with box_ID")?;
+    let box_id = c.id(1, "box_ID")?;
     let rest = c.text(11, 90);
     if !rest.is_empty() {
         warnings.push(Warning {
             loc: c.loc(),
-            keyword: kw.to_string(),
+            keyword: block.header.clone(),
             message: format!(
                 "'{rest}' after box_ID (columns 11-100) is not read: the group takes the {what} of box {box_id} only, as the reference starter does"
             ),
         });
     }
+    super::warn_surplus(&cards, "box_ID", warnings);
+    Ok(BoxGroup {
+        id,
+        title,
+        box_id,
+        box_loc: c.loc(),
+    })
 }
 
 /// Ten 10-column ids a line until the block ends (or a line of text ends

@@ -475,11 +475,7 @@ pub(crate) fn solid_point_update(
         c: sec.c,
     };
     if dt > 0.0 {
-        let w = [
-            [0.0, 0.5 * (l[0][1] - l[1][0]), 0.5 * (l[0][2] - l[2][0])],
-            [0.5 * (l[1][0] - l[0][1]), 0.0, 0.5 * (l[1][2] - l[2][1])],
-            [0.5 * (l[2][0] - l[0][2]), 0.5 * (l[2][1] - l[1][2]), 0.0],
-        ];
+        let w = crate::vec3::spin(l);
         rotate_stress(sig, &w, dt);
         let old = *sig;
         // The law's strain rate (the deviatoric equivalent √(⅔ D′:D′) for most).
@@ -693,18 +689,24 @@ pub(crate) fn mid_step_gradient(
     hex_gradient(&xm)
 }
 
+/// The unscaled time step of a one-point brick of shape `x` at rest (no
+/// compression term) with the wave speed `c`.
+pub(crate) fn brick_rest_step(sec: &SolidSection, c: f64, x: &[[f64; 3]; 8]) -> f64 {
+    let (_, vol) = hex_gradient(x);
+    solid_time_step_c(sec, c, vol / hex_max_face_area(x), 0.0)
+}
+
 impl Hex8State {
-    /// The unscaled time step of the element at rest in the shape `x` (no
-    /// compression term): the reference shape under small strain, LAW70's
-    /// wave speed of the point's secant modulus.
+    /// [`brick_rest_step`] of the element in the shape `x`: the reference
+    /// shape under small strain, LAW70's wave speed of the point's secant
+    /// modulus.
     pub fn rest_time_step(&self, sec: &SolidSection, x: &[[f64; 3]; 8]) -> f64 {
         let x = self.small.as_deref().map_or(*x, SmallStrainRef::corners);
-        let (_, vol) = hex_gradient(&x);
         let c = match (self.foam.as_deref(), sec.material.foam_tab()) {
             (Some(pt), Some(law)) => law.point_sound_speed(pt),
             _ => sec.c,
         };
-        solid_time_step_c(sec, c, vol / hex_max_face_area(&x), 0.0)
+        brick_rest_step(sec, c, &x)
     }
 }
 
@@ -756,20 +758,25 @@ fn small_strain_geometry(
     v: &[[f64; 3]; 8],
     dt: f64,
 ) -> Option<StepGeometry> {
-    let (b0, vol0) = hex_gradient(&r.corners());
+    let x0 = r.corners();
+    let (b0, vol0) = hex_gradient(&x0);
     if !(vol0 > 0.0) {
         return None;
     }
-    let (bm, volm) = if dt > 0.0 {
-        let mut half = *r;
-        half.turn(&velocity_gradient(v, &b0, vol0), 0.5 * dt);
-        let (bm, volm) = hex_gradient(&half.corners());
-        half.turn(&velocity_gradient(v, &bm, volm), 0.5 * dt);
-        r.x = half.x;
-        (bm, volm)
-    } else {
-        (b0, vol0)
-    };
+    if !(dt > 0.0) {
+        return Some(StepGeometry {
+            bm: b0,
+            volm: vol0,
+            b: b0,
+            vol: vol0,
+            x: x0,
+        });
+    }
+    let mut half = *r;
+    half.turn(&velocity_gradient(v, &b0, vol0), 0.5 * dt);
+    let (bm, volm) = hex_gradient(&half.corners());
+    half.turn(&velocity_gradient(v, &bm, volm), 0.5 * dt);
+    r.x = half.x;
     let x = r.corners();
     let (b, vol) = hex_gradient(&x);
     Some(StepGeometry {
@@ -849,7 +856,10 @@ pub fn hex8_step(
 
     if sec.h > 0.0 {
         // Small strain: ρ₀ and V_ref (research note solid_ismstr1_research.md §4).
-        let rho = sec.material.rho() * st.vol0 / if st.small.is_some() { st.vol0 } else { g.vol };
+        let rho = match st.small {
+            Some(_) => sec.material.rho(),
+            None => sec.material.rho() * st.vol0 / g.vol,
+        };
         out.d_ehg = viscous_hourglass(
             sec, &g.x, v, &g.b, g.vol, rho, p.c, dt, &mut out.f, &mut st.hg,
         );

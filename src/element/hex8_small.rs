@@ -48,9 +48,7 @@ impl SmallStrainRef {
     /// Turns the shape by the spin of the velocity gradient `l` over Δt (the
     /// rotation the stress gets).
     pub fn turn(&mut self, l: &[[f64; 3]; 3], dt: f64) {
-        let w: [[f64; 3]; 3] =
-            std::array::from_fn(|i| std::array::from_fn(|j| 0.5 * (l[i][j] - l[j][i])));
-        if let Some(q) = crate::vec3::spin_rotation(&w, dt) {
+        if let Some(q) = crate::vec3::spin_rotation(&crate::vec3::spin(l), dt) {
             for p in self.x.iter_mut() {
                 *p = std::array::from_fn(|i| q[i][0] * p[0] + q[i][1] * p[1] + q[i][2] * p[2]);
             }

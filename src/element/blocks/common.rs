@@ -139,23 +139,20 @@ pub(super) trait SolidNodalStiffness {
     }
 }
 
-fn one_point_stiffness(sec: &SolidSection, x: &[[f64; 3]], vol0: f64) -> Option<f64> {
-    let x: &[[f64; 3]; 8] = x.try_into().ok()?;
-    let (_, vol) = crate::element::hex8::hex_gradient(x);
-    let lc = vol / crate::element::hex8::hex_max_face_area(x);
-    let dt = crate::element::hex8::solid_time_step(sec, lc, 0.0);
+/// ρ₀V₀/(4Δt_e²) of a one-point brick whose unscaled step at rest is `dt`.
+fn one_point_stiffness(sec: &SolidSection, vol0: f64, dt: f64) -> Option<f64> {
     (dt > 0.0).then(|| sec.material.rho() * vol0 / (4.0 * dt * dt))
 }
 
 impl SolidNodalStiffness for crate::element::hex8::Hex8State {
     fn corner_stiffness(&self, sec: &SolidSection, x: &[[f64; 3]]) -> Option<f64> {
-        let dt = self.rest_time_step(sec, x.try_into().ok()?);
-        (dt > 0.0).then(|| sec.material.rho() * self.vol0 / (4.0 * dt * dt))
+        one_point_stiffness(sec, self.vol0, self.rest_time_step(sec, x.try_into().ok()?))
     }
 }
 impl SolidNodalStiffness for crate::element::heph::HephState {
     fn corner_stiffness(&self, sec: &SolidSection, x: &[[f64; 3]]) -> Option<f64> {
-        one_point_stiffness(sec, x, self.vol0)
+        let dt = crate::element::hex8::brick_rest_step(sec, sec.c, x.try_into().ok()?);
+        one_point_stiffness(sec, self.vol0, dt)
     }
 }
 impl SolidNodalStiffness for crate::element::tet4::Tet4State {}
