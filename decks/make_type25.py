@@ -24,6 +24,16 @@ Units: kg, mm, ms (force kN, stress GPa). Steel bricks: E = 210, nu = 0.3.
                  they reach the face (0.3 ms) and is 4 * K/2 * v * (t - 0.3);
                  with Igap0 = 0 (the tests rewrite it) their gap is 0.5 mm,
                  they start inside it, and the force is 4 * K/2 * v * t.
+* type25_wake    a face between two solids wakes when one of them is deleted:
+                 a 5 mm steel brick A (all its nodes fixed) under a 5 mm brick
+                 B of LAW2 failing at EPS_p_max = 0.02 (B shares A's top
+                 nodes), and a 2.5 mm steel brick C over B's centre, 0.2 mm
+                 above it, driven down at 2 mm/ms. TYPE25 with C's 4 bottom
+                 nodes on /SURF/PART/ALL of A and B (Idel = 1): C crushes B,
+                 B is deleted and its faces leave; C falls through where B was
+                 and stops on A's top face, the face A and B shared, which
+                 only B's deletion made a contact face. On it the force grows
+                 at 4 * K/2 * v (K = B A^2/V of A's top face, A's nodes fixed).
 """
 import os
 import sys
@@ -42,11 +52,11 @@ TEND = 0.3      # ms
 
 
 def inter25(iid, title, surf1, surf2, grnod, istf=0, fric=0.0, viss=0.0, inacti=0,
-            stfac=0.0, ipstif=0, stfac_mdt=0.0, dtstif=0.0, igap0=0):
+            stfac=0.0, ipstif=0, stfac_mdt=0.0, dtstif=0.0, igap0=0, idel=0):
     """/INTER/TYPE25 in the 2023 layout (src/deck/interfaces.rs read_type25)."""
     return [f"/INTER/TYPE25/{iid}", title,
             "#  surf_ID1  surf_ID2      Istf      Ithe      Igap   Irem_i2                Idel     Iedge    IPSTIF",
-            i10(surf1) + i10(surf2) + i10(istf) + i10(0) * 3 + " " * 10 + i10(0) * 2 + i10(ipstif),
+            i10(surf1) + i10(surf2) + i10(istf) + i10(0) * 3 + " " * 10 + i10(idel) + i10(0) + i10(ipstif),
             "#  grnd_IDs                     Gap_scale          %mesh_size           Gap_max_s           Gap_max_m",
             i10(grnod) + " " * 10 + r20(0) * 4,
             "#              Stmin               Stmax     Igap0    Ishape          Edge_angle           Stfac_mdt",
@@ -115,11 +125,57 @@ def type25_edge():
     return name, S, N
 
 
+WAKE_V = 2.0      # mm/ms: C's speed
+WAKE_TEND = 2.9   # ms
+
+
+def type25_wake():
+    """C crushes B, B is deleted, C stops on the face B shared with A."""
+    name = "type25_wake"
+    a = Box(1, 1, (0.0, 0.0, 0.0), (5.0, 5.0, 5.0), (1, 1, 1))
+    # B: A's top nodes (counter-clockwise seen from above), then 4 new ones over them.
+    ring = [a.nid(0, 0, 1), a.nid(1, 0, 1), a.nid(1, 1, 1), a.nid(0, 1, 1)]
+    xy = {n: (x, y) for n, x, y, _ in a.nodes()}
+    b_top = [(11 + k, *xy[n], 10.0) for k, n in enumerate(ring)]
+    b_brick = [(2, ring + [n[0] for n in b_top])]
+    c = Box(21, 3, (1.25, 1.25, 10.2), (2.5, 2.5, 2.5), (1, 1, 1))
+    S = header(name, "TYPE25: the face two bricks share wakes when one is deleted", [
+        "A fixed 5 mm brick A, a 5 mm brick B on it failing at EPS_p_max = 0.02, and a 2.5 mm",
+        f"brick C driven down at {WAKE_V:g} mm/ms onto B's centre: C crushes B, B is deleted, C",
+        "stops on A's top face (decks/make_type25.py)."])
+    S += law1(1, "steel") + prop_solid(1, "bricks")
+    S += ["/MAT/PLAS_JOHNS/2", "fails at eps_p = 0.02", "#              RHO_I", r20(7.85e-6),
+          "#                  E                  Nu     Iflag", r20(210.0) + r20(0.3) + i10(0),
+          "#                  a                   b                   n           EPS_p_max            SIG_max0",
+          r20(0.1) + r20(0.1) + r20(0.5) + r20(0.02) + r20(0),
+          "#                  c           EPS_DOT_0       ICC   Fsmooth               F_cut               Chard",
+          r20(0) + r20(0) + i10(1) + i10(0) + r20(0) + r20(0),
+          "#                  m              T_melt              rhoC_p                 T_r", r20(0) * 4]
+    S += part(1, "A", 1, 1) + part(2, "B", 1, 2) + part(3, "C", 1, 1)
+    S += nodes_block(a.nodes() + b_top + c.nodes())
+    S += bricks_block(1, a.bricks()) + bricks_block(2, b_brick) + bricks_block(3, c.bricks())
+    S += group(1, "A", [n[0] for n in a.nodes()])
+    S += group(2, "C", [n[0] for n in c.nodes()])
+    S += group(3, "C bottom", c.face(2, 0))
+    S += bcs(1, "A fixed", "111 000", 1)
+    # C translates: a lone brick whose nodes all move alike in z would
+    # otherwise breathe in x-y, a mode above its step's bound.
+    S += bcs(2, "C held in x and y", "110 000", 2)
+    S += funct(1, "constant", [(0.0, 1.0), (100.0, 1.0)])
+    S += impvel(1, "C down", 1, "Z", 2, -WAKE_V)
+    S += ["/SURF/PART/ALL/1", "A and B, every face", i10(1) + i10(2)]
+    S += inter25(1, "C's bottom nodes on A and B", 0, 1, 3, idel=1)
+    S += ["/END"]
+    N = engine(name, WAKE_TEND, -50, comments=[f"{WAKE_TEND:g} ms at {WAKE_V:g} mm/ms."])
+    return name, S, N
+
+
 def type25_mass():
     return type25_block("type25_mass", mass_stiffness=True)
 
 
-MAKERS = dict(type25_block=type25_block, type25_mass=type25_mass, type25_edge=type25_edge)
+MAKERS = dict(type25_block=type25_block, type25_mass=type25_mass, type25_edge=type25_edge,
+              type25_wake=type25_wake)
 
 if __name__ == "__main__":
     out = sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(os.path.abspath(__file__))

@@ -21,6 +21,7 @@ pub mod friction;
 pub mod gap;
 pub mod geometry;
 pub mod inacti3;
+mod inner_faces;
 pub mod interfaces;
 pub mod key;
 mod pairs;
@@ -52,9 +53,20 @@ struct Removal {
     sec_off: Vec<bool>,
 }
 
-/// Idel: element (kind index, element index) → (interface, pass, segment or
-/// secondary-node index, is a secondary node).
-type IdelIndex = std::collections::HashMap<(u8, u32), Vec<(u32, u32, u32, bool)>>;
+/// What an element's deletion does to one entity of a pass.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum OnDeletion {
+    /// Idel: one of a main segment's elements is gone.
+    Segment,
+    /// Idel = 1, 2: one of a secondary node's (edge's) elements is gone.
+    Node,
+    /// A dormant face between two solids loses its neighbour: it wakes.
+    Wake,
+}
+
+/// Element (kind index, element index) → (interface, pass, segment or
+/// secondary index, what its deletion does there).
+type IdelIndex = std::collections::HashMap<(u8, u32), Vec<(u32, u32, u32, OnDeletion)>>;
 
 /// Segments and nodes an interface removed at one cycle (Idel), for the listing.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -85,6 +97,40 @@ struct PassRun {
     walk_pair: Vec<(u32, PairState)>,
     /// Idel: removed segments and nodes (empty vectors when Idel is off).
     removal: Removal,
+}
+
+/// A pass's removal state at the start: Idel's counts of living elements,
+/// and every dormant face (`Pass::seg_wakers`) off until woken.
+fn removal_of(p: &setup::Pass, rule: Option<setup::IdelRule>) -> Removal {
+    if rule.is_none() && p.seg_wakers.is_empty() {
+        return Removal::default();
+    }
+    let mut seg_off = vec![false; p.segs.len()];
+    for &(m, _) in &p.seg_wakers {
+        seg_off[m as usize] = true;
+    }
+    let nodes = rule.is_some_and(|r| r.nodes);
+    Removal {
+        seg_alive: match rule {
+            Some(_) => (0..p.segs.len())
+                .map(|m| p.elements_of_segment(m).len() as u32)
+                .collect(),
+            None => Vec::new(),
+        },
+        sec_alive: if nodes {
+            (0..p.n_sec())
+                .map(|k| p.elements_of_secondary(k).len() as u32)
+                .collect()
+        } else {
+            Vec::new()
+        },
+        seg_off,
+        sec_off: if nodes {
+            vec![false; p.n_sec()]
+        } else {
+            Vec::new()
+        },
+    }
 }
 
 impl PassRun {
@@ -243,27 +289,7 @@ impl ContactSystem {
                             })
                             .collect();
                         let n = mine.len();
-                        let removal = match setup::IdelRule::of(it.idel) {
-                            Some(rule) => Removal {
-                                seg_alive: (0..p.segs.len())
-                                    .map(|m| p.elements_of_segment(m).len() as u32)
-                                    .collect(),
-                                sec_alive: if rule.nodes {
-                                    (0..p.n_sec())
-                                        .map(|k| p.elements_of_secondary(k).len() as u32)
-                                        .collect()
-                                } else {
-                                    Vec::new()
-                                },
-                                seg_off: vec![false; p.segs.len()],
-                                sec_off: if rule.nodes {
-                                    vec![false; p.n_sec()]
-                                } else {
-                                    Vec::new()
-                                },
-                            },
-                            None => Removal::default(),
-                        };
+                        let removal = removal_of(p, setup::IdelRule::of(it.idel));
                         PassRun {
                             mine,
                             nodes,
@@ -282,24 +308,27 @@ impl ContactSystem {
         let sums = vec![InterfaceSums::default(); setup.interfaces.len()];
         let mut idel_index = IdelIndex::new();
         for (ii, it) in setup.interfaces.iter().enumerate() {
-            if setup::IdelRule::of(it.idel).is_none() {
-                continue;
-            }
             for (pi, p) in it.passes.iter().enumerate() {
+                let mut add = |e: (u8, u32), idx: usize, what: OnDeletion| {
+                    idel_index
+                        .entry(e)
+                        .or_default()
+                        .push((ii as u32, pi as u32, idx as u32, what));
+                };
+                for &(m, e) in &p.seg_wakers {
+                    add(e, m as usize, OnDeletion::Wake);
+                }
+                if setup::IdelRule::of(it.idel).is_none() {
+                    continue;
+                }
                 for m in 0..p.segs.len() {
                     for &e in p.elements_of_segment(m) {
-                        idel_index
-                            .entry(e)
-                            .or_default()
-                            .push((ii as u32, pi as u32, m as u32, false));
+                        add(e, m, OnDeletion::Segment);
                     }
                 }
                 for k in 0..p.n_sec() {
                     for &e in p.elements_of_secondary(k) {
-                        idel_index
-                            .entry(e)
-                            .or_default()
-                            .push((ii as u32, pi as u32, k as u32, true));
+                        add(e, k, OnDeletion::Node);
                     }
                 }
             }
@@ -419,6 +448,8 @@ impl ContactSystem {
         } else {
             world.max_f64(&mut motion[..1]);
         }
+        // A face woken by a deletion needs a sort to become a candidate.
+        let mut woke = false;
         if self.tracks_deletion() && motion[1] > 0.0 {
             let mine: Vec<u64> = deleted
                 .iter()
@@ -431,7 +462,7 @@ impl ContactSystem {
                 .collect();
             all.sort_unstable();
             all.dedup();
-            self.apply_deletions(&all);
+            woke = self.apply_deletions(&all);
         }
         let margin = self
             .setup
@@ -439,7 +470,7 @@ impl ContactSystem {
             .iter()
             .map(|i| i.margin)
             .fold(f64::INFINITY, f64::min);
-        let sort = !self.sorted_once || self.always_sort || 2.0 * motion[0] >= margin;
+        let sort = !self.sorted_once || self.always_sort || woke || 2.0 * motion[0] >= margin;
         if sort {
             self.rebuild_plan(world);
         }
@@ -517,7 +548,8 @@ impl ContactSystem {
     /// none of whose elements is alive. The pairs of removed segments and
     /// nodes leave the candidate lists now, with their memory (friction,
     /// tie); the next sorts never find them again.
-    fn apply_deletions(&mut self, dead: &[(u8, u32)]) {
+    fn apply_deletions(&mut self, dead: &[(u8, u32)]) -> bool {
+        let mut woke = false;
         let mut touched: Vec<(usize, usize)> = Vec::new();
         let mut counts = vec![(0u64, 0u64); self.setup.interfaces.len()];
         for e in dead {
@@ -527,28 +559,40 @@ impl ContactSystem {
             let Some(list) = self.idel_index.get(e) else {
                 continue;
             };
-            for &(ii, pi, idx, is_node) in list {
+            for &(ii, pi, idx, what) in list {
                 let (ii, pi, idx) = (ii as usize, pi as usize, idx as usize);
-                let rule = setup::IdelRule::of(self.setup.interfaces[ii].idel).expect("indexed");
+                let rule = setup::IdelRule::of(self.setup.interfaces[ii].idel);
                 let r = &mut self.runs[ii][pi].removal;
                 // A secondary node leaves when none of its elements lives;
                 // a secondary edge as a main entity does (Idel 1: all, 2: any).
                 let edge = self.setup.interfaces[ii].passes[pi].is_edge_pass();
-                if is_node {
-                    r.sec_alive[idx] -= 1;
-                    let gone = r.sec_alive[idx] == 0 || (edge && !rule.all);
-                    if gone && !r.sec_off[idx] {
-                        r.sec_off[idx] = true;
-                        counts[ii].1 += 1;
-                        touched.push((ii, pi));
+                match (what, rule) {
+                    (OnDeletion::Wake, _) => {
+                        // Its owner still lives (or Idel keeps faces of the dead).
+                        let owner_lives = r.seg_alive.get(idx).is_none_or(|&a| a > 0);
+                        if r.seg_off[idx] && owner_lives {
+                            r.seg_off[idx] = false;
+                            woke = true;
+                        }
                     }
-                } else {
-                    r.seg_alive[idx] -= 1;
-                    if (!rule.all || r.seg_alive[idx] == 0) && !r.seg_off[idx] {
-                        r.seg_off[idx] = true;
-                        counts[ii].0 += 1;
-                        touched.push((ii, pi));
+                    (OnDeletion::Node, Some(rule)) => {
+                        r.sec_alive[idx] -= 1;
+                        let gone = r.sec_alive[idx] == 0 || (edge && !rule.all);
+                        if gone && !r.sec_off[idx] {
+                            r.sec_off[idx] = true;
+                            counts[ii].1 += 1;
+                            touched.push((ii, pi));
+                        }
                     }
+                    (OnDeletion::Segment, Some(rule)) => {
+                        r.seg_alive[idx] -= 1;
+                        if (!rule.all || r.seg_alive[idx] == 0) && !r.seg_off[idx] {
+                            r.seg_off[idx] = true;
+                            counts[ii].0 += 1;
+                            touched.push((ii, pi));
+                        }
+                    }
+                    (_, None) => unreachable!("indexed only with Idel"),
                 }
             }
         }
@@ -608,6 +652,7 @@ impl ContactSystem {
                 nodes_total: tot.1,
             });
         }
+        woke
     }
 
     /// New ghost plan from the current positions (collective).

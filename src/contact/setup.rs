@@ -16,6 +16,7 @@ use crate::model::{ElementKind, InterfaceKind};
 use std::collections::HashMap;
 
 use super::element_data::{bulk, element_volume, node_elements};
+use super::inner_faces::{self, InnerFace};
 
 pub use super::interfaces::layout::{
     closest_segment, ContactSetup, IdelRule, Interface, Pass, NONE,
@@ -161,8 +162,9 @@ fn segment_data(
     faces: &FaceIndex,
     seg: &[u32; 4],
     ty: &dyn InterfaceType,
+    owner: Option<(u8, u32)>,
 ) -> Result<SegData, String> {
-    let Some(&(ki, e)) = faces.map.get(&face_key(seg)) else {
+    let Some((ki, e)) = owner.or_else(|| faces.map.get(&face_key(seg)).copied()) else {
         return Err(format!(
             "main segment {} {} {} {} is not the face of a shell or solid element: its stiffness is undefined (each main segment must lie on an element)",
             m.nodes.ids[seg[0] as usize], m.nodes.ids[seg[1] as usize], m.nodes.ids[seg[2] as usize], m.nodes.ids[seg[3] as usize]
@@ -201,7 +203,7 @@ fn segment_data(
 struct Surfaces<'a> {
     faces: FaceIndex,
     /// Every element of each face (empty unless an interface deletes, or
-    /// refuses faces between two solids).
+    /// keeps faces between two solids dormant).
     face_elems: HashMap<[u32; 4], Vec<(u8, u32)>>,
     /// Global node index of each cnode, ascending.
     all: &'a [u32],
@@ -241,7 +243,7 @@ pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<ContactSetup, String> {
     let any_idel = m.interfaces.iter().any(|i| {
         TypeOptions::from_card(&i.card.kind).is_some_and(|(_, c)| IdelRule::of(c.idel).is_some())
     });
-    // Types that refuse faces between two solids check them on the same table.
+    // Types that keep faces between two solids dormant find them on the same table.
     let any_inner_check = m.interfaces.iter().any(|i| {
         TypeOptions::from_card(&i.card.kind)
             .is_some_and(|(t, _)| !t.implementation().inner_solid_faces_as_segments())
@@ -396,9 +398,13 @@ fn build_pass(
     kw: &str,
 ) -> Result<Pass, String> {
     let main = sides.main;
-    if !ty.inner_solid_faces_as_segments() {
-        refuse_inner_solid_faces(m, &surfaces.face_elems, main, kw)?;
-    }
+    // Faces between two solids: dormant segments of their owner (TYPE25).
+    let inner = if ty.inner_solid_faces_as_segments() {
+        vec![None; main.len()]
+    } else {
+        inner_faces::classify(m, &surfaces.face_elems, main, |s| face_key(s))
+            .map_err(|e| format!("{kw}: {e}"))?
+    };
     let mut segs = Vec::new();
     let mut seg_k = Vec::new();
     let mut seg_gap = Vec::new();
@@ -406,8 +412,9 @@ fn build_pass(
     let mut seg_area = Vec::new();
     let mut seg_elem = Vec::new();
     let mut max_diag = 0.0f64;
-    for s in main.iter() {
-        let d = segment_data(m, &surfaces.faces, s, ty).map_err(|e| format!("{kw}: {e}"))?;
+    for (s, f) in main.iter().zip(&inner) {
+        let owner = f.map(|f| f.owner);
+        let d = segment_data(m, &surfaces.faces, s, ty, owner).map_err(|e| format!("{kw}: {e}"))?;
         let x = s.map(|n| m.nodes.x[n as usize]);
         let tri = s[3] == s[2];
         let lm = geo::min_edge(&x, tri);
@@ -437,8 +444,8 @@ fn build_pass(
         Some(own) => {
             let mut h: HashMap<u32, f64> = HashMap::new();
             for s in own.iter() {
-                let d =
-                    segment_data(m, &surfaces.faces, s, ty).map_err(|e| format!("{kw}: {e}"))?;
+                let d = segment_data(m, &surfaces.faces, s, ty, None)
+                    .map_err(|e| format!("{kw}: {e}"))?;
                 for &n in s {
                     let e = h.entry(n).or_insert(0.0);
                     *e = e.max(d.k);
@@ -466,8 +473,13 @@ fn build_pass(
     }
     let (node_segs_ptr, node_segs_key, node_segs) = segments_around_nodes(&segs);
     let sec_c: Vec<u32> = sec.iter().map(|&n| surfaces.cn(n)).collect();
-    let idel = idel_tables(m, surfaces, common.idel, main, sec);
+    let idel = idel_tables(m, surfaces, common.idel, main, &inner, sec);
+    let seg_wakers = (0..main.len() as u32)
+        .zip(&inner)
+        .filter_map(|(i, f)| f.map(|f| (i, f.waker)))
+        .collect();
     let mut pass = Pass {
+        seg_wakers,
         seg_elems_ptr: idel.0,
         seg_elems: idel.1,
         sec_elems_ptr: idel.2,
@@ -494,36 +506,6 @@ fn build_pass(
         pass.sec_start_seg = starter_closest_segments(m, surfaces.all, &pass);
     }
     Ok(pass)
-}
-
-/// A main segment that is a face of two solids (an inner face, as
-/// /SURF/PART/ALL gives) is refused by types that would make it a contact
-/// segment only once one of the solids is deleted.
-fn refuse_inner_solid_faces(
-    m: &Model,
-    faces: &HashMap<[u32; 4], Vec<(u8, u32)>>,
-    main: &[[u32; 4]],
-    kw: &str,
-) -> Result<(), String> {
-    let solids = |k: u8| {
-        matches!(
-            ElementKind::ALL[k as usize],
-            ElementKind::Brick8 | ElementKind::Tetra4
-        )
-    };
-    for seg in main {
-        let n = faces
-            .get(&face_key(seg))
-            .map_or(0, |v| v.iter().filter(|e| solids(e.0)).count());
-        if n >= 2 {
-            let id = |c: u32| m.nodes.ids[c as usize];
-            return Err(format!(
-                "{kw}: main segment {} {} {} {} is a face between two solids (an inner face, e.g. of /SURF/PART/ALL): this type makes such a face a contact segment only once one of its solids is deleted, which is not computed yet; expected outer faces (/SURF/PART, /SURF/PART/EXT)",
-                id(seg[0]), id(seg[1]), id(seg[2]), id(seg[3])
-            ));
-        }
-    }
-    Ok(())
 }
 
 /// The segments around each main node, CSR over the nodes of `segs`
@@ -565,6 +547,7 @@ fn idel_tables(
     surfaces: &Surfaces,
     idel: i64,
     main: &[[u32; 4]],
+    inner: &[Option<InnerFace>],
     sec: &[u32],
 ) -> IdelTables {
     let mut seg_elems_ptr = Vec::new();
@@ -573,8 +556,11 @@ fn idel_tables(
     let mut sec_elems = Vec::new();
     if let Some(rule) = IdelRule::of(idel) {
         seg_elems_ptr.push(0);
-        for s in main.iter() {
-            if let Some(v) = surfaces.face_elems.get(&face_key(s)) {
+        for (s, f) in main.iter().zip(inner) {
+            // An inner face is its owner's only: it leaves with it.
+            if let Some(f) = f {
+                seg_elems.push(f.owner);
+            } else if let Some(v) = surfaces.face_elems.get(&face_key(s)) {
                 seg_elems.extend_from_slice(v);
             }
             seg_elems_ptr.push(seg_elems.len() as u32);

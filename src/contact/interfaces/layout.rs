@@ -68,6 +68,11 @@ pub struct Pass {
     /// deleted).
     pub sec_elems_ptr: Vec<u32>,
     pub sec_elems: Vec<(u8, u32)>,
+    /// Dormant main segments (faces between two solids, TYPE25): each with
+    /// the solid whose deletion wakes it, (segment, (kind index, element
+    /// index)), by segment. A dormant segment is no candidate until then.
+    #[serde(default)]
+    pub seg_wakers: Vec<(u32, (u8, u32))>,
 }
 
 impl Pass {

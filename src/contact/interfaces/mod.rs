@@ -350,8 +350,8 @@ pub trait InterfaceType: Sync {
     }
 
     /// Whether a face between two solids may be a main segment from the
-    /// start (TYPE7, 3, 5: yes; TYPE25 activates such faces only when a
-    /// solid is deleted, which is not computed: it refuses them).
+    /// start (TYPE7, 3, 5: yes; TYPE25 keeps such a face dormant until one
+    /// of its solids is deleted, `contact::inner_faces`).
     fn inner_solid_faces_as_segments(&self) -> bool {
         true
     }

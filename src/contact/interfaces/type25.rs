@@ -29,6 +29,9 @@
 //! - Idel as TYPE7's: a main segment leaves when all (±1) or any (±2) of
 //!   its elements are deleted, and (1, 2) a secondary node none of whose
 //!   elements lives.
+//! - A face between two solids (/SURF/PART/ALL) is dormant while both live
+//!   and becomes the survivor's contact face when the other is deleted
+//!   (`contact::inner_faces`).
 //! - Time step: no kinematic step (the penalty is constant); K + C/Δt per
 //!   pair enters the nodal step (EQ. 8.8.5.2).
 
@@ -174,8 +177,7 @@ impl InterfaceType for Type25 {
     }
 
     /// The reference engine keeps a face between two solids out of contact
-    /// until one of them is deleted; that activation is not computed, so
-    /// such faces are refused.
+    /// until one of them is deleted (`contact::inner_faces`).
     fn inner_solid_faces_as_segments(&self) -> bool {
         false
     }

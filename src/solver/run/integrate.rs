@@ -12,23 +12,30 @@ use super::setup::{Ctx, State};
 /// velocities before and after the step: f·v_after alone overstates the
 /// work by (f·Δt)²/2M, which adds up when friction forces are large and
 /// their work small. A rigid body's node moves with its body, not by its
-/// own force over its own mass: it takes its velocity after the step.
+/// own force over its own mass: it takes its velocity after the step. An
+/// imposed velocity takes the mean of the one before and the one imposed
+/// (the forces did not move it: a node driven into a stiff contact would
+/// otherwise book f²Δt²/2M a step).
 pub(super) fn work(cx: &Ctx, s: &mut State, dt_v: f64) {
     let mass = cx.mass.read().unwrap();
     for l in 0..cx.n {
+        let imposed = std::mem::take(&mut s.imposed_before[l]);
         if !cx.owned[l] {
             continue;
         }
         for k in 0..3 {
             s.w_ext.add(s.fext[l][k] * s.v[l][k] * s.dt);
             s.w_ext.add(s.fext[l][3 + k] * s.vr[l][k] * s.dt);
-            let dv = if s.fixed[l][k] || mass[l] <= 0.0 || cx.tied_tr[l] || cx.in_body[l] {
-                0.0
+            let v = s.v[l][k];
+            let mean = if s.fixed[l][k] || mass[l] <= 0.0 || cx.tied_tr[l] || cx.in_body[l] {
+                v
+            } else if let Some(before) = imposed[k] {
+                0.5 * (before + v)
             } else {
-                (s.fext[l][k] - s.fint[l][k] + s.fcont[l][k] + s.ftie[l][k]) / mass[l] * dt_v
+                v - 0.5 * (s.fext[l][k] - s.fint[l][k] + s.fcont[l][k] + s.ftie[l][k]) / mass[l]
+                    * dt_v
             };
-            s.e_contact
-                .add(-s.fcont[l][k] * (s.v[l][k] - 0.5 * dv) * dt_v);
+            s.e_contact.add(-s.fcont[l][k] * mean * dt_v);
         }
     }
     // The reactions of analytic contact surfaces (TYPE14) on their rigid

@@ -343,6 +343,9 @@ fn impose(cx: &Ctx, s: &mut State, l: usize, d: usize, val: f64, before: f64) {
         s.w_ext.add(reaction_work(m, before, *slot, val));
     }
     *slot = val;
+    if d < 3 {
+        s.imposed_before[l][d] = Some(before);
+    }
 }
 
 /// The work of the reaction that sets a velocity to `val` (it was `before`

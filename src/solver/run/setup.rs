@@ -123,6 +123,10 @@ pub(super) struct State {
     pub v: Vec<[f64; 3]>,
     pub vr: Vec<[f64; 3]>,
     pub fixed: Vec<[bool; 6]>,
+    /// This cycle's imposed velocities (/IMPVEL, /IMPDISP, FGEO): each
+    /// imposed direction's velocity before the step, for the contact
+    /// energy's mean velocity (`integrate::work`); cleared there.
+    pub imposed_before: Vec<[Option<f64>; 3]>,
     pub ftie: Vec<[f64; 6]>,
     pub fint: Vec<[f64; SLOT]>,
     pub fext: Vec<[f64; SLOT]>,
@@ -470,6 +474,7 @@ pub(super) fn initial_state(
         x,
         v,
         vr,
+        imposed_before: vec![[None; 3]; fixed.len()],
         fixed,
         ftie: vec![[0.0f64; 6]; n],
         fint: vec![[0.0f64; SLOT]; n],
