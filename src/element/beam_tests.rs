@@ -42,42 +42,45 @@ fn start() -> ([[f64; 3]; 2], BeamState) {
     (x, beam_init(&x, Some([0.0, 1.0, 0.0])))
 }
 
-/// Node 1 clamped, node 2 turned by θ about z in one step: the end moments
+/// Node 1 clamped, node 2 turned by θ about z, then about y, in one step: the end moments
 /// are the beam's exact 4EI/L (near end, Timoshenko (4+Φ)/(1+Φ)) and
 /// 2EI/L (far end, (2−Φ)/(1+Φ)), the shear 6EI/L²·θ/(1+Φ).
 #[test]
 fn end_rotation_gives_the_exact_beam_stiffness() {
     let m = card(MaterialLaw::Elastic);
     let (e, g) = (m.young(), m.shear_modulus());
-    for ishear in [1, 0] {
-        let sec = BeamSection::new(&prop(ishear, 0.0), &m).unwrap();
-        let (x, mut st) = start();
-        let th = 1e-4;
-        let w = [[0.0; 3], [0.0, 0.0, th]];
-        let out = beam_step(&sec, &x, &[[0.0; 3]; 2], &w, 1.0, &mut st);
-        let i = 20000.0;
-        let phi = if ishear == 1 {
-            0.0
-        } else {
-            12.0 * e * i / (5.0 / 6.0 * g * 400.0 * L * L)
-        };
-        let near = (4.0 + phi) / (1.0 + phi) * e * i / L * th;
-        let far = (2.0 - phi) / (1.0 + phi) * e * i / L * th;
-        let shear = 6.0 * e * i / (L * L) * th / (1.0 + phi);
-        let close = |a: f64, b: f64| (a - b).abs() < 1e-9 * b.abs();
-        assert!(
-            close(out.f[1][5], near),
-            "Ishear {ishear}: {} vs {near}",
-            out.f[1][5]
-        );
-        assert!(
-            close(out.f[0][5], far),
-            "Ishear {ishear}: {} vs {far}",
-            out.f[0][5]
-        );
-        assert!(close(-out.f[1][1], shear) && close(out.f[0][1], shear));
-        // The work of the moment equals the stored energy ½·θ·M₂.
-        assert!((st.eint - 0.5 * th * near).abs() < 1e-9 * st.eint);
+    // About z (Izz, shear along y) and about y (Iyy, shear along z).
+    for (axis, i, shear_dir) in [(2usize, 20000.0, 1usize), (1, 13333.3333, 2)] {
+        for ishear in [1, 0] {
+            let sec = BeamSection::new(&prop(ishear, 0.0), &m).unwrap();
+            let (x, mut st) = start();
+            let th = 1e-4;
+            let mut w = [[0.0; 3]; 2];
+            w[1][axis] = th;
+            let out = beam_step(&sec, &x, &[[0.0; 3]; 2], &w, 1.0, &mut st);
+            let phi = if ishear == 1 {
+                0.0
+            } else {
+                12.0 * e * i / (5.0 / 6.0 * g * 400.0 * L * L)
+            };
+            let near = (4.0 + phi) / (1.0 + phi) * e * i / L * th;
+            let far = (2.0 - phi) / (1.0 + phi) * e * i / L * th;
+            let shear = 6.0 * e * i / (L * L) * th / (1.0 + phi);
+            let close = |a: f64, b: f64| (a - b).abs() < 1e-9 * b.abs();
+            let (m1, m0) = (out.f[1][3 + axis], out.f[0][3 + axis]);
+            assert!(
+                close(m1, near),
+                "axis {axis} Ishear {ishear}: {m1} vs {near}"
+            );
+            assert!(close(m0, far), "axis {axis} Ishear {ishear}: {m0} vs {far}");
+            let (s1, s0) = (out.f[1][shear_dir], out.f[0][shear_dir]);
+            assert!(
+                close(s1.abs(), shear) && close(s0, -s1),
+                "axis {axis}: {s0} {s1} vs {shear}"
+            );
+            // The work of the moment equals the stored energy ½·θ·M.
+            assert!((st.eint - 0.5 * th * near).abs() < 1e-9 * st.eint);
+        }
     }
 }
 

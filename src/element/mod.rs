@@ -18,6 +18,8 @@ pub mod ortho;
 pub mod shell3;
 pub mod shell4;
 pub mod shell4_qbat;
+#[cfg(test)]
+mod solid_bending_tests;
 pub mod spring;
 pub mod spring_beam;
 pub mod spring_general;

@@ -491,7 +491,8 @@ fn stretch_patch(
 
 /// Patch test: distorted quads (one, and a 2×2 patch with a moved interior
 /// node) under a uniform stretch rate: uniform membrane stress equal to the
-/// plane-stress value, zero force on the interior node, no hourglass energy.
+/// plane-stress value, zero force on the interior node, no hourglass energy;
+/// every formulation (BT Ishell 1–4, QEPH 24), Ishell 2 on rectangles.
 #[test]
 fn patch_test_uniform_stretch() {
     let m = elastic();
@@ -503,21 +504,39 @@ fn patch_test_uniform_stretch() {
     let e1 = steps as f64 * dt * d1 / (1.0 + 0.5 * dt * d1);
     let e2 = steps as f64 * dt * d2 / (1.0 + 0.5 * dt * d2);
     let want = [a11 * (e1 + nu * e2), a11 * (e2 + nu * e1), 0.0];
-    for ishell in [1, 3, 4] {
+    // Ishell 2's hourglass vectors are not made orthogonal to the linear
+    // fields (reference guide /PROP/SHELL): it passes on rectangles only.
+    for ishell in [1, 2, 3, 4, 24] {
         let sec = section(ishell, 3, 0.1, &m);
-        let single = flat_distorted_quad();
+        let rect = ishell == 2;
+        let single = if rect {
+            [
+                [0.0, 0.0, 0.0],
+                [9.0, 0.0, 0.0],
+                [9.0, 4.0, 0.0],
+                [0.0, 4.0, 0.0],
+            ]
+        } else {
+            flat_distorted_quad()
+        };
         let mut nodes1: Vec<[f64; 3]> = single.to_vec();
-        let patch_nodes = vec![
-            [0.0, 0.0, 0.0],
-            [4.0, 0.3, 0.0],
-            [9.0, 0.0, 0.0],
-            [-0.4, 4.5, 0.0],
-            [5.1, 3.6, 0.0], // distorted interior node
-            [10.0, 5.0, 0.0],
-            [0.0, 10.0, 0.0],
-            [4.2, 9.6, 0.0],
-            [9.5, 10.3, 0.0],
-        ];
+        let patch_nodes = if rect {
+            (0..9)
+                .map(|i| [5.0 * (i % 3) as f64, 4.0 * (i / 3) as f64, 0.0])
+                .collect()
+        } else {
+            vec![
+                [0.0, 0.0, 0.0],
+                [4.0, 0.3, 0.0],
+                [9.0, 0.0, 0.0],
+                [-0.4, 4.5, 0.0],
+                [5.1, 3.6, 0.0], // distorted interior node
+                [10.0, 5.0, 0.0],
+                [0.0, 10.0, 0.0],
+                [4.2, 9.6, 0.0],
+                [9.5, 10.3, 0.0],
+            ]
+        };
         let mut nodes2 = patch_nodes.clone();
         let conn2 = [[0, 1, 4, 3], [1, 2, 5, 4], [3, 4, 7, 6], [4, 5, 8, 7]];
         for (nodes, conn) in [
@@ -558,15 +577,25 @@ fn patch_test_uniform_stretch() {
 
 /// Pure curvature rate on a flat rectangle: M = D κ with D = E t³/(12(1−ν²)),
 /// exact for N = 3 and 5 with the theory manual's bending weights; the corner
-/// moments carry it (Σ_I m_y,I x_I = A M_xx).
+/// moments carry it (Σ_I m_y,I x_I = A M_xx); every formulation (BT Ishell
+/// 1–4, QEPH 24).
 #[test]
 fn pure_bending_moment() {
     let m = elastic();
     let (e, nu) = (m.young(), m.poisson());
     let t = 1.5;
     let dstiff = e * t * t * t / (12.0 * (1.0 - nu * nu));
-    for n in [3, 5, 2, 4] {
-        let sec = section(1, n, 0.01, &m);
+    for (ishell, n) in [
+        (1, 3),
+        (1, 5),
+        (1, 2),
+        (1, 4),
+        (2, 5),
+        (3, 5),
+        (4, 5),
+        (24, 5),
+    ] {
+        let sec = section(ishell, n, 0.01, &m);
         let x = [
             [-2.0, -1.5, 0.0],
             [2.0, -1.5, 0.0],
@@ -586,7 +615,7 @@ fn pure_bending_moment() {
         let (_, mr, q) = shell4_resultants(&sec, t, &el.sig);
         assert!(
             (mr[0] - dstiff * kappa).abs() < 1e-10 * dstiff * kappa,
-            "N={n}: M_xx {} vs {}",
+            "Ishell {ishell} N={n}: M_xx {} vs {}",
             mr[0],
             dstiff * kappa
         );
@@ -596,14 +625,14 @@ fn pure_bending_moment() {
         let area = 12.0;
         assert!(
             (sum - area * mr[0]).abs() < 1e-9 * area * mr[0],
-            "N={n}: Σ m_y x = {sum} vs {}",
+            "Ishell {ishell} N={n}: Σ m_y x = {sum} vs {}",
             area * mr[0]
         );
         // Energy: ½ M κ A.
         let want = 0.5 * (mr[0] * kappa) * area;
         assert!(
             (el.st.eint - want).abs() < 1e-9 * want,
-            "N={n}: E_int {} vs ½Mκ A = {want}",
+            "Ishell {ishell} N={n}: E_int {} vs ½Mκ A = {want}",
             el.st.eint
         );
     }

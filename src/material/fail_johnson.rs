@@ -161,6 +161,34 @@ mod tests {
         assert_eq!(d, 0.3);
     }
 
+    /// A uniaxial tension path (σ* = 1/3) at three strain rates, 1, 100 and
+    /// 10⁴ times ε̇₀: the point fails after ε_f(σ*, ε̇) of plastic strain,
+    /// [D1 + D2 e^(D3/3)](1 + D4 ln(ε̇/ε̇₀)), to one increment.
+    #[test]
+    fn a_tension_path_fails_at_the_strain_of_its_rate() {
+        let f = FailJohnson {
+            eps_dot_0: 2.0,
+            ..jc([0.05, 0.1, -0.5, 0.15, 0.0], 1)
+        };
+        let dep = 1e-5;
+        for ratio in [1.0f64, 100.0, 1e4] {
+            let rate = ratio * 2.0;
+            let want = (0.05 + 0.1 * (-0.5f64 / 3.0).exp()) * (1.0 + 0.15 * ratio.ln());
+            let (mut s, mut d, mut ep) = ([2.0, 0.0, 0.0, 0.0, 0.0, 0.0], 0.0, 0.0);
+            loop {
+                ep += dep;
+                if f.solid(&mut s, &mut d, dep, rate, 0.0) {
+                    break;
+                }
+                assert!(ep < 10.0 * want, "rate {ratio}: no failure by {ep}");
+            }
+            assert!(
+                (ep - want).abs() <= 1.01 * dep,
+                "ε̇/ε̇₀ {ratio}: fails at {ep}, ε_f {want}"
+            );
+        }
+    }
+
     /// Ifail_so 2, 3, 4 keep the element with the stress the option leaves.
     #[test]
     fn ifail_so_options_release_the_stress() {

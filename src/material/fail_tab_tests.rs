@@ -193,3 +193,37 @@ fn solid_options_release_the_stress_or_delete() {
     let (mut s, mut d) = ([3.0, 0.0, 0.0, 0.0, 0.0, 0.0], 0.99);
     assert!(g.solid(&mut s, &mut d, 0.1, &at));
 }
+
+/// A uniaxial tension path on a solid point (η = 1/3) at three strain rates:
+/// the point fails after Dcrit·ε_f(η, ε̇) of plastic strain (n = 1), ε_f
+/// interpolated between the two rate curves, to one increment.
+#[test]
+fn a_tension_path_fails_at_the_strain_of_its_rate() {
+    let mut c = card(1, 0.0, 1.1, 1.0);
+    c.ifail_so = 1;
+    let f = FailTab::new(&c).unwrap();
+    let eta = 1.0 / 3.0;
+    let base = 0.3 + 0.2 * eta;
+    let dep = 1e-5;
+    for r in [1e-5, 0.25, 0.5] {
+        let ef = 0.5 * base + 0.5 * base * (r - 1e-5) / (0.5 - 1e-5);
+        let at = FailAt {
+            rate: r,
+            len0: 1.0,
+            tstar: 0.0,
+        };
+        let (mut s, mut d, mut ep) = ([3.0, 0.0, 0.0, 0.0, 0.0, 0.0], 0.0, 0.0);
+        loop {
+            ep += dep;
+            if f.solid(&mut s, &mut d, dep, &at) {
+                break;
+            }
+            assert!(ep < 10.0 * ef, "rate {r}: no failure by {ep}");
+        }
+        let want = 1.1 * ef;
+        assert!(
+            (ep - want).abs() <= 1.01 * dep,
+            "rate {r}: fails at {ep}, Dcrit·ε_f {want}"
+        );
+    }
+}

@@ -144,3 +144,43 @@ fn sound_speed_is_the_largest_normal_stiffness() {
     // The reader stores max D_ii as E; this card gives 100 as E.
     assert!((l.sound_speed() - (100.0f64 / 1e-3).sqrt()).abs() < 1e-9);
 }
+
+/// Work hardening: along a uniaxial path in direction 1 (Y = 2 in tension
+/// and compression, so F = T₁²/Y²), the stress follows the grown limit
+/// T₁ = Y·√(1 + B·Wpⁿ) (B = 0.5, n = 0.5) within 1% once yielding, Wp the
+/// plastic work per volume; no failure below fmax.
+#[test]
+fn the_yield_limit_grows_with_the_plastic_work() {
+    let mut p = params();
+    p.nu = [0.0; 3];
+    p.yt = [2.0, INF, INF, INF, INF, INF];
+    p.yc = [2.0, INF, INF, INF, INF, INF];
+    p.b = 0.5;
+    p.n = 0.5;
+    let l = law(&p);
+    let (mut t, mut wp, mut pt) = ([0.0; 6], 0.0, Law12Point::default());
+    let (mut work, mut checked) = (0.0, 0);
+    for _ in 0..2000 {
+        work += l.update(&mut t, &mut wp, &mut pt, [1e-4, 0.0, 0.0, 0.0, 0.0, 0.0]);
+        if wp > 0.01 {
+            let want = 2.0 * (1.0 + 0.5 * wp.sqrt()).sqrt();
+            assert!(
+                (t[0] - want).abs() < 0.01 * want,
+                "Wp {wp}: T1 {} vs {want}",
+                t[0]
+            );
+            checked += 1;
+        }
+    }
+    assert!(checked > 1000, "{checked} plastic steps");
+    assert!((wp - work).abs() < 1e-12 && !l.has_failed(wp));
+}
+
+/// The strain-rate term (c ≠ 0) is refused by name.
+#[test]
+fn a_strain_rate_term_is_refused_by_name() {
+    let mut p = params();
+    p.c = 0.02;
+    let e = law(&p).check_supported().unwrap_err();
+    assert!(e.contains("/MAT/LAW12") && e.contains("strain-rate"), "{e}");
+}

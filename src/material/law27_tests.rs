@@ -144,15 +144,28 @@ fn the_strain_rate_raises_the_yield_stress_and_its_cap() {
         let q = 1.0 + 0.1 * (rate as f64).ln();
         let (mut sig, mut ep, mut h, mut tot) = ([0.0; 3], 0.0, [0.0; 3], [0.0; 3]);
         let dy = 1e-5;
+        let (mut hardening, mut capped) = (0, 0);
         for _ in 0..5000 {
             uniaxial(&l, &mut sig, &mut ep, &mut h, &mut tot, dy, dy / rate);
+            // Every plastic step of the path: on the curve, then on the cap.
+            if ep > 1e-4 {
+                let curve = (220.0 + 420.0 * ep.powf(0.6)) * q;
+                let y = curve.min(270.0 * q);
+                assert!(
+                    (sig[1] - y).abs() < 2e-3 * y,
+                    "rate {rate}, ε_p {ep}: σ {} against {y}",
+                    sig[1]
+                );
+                if curve < 270.0 * q {
+                    hardening += 1;
+                } else {
+                    capped += 1;
+                }
+            }
         }
-        assert!(ep > 0.0);
-        let y = ((220.0 + 420.0 * ep.powf(0.6)) * q).min(270.0 * q);
         assert!(
-            (sig[1] - y).abs() < 2e-3 * y,
-            "rate {rate}: σ {} against {y}",
-            sig[1]
+            hardening > 50 && hardening + capped > 1000,
+            "rate {rate}: {hardening} on the curve, {capped} on the cap"
         );
     }
 }

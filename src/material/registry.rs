@@ -560,6 +560,10 @@ mod tests {
         }
     }
 
+    /// The flow stress along a path at three strain rates, 10, 10³ and 10⁵
+    /// times ε̇₀: (a + b ε_p^n)(1 + c ln(ε̇/ε̇₀)) within 1% (shells: plane
+    /// stress uniaxial) and to round-off (solids: uniaxial strain, the Mises
+    /// stress after the radial return); below ε̇₀ no rate effect.
     #[test]
     fn jc_rate_term_scales_the_flow_stress() {
         let c = 0.0494999997;
@@ -568,18 +572,46 @@ mod tests {
             j.c = c;
             j.eps_dot_0 = e0;
         });
-        let rate = 1e3 * e0;
-        let q = 1.0 + c * (1e3f64).ln();
         let (a, b, n) = (0.25, 0.349999994, 0.519999981);
-        let mut checked = 0;
-        uniaxial(&m, 1, 5e-5, 3000, rate, |s, _, ep, _| {
-            if ep > 0.02 {
-                let want = q * (a + b * ep.powf(n));
-                assert!((s - want).abs() / want < 0.01, "ε_p {ep}: {s} vs {want}");
-                checked += 1;
+        for ratio in [10.0f64, 1e3, 1e5] {
+            let rate = ratio * e0;
+            let q = 1.0 + c * ratio.ln();
+            let mut checked = 0;
+            uniaxial(&m, 1, 5e-5, 3000, rate, |s, _, ep, _| {
+                if ep > 0.02 {
+                    let want = q * (a + b * ep.powf(n));
+                    assert!(
+                        (s - want).abs() / want < 0.01,
+                        "ε̇/ε̇₀ {ratio}, ε_p {ep}: {s} vs {want}"
+                    );
+                    checked += 1;
+                }
+            });
+            assert!(checked > 100);
+            let (mut sig, mut ep) = ([0.0; 6], 0.0);
+            let mut solid = 0;
+            for _ in 0..3000 {
+                m.solid_update_at(
+                    &mut sig,
+                    &mut ep,
+                    [5e-5, 0.0, 0.0, 0.0, 0.0, 0.0],
+                    rate,
+                    298.0,
+                );
+                if ep > 0.01 {
+                    let p = (sig[0] + sig[1] + sig[2]) / 3.0;
+                    let s2: f64 = (0..3).map(|k| (sig[k] - p).powi(2)).sum();
+                    let vm = (1.5 * s2).sqrt();
+                    let want = q * (a + b * ep.powf(n));
+                    assert!(
+                        (vm - want).abs() < 1e-9 * want,
+                        "solid ε̇/ε̇₀ {ratio}, ε_p {ep}: {vm} vs {want}"
+                    );
+                    solid += 1;
+                }
             }
-        });
-        assert!(checked > 100);
+            assert!(solid > 1000, "{solid} plastic solid steps");
+        }
         // Below the reference rate: no rate effect.
         assert_eq!(m.yield_stress(0.1, 0.5 * e0, 298.0), a + b * 0.1f64.powf(n));
     }
