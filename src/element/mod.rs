@@ -19,7 +19,7 @@ pub mod shell3;
 pub mod shell4;
 pub mod shell4_qbat;
 #[cfg(test)]
-mod solid_bending_tests;
+mod solid_analytic_tests;
 pub mod spring;
 pub mod spring_beam;
 pub mod spring_general;
