@@ -674,6 +674,59 @@ mod tests {
         }
     }
 
+    /// Patch test: 4 triangles around a free, off-centre interior node under
+    /// v = G·x for one small step: Hooke's plane-stress energy over the
+    /// patch (within 1e-6) and no force on the interior node (1e-6 of the
+    /// largest).
+    #[test]
+    fn a_patch_of_triangles_passes_the_patch_test() {
+        let sec = section(3);
+        let m = &sec.material;
+        let (e, nu, g) = (m.young(), m.poisson(), m.shear_modulus());
+        let x0 = [
+            [0.0, 0.0, 0.0],
+            [4.0, 0.3, 0.0],
+            [4.3, 3.7, 0.0],
+            [-0.2, 4.1, 0.0],
+            [2.6, 1.7, 0.0],
+        ];
+        let tris = [[0, 1, 4], [1, 2, 4], [2, 3, 4], [3, 0, 4]];
+        let gm = [[0.4, 0.15], [-0.1, -0.25]];
+        let (dt, t) = (1e-6, 1.5);
+        let v: Vec<[f64; 3]> = x0
+            .iter()
+            .map(|p| {
+                let w = |i: usize| gm[i][0] * p[0] + gm[i][1] * p[1];
+                [w(0), w(1), 0.0]
+            })
+            .collect();
+        let (mut f, mut energy, mut area) = ([[0.0; 3]; 5], 0.0, 0.0);
+        for tri in tris {
+            let xe = tri.map(|n| x0[n]);
+            let xn = tri.map(|n| std::array::from_fn(|k| x0[n][k] + dt * v[n][k]));
+            let mut el = El::new(&sec, &xe, t);
+            let o = el.step(&sec, &xn, &tri.map(|n| v[n]), &[[0.0; 3]; 3], dt);
+            energy += o.d_eint;
+            area += Geom::new(&xe).unwrap().area;
+            for (a, &n) in tri.iter().enumerate() {
+                for k in 0..3 {
+                    f[n][k] += o.f[a][k];
+                }
+            }
+        }
+        let (exx, eyy, gxy) = (gm[0][0] * dt, gm[1][1] * dt, (gm[0][1] + gm[1][0]) * dt);
+        let a11 = e / (1.0 - nu * nu);
+        let want =
+            0.5 * (a11 * (exx * exx + eyy * eyy + 2.0 * nu * exx * eyy) + g * gxy * gxy) * area * t;
+        assert!((energy - want).abs() < 1e-6 * want, "{energy} vs {want}");
+        let fmax = f.iter().flatten().fold(0.0f64, |a, b| a.max(b.abs()));
+        assert!(
+            f[4].iter().all(|c| c.abs() < 1e-6 * fmax),
+            "interior {:?} (max {fmax})",
+            f[4]
+        );
+    }
+
     #[test]
     fn pure_bending_gives_d_kappa() {
         for n in [3, 5] {
