@@ -927,7 +927,52 @@ pub(crate) mod tests {
         [-1.0, 1.0, 1.0],
     ];
 
-    fn unit_cube() -> [[f64; 3]; 8] {
+    /// The 27 nodes of a 2×2×2 patch on [0, 2]³, every node moved by up to
+    /// ±amp/2 (a fixed sequence), and its 8 bricks (Radioss corner order).
+    pub(crate) fn distorted_patch(amp: f64) -> (Vec<[f64; 3]>, Vec<[usize; 8]>) {
+        let id = |i: usize, j: usize, k: usize| i + 3 * j + 9 * k;
+        let mut seed = 12345u64;
+        let mut rnd = || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            ((seed >> 11) as f64 / (1u64 << 53) as f64) - 0.5
+        };
+        let mut p = vec![[0.0; 3]; 27];
+        for k in 0..3 {
+            for j in 0..3 {
+                for i in 0..3 {
+                    let (x, y, z) = (i as f64, j as f64, k as f64);
+                    // A sheared, stretched box (affine), then each node moved.
+                    p[id(i, j, k)] = [
+                        x + 0.3 * y + 0.2 * z + amp * rnd(),
+                        1.2 * y - 0.25 * z + amp * rnd(),
+                        0.9 * z + 0.15 * x + amp * rnd(),
+                    ];
+                }
+            }
+        }
+        let mut bricks = Vec::new();
+        for k in 0..2 {
+            for j in 0..2 {
+                for i in 0..2 {
+                    bricks.push([
+                        id(i, j, k),
+                        id(i + 1, j, k),
+                        id(i + 1, j + 1, k),
+                        id(i, j + 1, k),
+                        id(i, j, k + 1),
+                        id(i + 1, j, k + 1),
+                        id(i + 1, j + 1, k + 1),
+                        id(i, j + 1, k + 1),
+                    ]);
+                }
+            }
+        }
+        (p, bricks)
+    }
+
+    pub(crate) fn unit_cube() -> [[f64; 3]; 8] {
         let mut x = [[0.0; 3]; 8];
         for a in 0..8 {
             for k in 0..3 {
@@ -1226,27 +1271,8 @@ pub(crate) mod tests {
 
     #[test]
     fn patch_test_on_a_distorted_mesh() {
-        // 2×2×2 bricks on [0,2]³, every node moved; linear velocity field v = G x + v₀.
-        let mut p = [[0.0; 3]; 27];
-        let id = |i: usize, j: usize, k: usize| i + 3 * j + 9 * k;
-        let mut seed = 12345u64;
-        let mut rnd = || {
-            seed = seed
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            ((seed >> 11) as f64 / (1u64 << 53) as f64) - 0.5
-        };
-        for k in 0..3 {
-            for j in 0..3 {
-                for i in 0..3 {
-                    p[id(i, j, k)] = [
-                        i as f64 + 0.3 * rnd(),
-                        j as f64 + 0.3 * rnd(),
-                        k as f64 + 0.3 * rnd(),
-                    ];
-                }
-            }
-        }
+        // 2×2×2 bricks of a sheared box, every node moved; linear velocity field v = G x + v₀.
+        let (p, bricks) = distorted_patch(0.3);
         let g = [[0.3, -0.2, 0.5], [0.1, -0.4, 0.25], [-0.35, 0.15, 0.2]];
         let v0 = [1.0, 2.0, -0.5];
         let vel = |x: [f64; 3]| {
@@ -1261,48 +1287,34 @@ pub(crate) mod tests {
         let mut fnode = [[0.0; 3]; 27];
         let mut sig_ref: Option<[f64; 6]> = None;
         let mut fmax: f64 = 0.0;
-        for k in 0..2 {
-            for j in 0..2 {
-                for i in 0..2 {
-                    let nodes = [
-                        id(i, j, k),
-                        id(i + 1, j, k),
-                        id(i + 1, j + 1, k),
-                        id(i, j + 1, k),
-                        id(i, j, k + 1),
-                        id(i + 1, j, k + 1),
-                        id(i + 1, j + 1, k + 1),
-                        id(i, j + 1, k + 1),
-                    ];
-                    let x = nodes.map(|n| p[n]);
-                    let v = x.map(vel);
-                    let mut st = hex8_init(&s, &x);
-                    let o = hex8_step(&s, &x, &v, dt, &mut st);
-                    assert!(
-                        o.d_ehg.abs() < 1e-14 * o.d_eint.abs(),
-                        "hourglass energy {}",
-                        o.d_ehg
-                    );
-                    assert!(st.hg.iter().flatten().all(|q| q.abs() < 1e-14));
-                    match sig_ref {
-                        None => sig_ref = Some(st.sig),
-                        Some(r) => {
-                            for c in 0..6 {
-                                assert!((st.sig[c] - r[c]).abs() < 1e-12, "{:?} vs {r:?}", st.sig);
-                            }
-                        }
+        for nodes in &bricks {
+            let x = nodes.map(|n| p[n]);
+            let v = x.map(vel);
+            let mut st = hex8_init(&s, &x);
+            let o = hex8_step(&s, &x, &v, dt, &mut st);
+            assert!(
+                o.d_ehg.abs() < 1e-14 * o.d_eint.abs(),
+                "hourglass energy {}",
+                o.d_ehg
+            );
+            assert!(st.hg.iter().flatten().all(|q| q.abs() < 1e-14));
+            match sig_ref {
+                None => sig_ref = Some(st.sig),
+                Some(r) => {
+                    for c in 0..6 {
+                        assert!((st.sig[c] - r[c]).abs() < 1e-12, "{:?} vs {r:?}", st.sig);
                     }
-                    for (a, &n) in nodes.iter().enumerate() {
-                        for c in 0..3 {
-                            fnode[n][c] += o.f[a][c];
-                        }
-                    }
-                    fmax = fmax.max(maxabs(&o.f));
                 }
             }
+            for (a, &n) in nodes.iter().enumerate() {
+                for c in 0..3 {
+                    fnode[n][c] += o.f[a][c];
+                }
+            }
+            fmax = fmax.max(maxabs(&o.f));
         }
         // The interior node is in equilibrium under a uniform stress.
-        let fc = fnode[id(1, 1, 1)];
+        let fc = fnode[13];
         assert!(maxabs(&[fc]) < 1e-12 * fmax, "{fc:?} (max {fmax})");
         // The stress is Hooke's law of Δε = sym(L)Δt with L = G (I − ½ΔtG)⁻¹.
         let a = [

@@ -197,4 +197,4 @@ pub fn hex8_total_step(
 
 #[cfg(test)]
 #[path = "hex8_total_tests.rs"]
-mod tests;
+pub(crate) mod tests;

@@ -5,7 +5,7 @@ use super::*;
 use crate::model::{MaterialLaw, MaterialSpec, ViscoHyperelastic};
 
 /// LAW62 of the QA deck (two Ogden terms), optionally without its Prony series.
-fn material(viscous: bool) -> Material {
+pub(crate) fn material(viscous: bool) -> Material {
     let (gamma, tau) = if viscous {
         (vec![0.34391, 0.10785], vec![46.2, 1.42e4])
     } else {

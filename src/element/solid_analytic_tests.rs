@@ -16,12 +16,10 @@
 
 use super::ha8::{ha8_init, ha8_section, ha8_step};
 use super::heph::{heph_init, heph_section, heph_step};
-use super::hex8::tests::{mat, resolved};
+use super::hex8::tests::{distorted_patch, mat, resolved, unit_cube};
 use super::hex8::{hex8_init, hex8_step, Hex8Out, SolidSection};
 use super::hex8_total::{hex8_total_init, hex8_total_step, total_section};
 use super::tet4::{tet4_init, tet4_step};
-use crate::material::Material;
-use crate::model::{MaterialLaw, MaterialSpec, ViscoHyperelastic};
 
 /// Cubes through the depth and along the length (tetrahedra: twice as many).
 const N: usize = 8;
@@ -40,21 +38,12 @@ fn bending(p: [f64; 3], nu: f64) -> [f64; 3] {
 /// The beam's cubes as 8 corners each (Radioss order), x from 0 to N, y
 /// from −½ to ½, z from −N/2 to N/2.
 fn cubes(n: usize) -> Vec<[[f64; 3]; 8]> {
-    const C: [[f64; 3]; 8] = [
-        [0.0, 0.0, 0.0],
-        [1.0, 0.0, 0.0],
-        [1.0, 1.0, 0.0],
-        [0.0, 1.0, 0.0],
-        [0.0, 0.0, 1.0],
-        [1.0, 0.0, 1.0],
-        [1.0, 1.0, 1.0],
-        [0.0, 1.0, 1.0],
-    ];
+    let c = unit_cube();
     let h = n as f64 / 2.0;
     let mut out = Vec::new();
     for i in 0..n {
         for k in 0..n {
-            out.push(C.map(|c| [i as f64 + c[0], c[1] - 0.5, k as f64 - h + c[2]]));
+            out.push(c.map(|c| [i as f64 + c[0], c[1] - 0.5, k as f64 - h + c[2]]));
         }
     }
     out
@@ -63,33 +52,16 @@ fn cubes(n: usize) -> Vec<[[f64; 3]; 8]> {
 /// Kuhn's split of a unit cube into 6 tetrahedra along its main diagonal
 /// (conforming between neighbours), each positively oriented.
 fn tetrahedra(c: &[[f64; 3]; 8]) -> Vec<[[f64; 3]; 4]> {
-    // The corner at offsets b (0 or 1 along each axis) of a unit cube.
-    let corner = |b: [usize; 3]| -> [f64; 3] { std::array::from_fn(|k| c[0][k] + b[k] as f64) };
-    let mut out = Vec::new();
-    for p in [
-        [0, 1, 2],
-        [0, 2, 1],
-        [1, 0, 2],
-        [1, 2, 0],
-        [2, 0, 1],
-        [2, 1, 0],
-    ] {
-        let mut b = [0usize; 3];
-        let mut t = [corner(b); 4];
-        for (q, &axis) in p.iter().enumerate() {
-            b[axis] = 1;
-            t[q + 1] = corner(b);
-        }
-        let d = |a: [f64; 3], o: [f64; 3]| [a[0] - o[0], a[1] - o[1], a[2] - o[2]];
-        let (a, bb, cc) = (d(t[1], t[0]), d(t[2], t[0]), d(t[3], t[0]));
-        let vol = a[0] * (bb[1] * cc[2] - bb[2] * cc[1]) - a[1] * (bb[0] * cc[2] - bb[2] * cc[0])
-            + a[2] * (bb[0] * cc[1] - bb[1] * cc[0]);
-        if vol < 0.0 {
-            t.swap(2, 3);
-        }
-        out.push(t);
-    }
-    out
+    brick_tetrahedra(&[0, 1, 2, 3, 4, 5, 6, 7])
+        .iter()
+        .map(|t| {
+            let mut x = t.map(|i| c[i]);
+            if tet_volume(&x) < 0.0 {
+                x.swap(2, 3);
+            }
+            x
+        })
+        .collect()
 }
 
 /// ½EIκ²L of the beam (I = b·t³/12, b = 1, t = L = n).
@@ -183,33 +155,13 @@ fn tetrahedra_bend_with_the_beam_energy() {
     check("Tet4", energy, e, 2 * N);
 }
 
-/// Total strain (Ismstr 10) with LAW62's Ogden terms (the reference's
-/// W = Σ 2μᵢ/αᵢ² (λ₁^αᵢ + λ₂^αᵢ + λ₃^αᵢ − 3)), which at small strain is
-/// Hooke's law with μ = Σμᵢ and the card's ν.
+/// Total strain (Ismstr 10) with the QA deck's LAW62 Ogden terms (the
+/// reference's W = Σ 2μᵢ/αᵢ² (λ₁^αᵢ + λ₂^αᵢ + λ₃^αᵢ − 3)), which at small
+/// strain is Hooke's law with μ = Σμᵢ = 6.92392e-5 and the card's ν = 0.2.
 #[test]
 fn total_strain_bricks_bend_with_the_beam_energy() {
-    let nu = 0.2;
-    let (mu_i, alpha) = (vec![0.069119e-3, 12.0126e-8], vec![30.4979, -3.6961]);
-    let mu: f64 = mu_i.iter().sum();
-    let m = Material::from_card(&MaterialSpec {
-        id: 1,
-        unit_id: 0,
-        title: String::new(),
-        rho: 5.5e-8,
-        rho_ref: 0.0,
-        e: 2.0 * mu * (1.0 + nu),
-        nu,
-        law: MaterialLaw::ViscoHyperelastic(ViscoHyperelastic {
-            mu: mu_i,
-            alpha,
-            gamma: vec![],
-            tau: vec![],
-            mu_max: 1e20,
-            flag_visc: 0,
-        }),
-        failures: Vec::new(),
-        loc: Default::default(),
-    });
+    let m = super::hex8_total::tests::material(false);
+    let (nu, mu) = (m.poisson(), 6.92392e-5);
     let mut r = resolved(1, 0.0, 0.0, 0.1);
     r.ismstr = 10;
     let s = total_section(&r, &m).unwrap();
@@ -226,51 +178,6 @@ fn total_strain_bricks_bend_with_the_beam_energy() {
         2.0 * mu * (1.0 + nu),
         N,
     );
-}
-
-/// The 27 nodes of a 2×2×2 patch on [0, 2]³, every node moved by up to
-/// ±amp/2 (a fixed sequence), and its 8 bricks (Radioss corner order).
-fn distorted_patch(amp: f64) -> (Vec<[f64; 3]>, Vec<[usize; 8]>) {
-    let id = |i: usize, j: usize, k: usize| i + 3 * j + 9 * k;
-    let mut seed = 12345u64;
-    let mut rnd = || {
-        seed = seed
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        ((seed >> 11) as f64 / (1u64 << 53) as f64) - 0.5
-    };
-    let mut p = vec![[0.0; 3]; 27];
-    for k in 0..3 {
-        for j in 0..3 {
-            for i in 0..3 {
-                let (x, y, z) = (i as f64, j as f64, k as f64);
-                // A sheared, stretched box (affine), then each node moved.
-                p[id(i, j, k)] = [
-                    x + 0.3 * y + 0.2 * z + amp * rnd(),
-                    1.2 * y - 0.25 * z + amp * rnd(),
-                    0.9 * z + 0.15 * x + amp * rnd(),
-                ];
-            }
-        }
-    }
-    let mut bricks = Vec::new();
-    for k in 0..2 {
-        for j in 0..2 {
-            for i in 0..2 {
-                bricks.push([
-                    id(i, j, k),
-                    id(i + 1, j, k),
-                    id(i + 1, j + 1, k),
-                    id(i, j + 1, k),
-                    id(i, j, k + 1),
-                    id(i + 1, j, k + 1),
-                    id(i + 1, j + 1, k + 1),
-                    id(i, j + 1, k + 1),
-                ]);
-            }
-        }
-    }
-    (p, bricks)
 }
 
 /// Kuhn's 6 tetrahedra of a brick given by its corner node ids (Radioss
