@@ -244,11 +244,11 @@ pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<ContactSetup, String> {
         TypeOptions::from_card(&i.card.kind).is_some_and(|(_, c)| IdelRule::of(c.idel).is_some())
     });
     // Types that keep faces between two solids dormant find them on the same table.
-    let any_inner_check = m.interfaces.iter().any(|i| {
+    let any_dormant_faces = m.interfaces.iter().any(|i| {
         TypeOptions::from_card(&i.card.kind)
             .is_some_and(|(t, _)| !t.implementation().inner_solid_faces_as_segments())
     });
-    let face_elems = if any_idel || any_inner_check {
+    let face_elems = if any_idel || any_dormant_faces {
         face_elements(m)
     } else {
         HashMap::new()

@@ -927,17 +927,22 @@ pub(crate) mod tests {
         [-1.0, 1.0, 1.0],
     ];
 
-    /// The 27 nodes of a 2×2×2 patch on [0, 2]³, every node moved by up to
-    /// ±amp/2 (a fixed sequence), and its 8 bricks (Radioss corner order).
-    pub(crate) fn distorted_patch(amp: f64) -> (Vec<[f64; 3]>, Vec<[usize; 8]>) {
-        let id = |i: usize, j: usize, k: usize| i + 3 * j + 9 * k;
-        let mut seed = 12345u64;
-        let mut rnd = || {
+    /// A fixed sequence of numbers in [−½, ½) (a 64-bit LCG from `seed`).
+    fn lcg(mut seed: u64) -> impl FnMut() -> f64 {
+        move || {
             seed = seed
                 .wrapping_mul(6364136223846793005)
                 .wrapping_add(1442695040888963407);
             ((seed >> 11) as f64 / (1u64 << 53) as f64) - 0.5
-        };
+        }
+    }
+
+    /// The 27 nodes of a 2×2×2 patch of a sheared, stretched box (node
+    /// (i, j, k) near the affine image of (i, j, k)), every node moved by up
+    /// to ±amp/2 (a fixed sequence), and its 8 bricks (Radioss corner order).
+    pub(crate) fn distorted_patch(amp: f64) -> (Vec<[f64; 3]>, Vec<[usize; 8]>) {
+        let id = |i: usize, j: usize, k: usize| i + 3 * j + 9 * k;
+        let mut rnd = lcg(12345);
         let mut p = vec![[0.0; 3]; 27];
         for k in 0..3 {
             for j in 0..3 {
@@ -1408,13 +1413,7 @@ pub(crate) mod tests {
 
     #[test]
     fn forces_are_in_equilibrium() {
-        let mut seed = 99u64;
-        let mut rnd = || {
-            seed = seed
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            ((seed >> 11) as f64 / (1u64 << 53) as f64) - 0.5
-        };
+        let mut rnd = lcg(99);
         for isolid in [1, 2] {
             let s = sec(isolid, 1.1, 0.05, 0.1);
             let mut x = distorted();

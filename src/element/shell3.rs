@@ -120,8 +120,6 @@ fn dot3(a: &[f64; 3], b: &[f64; 3]) -> f64 {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
-/// Corotational geometry of one configuration.
-#[derive(Clone, Copy, Debug)]
 /// The nodal rotations' weights in the transverse shears (reference engine
 /// C3CURV3 / C3FINT3; research note `docs/notes/shell3_c0_research.md`,
 /// difference 1): γ_zx = Σb_x v_z + Σ(zx[0]_i θx_i + zx[1]_i θy_i), γ_yz
@@ -157,7 +155,8 @@ fn shear_weights(g: &Geom) -> ShearWeights {
     }
 }
 
-#[derive(Clone, Copy)]
+/// Corotational geometry of one configuration.
+#[derive(Clone, Copy, Debug)]
 struct Geom {
     /// Rows e1, e2, e3.
     e: [[f64; 3]; 3],

@@ -20,6 +20,7 @@ use super::hex8::tests::{distorted_patch, mat, resolved, unit_cube};
 use super::hex8::{hex8_init, hex8_step, Hex8Out, SolidSection};
 use super::hex8_total::{hex8_total_init, hex8_total_step, total_section};
 use super::tet4::{tet4_init, tet4_step};
+use crate::model::geometry::tetra_volume;
 
 /// Cubes through the depth and along the length (tetrahedra: twice as many).
 const N: usize = 8;
@@ -52,15 +53,9 @@ fn cubes(n: usize) -> Vec<[[f64; 3]; 8]> {
 /// Kuhn's split of a unit cube into 6 tetrahedra along its main diagonal
 /// (conforming between neighbours), each positively oriented.
 fn tetrahedra(c: &[[f64; 3]; 8]) -> Vec<[[f64; 3]; 4]> {
-    brick_tetrahedra(&[0, 1, 2, 3, 4, 5, 6, 7])
+    brick_tetrahedra(&[0, 1, 2, 3, 4, 5, 6, 7], c)
         .iter()
-        .map(|t| {
-            let mut x = t.map(|i| c[i]);
-            if tet_volume(&x) < 0.0 {
-                x.swap(2, 3);
-            }
-            x
-        })
+        .map(|t| t.map(|i| c[i]))
         .collect()
 }
 
@@ -181,8 +176,9 @@ fn total_strain_bricks_bend_with_the_beam_energy() {
 }
 
 /// Kuhn's 6 tetrahedra of a brick given by its corner node ids (Radioss
-/// order), along its 000–111 diagonal, as node ids.
-fn brick_tetrahedra(b: &[usize; 8]) -> [[usize; 4]; 6] {
+/// order), along its 000–111 diagonal, as node ids, each positively
+/// oriented at the positions `x` (indexed by node id).
+fn brick_tetrahedra(b: &[usize; 8], x: &[[f64; 3]]) -> [[usize; 4]; 6] {
     // Corner of offsets (i, j, k) in Radioss order.
     let at = |o: [usize; 3]| b[[[[0, 4], [3, 7]], [[1, 5], [2, 6]]][o[0]][o[1]][o[2]]];
     [
@@ -200,16 +196,11 @@ fn brick_tetrahedra(b: &[usize; 8]) -> [[usize; 4]; 6] {
             o[axis] = 1;
             t[q + 1] = at(o);
         }
+        if tetra_volume(t.map(|n| x[n])) < 0.0 {
+            t.swap(2, 3);
+        }
         t
     })
-}
-
-fn tet_volume(x: &[[f64; 3]; 4]) -> f64 {
-    let d = |a: [f64; 3]| [a[0] - x[0][0], a[1] - x[0][1], a[2] - x[0][2]];
-    let (a, b, c) = (d(x[1]), d(x[2]), d(x[3]));
-    (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
-        + a[2] * (b[0] * c[1] - b[1] * c[0]))
-        / 6.0
 }
 
 /// One element's step in the patch: (corner forces, energy increment).
@@ -344,14 +335,11 @@ fn every_solid_formulation_passes_the_patch_test() {
     let s = SolidSection::for_tetra(&resolved(1, 0.0, 0.0, 0.0), &m).unwrap();
     let (mut f, mut energy, mut volume) = (vec![[0.0; 3]; 27], 0.0, 0.0);
     for b in &bricks {
-        for mut t in brick_tetrahedra(b) {
-            if tet_volume(&t.map(|n| x0[n])) < 0.0 {
-                t.swap(2, 3);
-            }
+        for t in brick_tetrahedra(b, &x0) {
             let xe: [[f64; 3]; 4] = t.map(|n| x0[n]);
             let ve: [[f64; 3]; 4] = t.map(|n| v[n]);
             let xn: [[f64; 3]; 4] = t.map(|n| x1[n]);
-            volume += tet_volume(&xe);
+            volume += tetra_volume(xe);
             let mut st = tet4_init(&s, &xe);
             let o = tet4_step(&s, &xn, &ve, dt, &mut st);
             energy += o.d_eint;

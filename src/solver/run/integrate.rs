@@ -18,8 +18,14 @@ use super::setup::{Ctx, State};
 /// otherwise book f²Δt²/2M a step).
 pub(super) fn work(cx: &Ctx, s: &mut State, dt_v: f64) {
     let mass = cx.mass.read().unwrap();
+    let imposed = imposed_by_node(&mut s.imposed_before);
+    let before_of = |l: usize, k: usize| {
+        imposed
+            .binary_search_by_key(&(l as u32, k as u8), |e| (e.0, e.1))
+            .ok()
+            .map(|i| imposed[i].2)
+    };
     for l in 0..cx.n {
-        let imposed = std::mem::take(&mut s.imposed_before[l]);
         if !cx.owned[l] {
             continue;
         }
@@ -29,7 +35,7 @@ pub(super) fn work(cx: &Ctx, s: &mut State, dt_v: f64) {
             let v = s.v[l][k];
             let mean = if s.fixed[l][k] || mass[l] <= 0.0 || cx.tied_tr[l] || cx.in_body[l] {
                 v
-            } else if let Some(before) = imposed[k] {
+            } else if let Some(before) = before_of(l, k) {
                 0.5 * (before + v)
             } else {
                 v - 0.5 * (s.fext[l][k] - s.fint[l][k] + s.fcont[l][k] + s.ftie[l][k]) / mass[l]
@@ -38,6 +44,8 @@ pub(super) fn work(cx: &Ctx, s: &mut State, dt_v: f64) {
             s.e_contact.add(-s.fcont[l][k] * mean * dt_v);
         }
     }
+    s.imposed_before = imposed;
+    s.imposed_before.clear();
     // The reactions of analytic contact surfaces (TYPE14) on their rigid
     // bodies, at the mean velocity of the body's point over the step.
     for (b, l) in &s.contact.body_loads {
@@ -51,6 +59,16 @@ pub(super) fn work(cx: &Ctx, s: &mut State, dt_v: f64) {
             s.e_contact.add(-l.f[k] * v * dt_v);
         }
     }
+}
+
+/// This cycle's imposed directions sorted by (node, direction); where a
+/// direction was imposed twice, the last imposition's velocity before it.
+fn imposed_by_node(list: &mut Vec<(u32, u8, f64)>) -> Vec<(u32, u8, f64)> {
+    let mut v = std::mem::take(list);
+    v.reverse();
+    v.sort_by_key(|e| (e.0, e.1));
+    v.dedup_by_key(|e| (e.0, e.1));
+    v
 }
 
 /// Positions at n+1: nodes by their velocity, rigid-body main nodes at

@@ -344,7 +344,7 @@ fn impose(cx: &Ctx, s: &mut State, l: usize, d: usize, val: f64, before: f64) {
     }
     *slot = val;
     if d < 3 {
-        s.imposed_before[l][d] = Some(before);
+        s.imposed_before.push((l as u32, d as u8, before));
     }
 }
 

@@ -123,10 +123,11 @@ pub(super) struct State {
     pub v: Vec<[f64; 3]>,
     pub vr: Vec<[f64; 3]>,
     pub fixed: Vec<[bool; 6]>,
-    /// This cycle's imposed velocities (/IMPVEL, /IMPDISP, FGEO): each
-    /// imposed direction's velocity before the step, for the contact
-    /// energy's mean velocity (`integrate::work`); cleared there.
-    pub imposed_before: Vec<[Option<f64>; 3]>,
+    /// This cycle's imposed velocities (/IMPVEL, /IMPDISP, FGEO), as (local
+    /// node, direction, velocity before the step), for the contact energy's
+    /// mean velocity (`integrate::work`, which empties it): only the
+    /// imposed directions, so the loop over every node writes nothing.
+    pub imposed_before: Vec<(u32, u8, f64)>,
     pub ftie: Vec<[f64; 6]>,
     pub fint: Vec<[f64; SLOT]>,
     pub fext: Vec<[f64; SLOT]>,
@@ -474,7 +475,7 @@ pub(super) fn initial_state(
         x,
         v,
         vr,
-        imposed_before: vec![[None; 3]; fixed.len()],
+        imposed_before: Vec::new(),
         fixed,
         ftie: vec![[0.0f64; 6]; n],
         fint: vec![[0.0f64; SLOT]; n],
