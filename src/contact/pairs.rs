@@ -255,6 +255,27 @@ fn node_pairs<T: InterfaceType>(
         return out;
     }
     match ty.search() {
+        CandidateSearch::Sort if ty.one_segment_per_node() => {
+            // One pair per node, its memory the node's (kept when the node
+            // slides onto another segment, dropped when it leaves contact).
+            let wp = mem.walk_pair;
+            let live: Vec<u32> = segs
+                .iter()
+                .copied()
+                .filter(|m| ns.off_segs.binary_search(m).is_err())
+                .collect();
+            let Some((m, side)) = nearest(ty, v, k, &live, (wp.0, wp.1.side)) else {
+                *wp = (NONE, PairState::default());
+                return out;
+            };
+            if wp.0 != m && wp.1.side != 0 {
+                wp.1.side = side;
+            }
+            wp.0 = m;
+            if !one_pair(ty, v, k, m, ns, &mut wp.1, &mut out) {
+                return NodeOut::default();
+            }
+        }
         CandidateSearch::Sort => {
             for (q, &m) in segs.iter().enumerate() {
                 if !one_pair(ty, v, k, m, ns, &mut mem.pairs[q], &mut out) {
@@ -298,6 +319,111 @@ fn node_pairs<T: InterfaceType>(
     out
 }
 
+/// The positions and velocities one pair reads: its main segment's and its
+/// secondary side's nodes (a node repeats itself, an edge its second node).
+struct PairValues {
+    xm: [V3; 4],
+    vm: [V3; 4],
+    xs: [V3; 4],
+    vs: [V3; 4],
+}
+
+/// An analytic main surface has no segment: no main nodes.
+const NO_SEGMENT: [u32; 4] = [NONE; 4];
+
+/// Pair (k, m)'s values; None when one of its nodes is not on this rank.
+fn pair_values(v: &PassView, k: usize, m: u32) -> Option<PairValues> {
+    let (xm, vm) = if v.p.segs.is_empty() {
+        ([[0.0; 3]; 4], [[0.0; 3]; 4])
+    } else {
+        let seg = &v.p.segs[m as usize];
+        (
+            seg_values(seg, v.avail, v.cx)?,
+            seg_values(seg, v.avail, v.cv)?,
+        )
+    };
+    let sec = v.p.sec_side(k);
+    let s = sec.nodes[0] as usize;
+    let (xs, vs) = if sec.count == 1 {
+        ([v.cx[s]; 4], [v.cv[s]; 4])
+    } else {
+        // An edge's owner holds both its nodes.
+        (
+            seg_values(&sec.nodes, v.avail, v.cx)?,
+            seg_values(&sec.nodes, v.avail, v.cv)?,
+        )
+    };
+    Some(PairValues { xm, vm, xs, vs })
+}
+
+/// The kernel's view of pair (k, m).
+fn context<'a>(v: &'a PassView, k: usize, m: u32, pv: &'a PairValues) -> PairContext<'a> {
+    let sec = v.p.sec_side(k);
+    let main = if v.p.segs.is_empty() {
+        Side {
+            nodes: NO_SEGMENT,
+            count: 0,
+        }
+    } else {
+        Side::segment(&v.p.segs[m as usize])
+    };
+    PairContext {
+        it: v.it,
+        p: v.p,
+        k,
+        m,
+        xs: pv.xs[0],
+        vs: pv.vs[0],
+        ms: v.mass[v.local[sec.nodes[0] as usize] as usize],
+        xs_side: &pv.xs,
+        vs_side: &pv.vs,
+        sec,
+        main,
+        cnode_mass: v.cnode_mass,
+        xm: &pv.xm,
+        vm: &pv.vm,
+        dt: v.dt,
+        bodies: v.bodies,
+        scale: v.scale,
+    }
+}
+
+/// Types with one segment per node: the nearest candidate in contact (the
+/// first of equals, in candidate order) and the side the node is on.
+/// The node's current segment keeps its side; another takes the side whose
+/// normal points as the current one's pushes (`None` side 0: a new impact).
+fn nearest<T: InterfaceType>(
+    ty: &T,
+    v: &PassView,
+    k: usize,
+    segs: &[u32],
+    current: (u32, i8),
+) -> Option<(u32, i8)> {
+    let normal = |m: u32, pv: &PairValues| geo::segment_normal(&pv.xm, v.p.is_tri(m as usize));
+    let push = (current.1 != 0)
+        .then(|| pair_values(v, k, current.0))
+        .flatten()
+        .map(|pv| geo::scale(normal(current.0, &pv), f64::from(current.1)));
+    let mut best: Option<(f64, u32, i8)> = None;
+    for &m in segs {
+        let Some(pv) = pair_values(v, k, m) else {
+            continue;
+        };
+        let side = match push {
+            _ if m == current.0 => current.1,
+            Some(d) if geo::dot(normal(m, &pv), d) < 0.0 => -1,
+            Some(_) => 1,
+            None => 0,
+        };
+        if let Some((d, side)) = ty.nearness(&context(v, k, m, &pv), side) {
+            if best.is_none_or(|b| d > b.0) {
+                best = Some((d, m, side));
+            }
+        }
+    }
+    best.map(|b| (b.1, b.2))
+}
+
 /// Pair (secondary entity k, main entity m) through the type's kernel, its
 /// contributions added to `out`; false when the entity leaves the interface.
 fn one_pair<T: InterfaceType>(
@@ -312,65 +438,11 @@ fn one_pair<T: InterfaceType>(
     if ns.off_segs.binary_search(&m).is_ok() {
         return true;
     }
-    // An analytic main surface has no segment: no main nodes.
-    const NO_SEGMENT: [u32; 4] = [NONE; 4];
-    let analytic = v.p.segs.is_empty();
-    let seg = if analytic {
-        &NO_SEGMENT
-    } else {
-        &v.p.segs[m as usize]
+    let Some(pv) = pair_values(v, k, m) else {
+        return true;
     };
-    let (xm, vm) = if analytic {
-        ([[0.0; 3]; 4], [[0.0; 3]; 4])
-    } else {
-        let (Some(xm), Some(vm)) = (
-            seg_values(seg, v.avail, v.cx),
-            seg_values(seg, v.avail, v.cv),
-        ) else {
-            return true;
-        };
-        (xm, vm)
-    };
-    let sec = v.p.sec_side(k);
-    let s = sec.nodes[0];
-    let (xs_side, vs_side) = if sec.count == 1 {
-        ([v.cx[s as usize]; 4], [v.cv[s as usize]; 4])
-    } else {
-        // An edge's owner holds both its nodes.
-        let (Some(x), Some(u)) = (
-            seg_values(&sec.nodes, v.avail, v.cx),
-            seg_values(&sec.nodes, v.avail, v.cv),
-        ) else {
-            return true;
-        };
-        (x, u)
-    };
-    let c = PairContext {
-        it: v.it,
-        p: v.p,
-        k,
-        m,
-        xs: xs_side[0],
-        vs: vs_side[0],
-        ms: v.mass[v.local[s as usize] as usize],
-        xs_side: &xs_side,
-        vs_side: &vs_side,
-        sec,
-        main: if analytic {
-            Side {
-                nodes: NO_SEGMENT,
-                count: 0,
-            }
-        } else {
-            Side::segment(seg)
-        },
-        cnode_mass: v.cnode_mass,
-        xm: &xm,
-        vm: &vm,
-        dt: v.dt,
-        bodies: v.bodies,
-        scale: v.scale,
-    };
+    let c = context(v, k, m, &pv);
+    let (sec, s) = (c.sec, c.sec.nodes[0]);
     let f = match ty.pair(&c, ns, st) {
         PairOutcome::Free => return true,
         PairOutcome::NodeOff => return false,
@@ -381,9 +453,9 @@ fn one_pair<T: InterfaceType>(
     let vs = if sec.count == 1 {
         c.vs
     } else {
-        geo::interpolate(&f.sec_shape, &vs_side)
+        geo::interpolate(&f.sec_shape, &pv.vs)
     };
-    let vrel = geo::sub(vs, geo::interpolate(&f.shape, &vm));
+    let vrel = geo::sub(vs, geo::interpolate(&f.shape, &pv.vm));
     emit(out, key, &nodes, &f, v.ibc, vrel);
     if let Some(b) = ty.reaction_body() {
         out.body_loads.push((

@@ -356,6 +356,21 @@ pub trait InterfaceType: Sync {
         true
     }
 
+    /// Whether a secondary node takes the force of one main segment only,
+    /// the nearest of its candidates in contact ([`Self::nearness`]), with
+    /// one pair memory per node (TYPE25: the reference engine keeps one
+    /// candidate per node), rather than the sum over its candidates.
+    fn one_segment_per_node(&self) -> bool {
+        false
+    }
+
+    /// One-segment types: how near the node is to the segment (larger is
+    /// chosen) and the side of the segment it is on, given the side it was
+    /// on (0: none yet); `None` when out of contact. Nothing changes.
+    fn nearness(&self, _c: &PairContext, _side: i8) -> Option<(f64, i8)> {
+        None
+    }
+
     /// Igap0 = 1 (TYPE25): secondary nodes on a free edge of the shells take
     /// no gap of their own.
     fn zero_gap_on_free_shell_edges(&self) -> bool {

@@ -9,6 +9,10 @@
 //!   A solid face is one-sided: a node behind it (over its inside, the
 //!   projection within the face) penetrates by its depth; a shell is
 //!   two-sided, its side taken at the impact.
+//! - One segment per node: of the candidates in contact, the nearest;
+//!   the node's memory (baseline, secant, friction, the side of a shell)
+//!   goes with it when it slides onto another segment, as the reference
+//!   keeps one candidate and one memory per node.
 //! - Penetration as a baseline: the penetration found when a node first
 //!   touches a segment (at the start: the initial penetration) is stored,
 //!   and only further penetration p = p_raw − p_impact pushes; the baseline
@@ -172,6 +176,22 @@ impl InterfaceType for Type25 {
         0.2
     }
 
+    /// One segment per node, the nearest in contact: the reference keeps
+    /// the candidate of the node's impact (i25slid.F I25KEEPF, the closest
+    /// sub-triangle, i25dst3_1.F) and the node's friction, baseline and
+    /// secant memory go with the node (i25irtlm.F). The nearest, not the
+    /// deepest: a node behind a solid's far face is not in that face.
+    fn one_segment_per_node(&self) -> bool {
+        true
+    }
+
+    fn nearness(&self, c: &PairContext, side: i8) -> Option<(f64, i8)> {
+        let (p, m) = (c.p, c.m as usize);
+        let g = self.gap(p, c.k, m);
+        let shell = p.seg_elem[m].0 < 2;
+        penetration(c.xs, c.xm, p.is_tri(m), g, shell, side).map(|r| (-r.2.dist, r.1))
+    }
+
     fn zero_gap_on_free_shell_edges(&self) -> bool {
         self.igap0
     }
@@ -208,8 +228,7 @@ impl InterfaceType for Type25 {
     fn pair(&self, c: &PairContext, _ns: &mut NodeState, st: &mut PairState) -> PairOutcome {
         let (it, p, k, m) = (c.it, c.p, c.k, c.m as usize);
         let shell = p.seg_elem[m].0 < 2;
-        let g = (self.gap_scale * p.sec_gap[k]).min(self.gap_max_s)
-            + (self.gap_scale * p.seg_gap[m]).min(self.gap_max_m);
+        let g = self.gap(p, k, m);
         let Some((p_raw, side, pr)) = penetration(c.xs, c.xm, p.is_tri(m), g, shell, st.side)
         else {
             *st = PairState::default();
@@ -270,6 +289,14 @@ impl InterfaceType for Type25 {
         _g: f64,
     ) -> (InitialPenetration, f64) {
         (InitialPenetration::Keep, 0.0)
+    }
+}
+
+impl Type25 {
+    /// The pair's gap: the half thicknesses, each scaled and capped.
+    fn gap(&self, p: &Pass, k: usize, m: usize) -> f64 {
+        (self.gap_scale * p.sec_gap[k]).min(self.gap_max_s)
+            + (self.gap_scale * p.seg_gap[m]).min(self.gap_max_m)
     }
 }
 
