@@ -729,22 +729,7 @@ fn read_type25(cards: &mut Cards) -> InputResult<Type25> {
     let (tstart, tstop) = times(&c4)?;
     let c5 = cards.next("the card with IBC, IVIS2, Inacti, VISs, Ithick, Pmax")?;
     let ivis2 = flag(&c5, 21, "IVIS2", &[-1, 0, 1, 2, 3, 4, 5, 6], 1)?;
-    let inacti = match c5.int(31, "Inacti", 0)? {
-        6 => 5,
-        v @ (-1 | 0 | 1 | 3 | 5 | 1000) => {
-            if v == 0 {
-                1000
-            } else {
-                v
-            }
-        }
-        v => {
-            return Err(c5.err(
-                "Inacti",
-                format!("{v} in columns 31-40: expected 0, -1, 1, 3, 5 or 6"),
-            ))
-        }
-    };
+    let inacti = penalty_inacti(&c5)?;
     let c6 = cards.next("the card with Ifric, Ifiltr, Xfreq, sens_ID, fric_ID")?;
     let ifric = flag(&c6, 1, "Ifric", &[0, 1, 2, 3, 4], 0)?;
     let (ifiltr, xfreq) = filter(&c6)?;
@@ -802,6 +787,105 @@ fn read_type25(cards: &mut Cards) -> InputResult<Type25> {
     })
 }
 
+/// Inacti of TYPE24 and TYPE25 (columns 31-40): 0 → 1000; −1, 1, 3, 5; 6
+/// read as 5, as the Starter does.
+fn penalty_inacti(c: &Card) -> InputResult<i64> {
+    match c.int(31, "Inacti", 0)? {
+        0 => Ok(1000),
+        6 => Ok(5),
+        v @ (-1 | 1 | 3 | 5 | 1000) => Ok(v),
+        v => Err(c.err(
+            "Inacti",
+            format!("{v} in columns 31-40: expected 0, -1, 1, 3, 5 or 6"),
+        )),
+    }
+}
+
+// ---------------------------------------------------------------------------
+// TYPE24
+// ---------------------------------------------------------------------------
+
+/// /INTER/TYPE24 (formats 2021-2023; 2021 has no IPSTIF, Stfac_mdt, DTstif,
+/// Tpressfit, read as 0).
+fn read_type24(cards: &mut Cards) -> InputResult<Type24> {
+    let c1 = cards.next("the card with surf_ID1, surf_ID2, Istf, Irem_i2, Idel, IPSTIF")?;
+    let surf_id1 = c1.id_opt(1, "surf_ID1")?;
+    let surf_id2 = c1.id_opt(11, "surf_ID2")?;
+    let istf = flag(
+        &c1,
+        21,
+        "Istf",
+        &[0, 1, 2, 3, 4, 5, 6, 7, 12, 13, 14, 1000],
+        1000,
+    )?;
+    let c2 = cards.next("the card with grnd_IDs, Iedge, Edge_angle, Gap_max_s, Gap_max_m")?;
+    let grnd_ids = c2.id_opt(1, "grnd_IDs")?;
+    if surf_id1 == 0 && (surf_id2 == 0 || grnd_ids == 0) {
+        return Err(c1.err(
+            "surf_ID1",
+            "0: expected surf_ID1 (self-contact, or with surf_ID2), or grnd_IDs and surf_ID2 (nodes to surface)",
+        ));
+    }
+    let c3 = cards.next("the card with Stmin, Stmax, Igap0, Ipen0, Ipen_max, Stfac_mdt")?;
+    let stmin = real_ge0(&c3, 1, "Stmin", 0.0, "the minimum stiffness")?;
+    let stmax = real_ge0(&c3, 21, "Stmax", EP30, "the maximum stiffness")?;
+    let c4 = cards.next("the card with Stfac, Fric, Tstart, Tstop")?;
+    let (tstart, tstop) = times(&c4)?;
+    let c5 = cards.next("the card with IBC, Inacti, VISs, Tpressfit")?;
+    let c6 = cards.next("the card with Ifric, Ifiltr, Xfreq, sens_ID, DTstif, fric_ID")?;
+    let ifric = flag(&c6, 1, "Ifric", &[0, 1, 2, 3, 4], 0)?;
+    let (ifiltr, xfreq) = filter(&c6)?;
+    Ok(Type24 {
+        surf_id1,
+        surf_id2,
+        istf,
+        irem_i2: flag(&c1, 51, "Irem_i2", &[0, 1, 3], 1)?,
+        idel: flag(&c1, 71, "Idel", &[-2, -1, 0, 1, 2, 1000], 1000)?,
+        ipstif: flag(&c1, 91, "IPSTIF", &[0, 1], 0)?,
+        grnd_ids,
+        iedge: match c2.int(31, "Iedge", 0)? {
+            0 => 1000,
+            v if v > 0 => v,
+            v => {
+                return Err(c2.err(
+                    "Iedge",
+                    format!("{v} in columns 31-40: expected 0 or a positive flag"),
+                ))
+            }
+        },
+        edge_angle: real_ge0(&c2, 41, "Edge_angle", 135.0, "the edge angle")?,
+        gap_max_s: real_ge0(&c2, 61, "Gap_max_s", EP30, "the maximum secondary gap")?,
+        gap_max_m: real_ge0(&c2, 81, "Gap_max_m", EP30, "the maximum main gap")?,
+        stmin,
+        stmax: stmax.max(stmin),
+        igap0: flag(&c3, 41, "Igap0", &[0, 1, 1000], 1000)?,
+        ipen0: flag(&c3, 51, "Ipen0", &[0, 1, 1000], 1000)?,
+        ipen_max: real_ge0(&c3, 61, "Ipen_max", 0.0, "the largest initial penetration")?,
+        stfac_mdt: real_ge0(
+            &c3,
+            81,
+            "Stfac_mdt",
+            0.1,
+            "the mass and time-step stiffness factor",
+        )?,
+        stfac: real_ge0(&c4, 1, "Stfac", 1.0, "the stiffness factor")?,
+        fric: real_ge0(&c4, 21, "Fric", 0.0, "the friction coefficient")?,
+        tstart,
+        tstop,
+        ibc: read_ibc(&c5)?,
+        inacti: penalty_inacti(&c5)?,
+        viss: real_ge0(&c5, 41, "VISs", 0.05, "the critical damping")?,
+        tpressfit: real_ge0(&c5, 81, "Tpressfit", 0.0, "the press-fit time")?,
+        ifric,
+        ifiltr,
+        xfreq,
+        sens_id: c6.id_opt(51, "sens_ID")?,
+        dtstif: real_ge0(&c6, 61, "DTstif", 0.0, "the stiffness time step")?,
+        fric_id: c6.id_opt(91, "fric_ID")?,
+        fric_coefs: friction_coefs(cards, ifric)?,
+    })
+}
+
 /// Reads one /INTER block. Returns false for an interface type this reader
 /// does not support (the caller warns, or fails with --strict).
 pub(super) fn parse_interface(block: &Block, deck: &mut Deck) -> InputResult<bool> {
@@ -815,6 +899,7 @@ pub(super) fn parse_interface(block: &Block, deck: &mut Deck) -> InputResult<boo
         "TYPE11" => 11,
         "TYPE14" => 14,
         "TYPE19" => 19,
+        "TYPE24" => 24,
         "TYPE25" => 25,
         _ => return Ok(false),
     };
@@ -834,6 +919,7 @@ pub(super) fn parse_interface(block: &Block, deck: &mut Deck) -> InputResult<boo
         }
         14 => InterfaceKind::Type14(read_type14(&mut cards)?),
         19 => InterfaceKind::Type19(read_type19(&mut cards)?),
+        24 => InterfaceKind::Type24(read_type24(&mut cards)?),
         _ => InterfaceKind::Type25(read_type25(&mut cards)?),
     };
     let extra: Vec<_> = cards
@@ -1356,7 +1442,7 @@ mod tests {
     #[test]
     fn unsupported_type() {
         let mut deck = Deck::default();
-        let b = block("/INTER/TYPE24/1", &["t", "1 2"]);
+        let b = block("/INTER/TYPE23/1", &["t", "1 2"]);
         assert!(!parse_interface(&b, &mut deck).unwrap());
         assert!(deck.interfaces.is_empty());
     }

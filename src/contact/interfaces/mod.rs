@@ -546,6 +546,7 @@ registry! {
     7 => type7::Type7,
     11 => type11::Type11,
     14 => type14::Type14,
+    24 => type24::Type24,
     25 => type25::Type25,
 }
 
@@ -590,7 +591,7 @@ mod tests {
 
     #[test]
     fn every_registered_number_resolves_to_its_type_and_candidate_kind() {
-        assert_eq!(TypeOptions::NUMBERS, &[3, 5, 6, 7, 11, 14, 25]);
+        assert_eq!(TypeOptions::NUMBERS, &[3, 5, 6, 7, 11, 14, 24, 25]);
         let expect = [
             (3, CandidateKind::NodeToSegment, CandidateSearch::Walk),
             (5, CandidateKind::NodeToSegment, CandidateSearch::Walk),
@@ -602,6 +603,7 @@ mod tests {
                 CandidateKind::NodeToEllipsoid,
                 CandidateSearch::Analytic,
             ),
+            (24, CandidateKind::NodeToSegment, CandidateSearch::Sort),
             (25, CandidateKind::NodeToSegment, CandidateSearch::Sort),
         ];
         for (n, kind, search) in expect {

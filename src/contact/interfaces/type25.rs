@@ -68,6 +68,24 @@ pub struct Type25 {
     /// Igap0 = 1: secondary nodes on a free shell edge have no gap.
     #[serde(default)]
     pub igap0: bool,
+    /// How a new impact starts: TYPE25's rule, or TYPE24's.
+    #[serde(default)]
+    pub impact: Impact,
+}
+
+/// How a node's new impact on a segment starts.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub enum Impact {
+    /// TYPE25 (and TYPE24 with Inacti 5): the penetration at the impact is
+    /// the baseline only further penetration pushes against, and the
+    /// stiffness starts at K·dp/p (i25for3.F, i24dst3.F "PENE_Offset").
+    #[default]
+    Baseline,
+    /// TYPE24 (i24dst3.F, i24for3.F): no baseline; the impact takes the full
+    /// stiffness at once (the secant rule applies from the next cycle); a
+    /// node found penetrated before the first step (deeper than 1e-8, the
+    /// reference's Ipen_min) feels nothing until it leaves that contact.
+    Full,
 }
 
 impl InterfaceType for Type25 {
@@ -136,6 +154,7 @@ impl InterfaceType for Type25 {
             gap_max_m: t.gap_max_m,
             mass_stiffness: (t.ipstif == 1).then_some((t.stfac_mdt, t.dtstif)),
             igap0: t.igap0 == 1,
+            impact: Impact::Baseline,
         };
         Some((own, common))
     }
@@ -219,6 +238,8 @@ impl InterfaceType for Type25 {
             3 => km.max(ks),
             4 => km.min(ks),
             5 => stiffness::series(km, ks),
+            // TYPE24's Istf 7: only the mass and time-step stiffness.
+            7 => return 0.0,
             _ => return km,
         };
         self.stmin.max(self.stmax.min(kn))
@@ -244,11 +265,16 @@ impl InterfaceType for Type25 {
             k_new = k_new.max(stiffness::mass_time_step(s, c.ms, mm, dt_s));
         }
         if st.side == 0 {
-            // A new impact: its penetration is the baseline, its stiffness
-            // the secant's start (taken at the first step when not known yet).
+            // A new impact: its baseline, and its stiffness the secant's
+            // start (taken at the first step when not known yet).
+            let baseline = match self.impact {
+                Impact::Baseline => p_raw,
+                Impact::Full if c.dt == 0.0 && p_raw > 1e-8 => f64::INFINITY,
+                Impact::Full => 0.0,
+            };
             *st = PairState {
                 side,
-                pen_memory: [p_raw, 0.0, if step_known { k_new } else { 0.0 }],
+                pen_memory: [baseline, 0.0, if step_known { k_new } else { 0.0 }],
                 ..PairState::default()
             };
         }
@@ -266,6 +292,7 @@ impl InterfaceType for Type25 {
         };
         let law = Law {
             k_new,
+            ramp_new: self.impact == Impact::Baseline,
             viss: if self.ivis2 == 4 { 0.0 } else { self.viss },
             mass,
             friction: &it.friction,
@@ -343,6 +370,8 @@ fn penetration(
 /// One pair's penalty law (see the module's comment).
 struct Law<'a> {
     k_new: f64,
+    /// A new impact's stiffness starts at K·dp/p (TYPE25), or at K (TYPE24).
+    ramp_new: bool,
     viss: f64,
     /// The damper's mass.
     mass: f64,
@@ -357,7 +386,9 @@ impl Law<'_> {
         let dpdt = -geo::dot(vrel, pr.dir);
         let dp = (dpdt * self.dt).max(0.0);
         let [_, p_old, k_old] = st.pen_memory;
-        let k = if pen > p_old && dp < pen - p_old {
+        let k = if !self.ramp_new && (p_old == 0.0 || self.dt == 0.0) {
+            self.k_new
+        } else if pen > p_old && dp < pen - p_old {
             (k_old * p_old + self.k_new * dp) / pen
         } else {
             k_old

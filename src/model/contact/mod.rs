@@ -7,6 +7,7 @@ mod type11;
 mod type14;
 mod type19;
 mod type2;
+mod type24;
 mod type25;
 mod type3;
 mod type5;
@@ -17,6 +18,7 @@ pub use type11::*;
 pub use type14::*;
 pub use type19::*;
 pub use type2::*;
+pub use type24::*;
 pub use type25::*;
 pub use type3::*;
 pub use type5::*;
@@ -62,6 +64,7 @@ pub enum InterfaceKind {
     Type11(Type11),
     Type14(Type14),
     Type19(Type19),
+    Type24(Type24),
     Type25(Type25),
 }
 
@@ -80,7 +83,7 @@ pub enum Side {
 }
 
 impl InterfaceSpec {
-    /// 2, 3, 5, 6, 7, 11, 14, 19 or 25.
+    /// 2, 3, 5, 6, 7, 11, 14, 19, 24 or 25.
     pub fn type_number(&self) -> u32 {
         match self.kind {
             InterfaceKind::Type2(_) => 2,
@@ -91,6 +94,7 @@ impl InterfaceSpec {
             InterfaceKind::Type11(_) => 11,
             InterfaceKind::Type14(_) => 14,
             InterfaceKind::Type19(_) => 19,
+            InterfaceKind::Type24(_) => 24,
             InterfaceKind::Type25(_) => 25,
         }
     }
@@ -110,6 +114,7 @@ impl InterfaceSpec {
             InterfaceKind::Type19(_) => {
                 "general contact: node to surface both ways and edge to edge"
             }
+            InterfaceKind::Type24(_) => "penalty node to surface",
             InterfaceKind::Type25(_) => "penalty node to surface without activation gap",
         }
     }
@@ -133,13 +138,14 @@ impl InterfaceSpec {
             InterfaceKind::Type11(t) => Side::Line(t.line_ids),
             InterfaceKind::Type14(t) => Side::NodeGroup(t.grnd_ids),
             InterfaceKind::Type19(t) => Side::Surface(t.surfaces().0),
-            InterfaceKind::Type25(t) => {
-                if t.surf_id1 == 0 {
-                    Side::NodeGroup(t.grnd_ids)
-                } else if t.surf_id2 == 0 {
+            InterfaceKind::Type24(_) | InterfaceKind::Type25(_) => {
+                let (s1, s2, grnd) = self.penalty_ids().unwrap_or_default();
+                if s1 == 0 {
+                    Side::NodeGroup(grnd)
+                } else if s2 == 0 {
                     Side::SameAsOther
                 } else {
-                    Side::Surface(t.surf_id1)
+                    Side::Surface(s1)
                 }
             }
         }
@@ -151,9 +157,13 @@ impl InterfaceSpec {
             InterfaceKind::Type3(_) | InterfaceKind::Type6(_) => ("surf_ID1", "surf_ID2"),
             InterfaceKind::Type11(_) => ("line_IDs", "line_IDm"),
             InterfaceKind::Type19(_) => ("surf_IDs", "surf_IDm"),
-            InterfaceKind::Type25(t) if t.surf_id1 == 0 => ("grnd_IDs", "surf_ID2"),
-            InterfaceKind::Type25(t) if t.surf_id2 == 0 => ("surf_ID1", "surf_ID1"),
-            InterfaceKind::Type25(_) => ("surf_ID1", "surf_ID2"),
+            InterfaceKind::Type24(_) | InterfaceKind::Type25(_) => {
+                match self.penalty_ids().unwrap_or_default() {
+                    (0, _, _) => ("grnd_IDs", "surf_ID2"),
+                    (_, 0, _) => ("surf_ID1", "surf_ID1"),
+                    _ => ("surf_ID1", "surf_ID2"),
+                }
+            }
             _ => ("grnd_IDs", "surf_IDm"),
         }
     }
@@ -196,11 +206,21 @@ impl InterfaceSpec {
             }
             InterfaceKind::Type14(t) => Side::Surface(t.surf_idm),
             InterfaceKind::Type19(t) => Side::Surface(t.surfaces().1),
-            InterfaceKind::Type25(t) => Side::Surface(if t.surf_id2 == 0 {
-                t.surf_id1
-            } else {
-                t.surf_id2
-            }),
+            InterfaceKind::Type24(_) | InterfaceKind::Type25(_) => {
+                let (s1, s2, _) = self.penalty_ids().unwrap_or_default();
+                Side::Surface(if s2 == 0 { s1 } else { s2 })
+            }
+        }
+    }
+
+    /// TYPE24 and TYPE25: (surf_ID1, surf_ID2, grnd_IDs). surf_ID1 alone is
+    /// self-contact, with surf_ID2 two surfaces, 0 the group's nodes on
+    /// surf_ID2.
+    fn penalty_ids(&self) -> Option<(Id, Id, Id)> {
+        match &self.kind {
+            InterfaceKind::Type24(t) => Some((t.surf_id1, t.surf_id2, t.grnd_ids)),
+            InterfaceKind::Type25(t) => Some((t.surf_id1, t.surf_id2, t.grnd_ids)),
+            _ => None,
         }
     }
 }
