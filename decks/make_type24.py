@@ -26,13 +26,11 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from make_contact import (Box, header, law1, prop_solid, prop_shell, part, nodes_block,  # noqa: E402
                           bricks_block, shells_block, group, surf_part, bcs, funct, impvel, engine,
                           write, i10, r20)
+from make_type25 import type25_block  # noqa: E402
 
 PLATE_D0 = 0.8   # mm: the block's bottom over the plate's mid-plane
 PLATE_V = 1.0    # mm/ms
 PLATE_TEND = 0.7 # ms
-P0 = 0.1         # mm: type24_block's initial penetration
-V = 0.01         # mm/ms
-TEND = 0.3       # ms
 
 
 def inter24(iid, title, surf1, surf2, grnod, gap_max_m=0.0):
@@ -84,27 +82,8 @@ def type24_plate():
 
 
 def type24_block():
-    name = "type24_block"
-    lower = Box(1, 1, (0.0, 0.0, -5.0), (10.0, 10.0, 5.0), (2, 2, 1))
-    upper = upper_block(-P0)
-    S = header(name, "TYPE24: a block pressed on a block it starts inside of", [
-        "The upper block's bottom face starts 0.1 mm inside the fixed lower block",
-        "and is driven down at 0.01 mm/ms (decks/make_type24.py)."])
-    S += law1(1, "steel") + prop_solid(1, "bricks")
-    S += part(1, "lower block", 1, 1) + part(2, "upper block", 1, 1)
-    S += nodes_block(lower.nodes() + upper.nodes())
-    S += bricks_block(1, lower.bricks()) + bricks_block(2, upper.bricks())
-    S += group(1, "lower block", [n[0] for n in lower.nodes()])
-    S += group(2, "upper block", [n[0] for n in upper.nodes()])
-    S += group(3, "upper block bottom", upper.face(2, 0))
-    S += bcs(1, "lower block fixed", "111 000", 1)
-    S += funct(1, "constant", [(0.0, 1.0), (100.0, 1.0)])
-    S += impvel(1, "upper block down", 1, "Z", 2, -V)
-    S += surf_part(1, "lower block", [1])
-    S += inter24(1, "upper bottom nodes on the lower block", 0, 1, 3)
-    S += ["/END"]
-    N = engine(name, TEND, -250, comments=[f"{TEND:g} ms at {V:g} mm/ms: {V * TEND:g} mm beyond the initial {P0:g} mm."])
-    return name, S, N
+    """make_type25.py's type25_block with a TYPE24 card."""
+    return type25_block("type24_block", inter=inter24, kind="TYPE24")
 
 
 MAKERS = dict(type24_plate=type24_plate, type24_block=type24_block)

@@ -69,10 +69,12 @@ def inter25(iid, title, surf1, surf2, grnod, istf=0, fric=0.0, viss=0.0, inacti=
             i10(0) * 2 + r20(0) + " " * 10 + i10(0) + r20(dtstif) + " " * 10 + i10(0)]
 
 
-def type25_block(name="type25_block", mass_stiffness=False):
+def type25_block(name="type25_block", mass_stiffness=False, inter=None, kind="TYPE25"):
+    """The two blocks; `inter(iid, title, surf1, surf2, grnod)` writes the
+    interface card (TYPE25's by default; make_type24.py passes TYPE24's)."""
     lower = Box(1, 1, (0.0, 0.0, -5.0), (10.0, 10.0, 5.0), (2, 2, 1))
     upper = Box(101, 101, (1.25, 1.25, -P0), (7.5, 7.5, 2.5), (3, 3, 1))
-    S = header(name, "TYPE25: a block pressed on a block it starts inside of", [
+    S = header(name, f"{kind}: a block pressed on a block it starts inside of", [
         "The upper block's bottom face starts 0.1 mm inside the fixed lower block",
         "and is driven down at 0.01 mm/ms (decks/make_type25.py)."])
     S += law1(1, "steel") + prop_solid(1, "bricks")
@@ -92,7 +94,7 @@ def type25_block(name="type25_block", mass_stiffness=False):
         S += inter25(1, "upper bottom nodes on the lower block", 0, 1, 3, stfac=1e-6, ipstif=1,
                      stfac_mdt=0.2, dtstif=1e-4)
     else:
-        S += inter25(1, "upper bottom nodes on the lower block", 0, 1, 3)
+        S += (inter or inter25)(1, "upper bottom nodes on the lower block", 0, 1, 3)
     S += ["/END"]
     N = engine(name, TEND, -250, comments=[f"{TEND:g} ms at {V:g} mm/ms: {V * TEND:g} mm beyond the initial {P0:g} mm."])
     return name, S, N

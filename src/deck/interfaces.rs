@@ -18,7 +18,7 @@ use super::fields::{Card, Cards};
 use super::source::Block;
 use super::{header_id, header_id_opt, Deck};
 use crate::model::contact::*;
-use crate::model::{InputResult, Warning};
+use crate::model::{Id, InputResult, Warning};
 
 // ---------------------------------------------------------------------------
 // TYPE2
@@ -716,15 +716,9 @@ fn read_type25(cards: &mut Cards) -> InputResult<Type25> {
     let iedge = flag(&c1, 81, "Iedge", &[0, 1, 11, 13, 22, 1000], 1000)?;
     let c2 = cards.next("the card with grnd_IDs, Gap_scale, %mesh_size, Gap_max_s, Gap_max_m")?;
     let grnd_ids = c2.id_opt(1, "grnd_IDs")?;
-    if surf_id1 == 0 && (surf_id2 == 0 || grnd_ids == 0) {
-        return Err(c1.err(
-            "surf_ID1",
-            "0: expected surf_ID1 (self-contact, or with surf_ID2), or grnd_IDs and surf_ID2 (nodes to surface)",
-        ));
-    }
+    penalty_sides(&c1, surf_id1, surf_id2, grnd_ids)?;
     let c3 = cards.next("the card with Stmin, Stmax, Igap0, Ishape, Edge_angle")?;
-    let stmin = real_ge0(&c3, 1, "Stmin", 0.0, "the minimum stiffness")?;
-    let stmax = real_ge0(&c3, 21, "Stmax", EP30, "the maximum stiffness")?;
+    let (stmin, stmax) = stiffness_bounds(&c3)?;
     let c4 = cards.next("the card with Stfac, Fric, Tpressfit, Tstart, Tstop")?;
     let (tstart, tstop) = times(&c4)?;
     let c5 = cards.next("the card with IBC, IVIS2, Inacti, VISs, Ithick, Pmax")?;
@@ -748,7 +742,7 @@ fn read_type25(cards: &mut Cards) -> InputResult<Type25> {
         gap_max_s: real_ge0(&c2, 61, "Gap_max_s", EP30, "the maximum secondary gap")?,
         gap_max_m: real_ge0(&c2, 81, "Gap_max_m", EP30, "the maximum main gap")?,
         stmin,
-        stmax: stmax.max(stmin),
+        stmax,
         igap0: flag(&c3, 41, "Igap0", &[0, 1, 1000], 1000)?,
         ishape: flag(&c3, 51, "Ishape", &[0, 1, 2], 1)?,
         edge_angle: real_ge0(&c3, 61, "Edge_angle", 135.0, "the edge angle")?,
@@ -787,6 +781,26 @@ fn read_type25(cards: &mut Cards) -> InputResult<Type25> {
     })
 }
 
+/// TYPE24 and TYPE25: surf_ID1 (self-contact, or with surf_ID2), or
+/// grnd_IDs with surf_ID2 (nodes to surface).
+fn penalty_sides(c1: &Card, surf_id1: Id, surf_id2: Id, grnd_ids: Id) -> InputResult<()> {
+    if surf_id1 == 0 && (surf_id2 == 0 || grnd_ids == 0) {
+        return Err(c1.err(
+            "surf_ID1",
+            "0: expected surf_ID1 (self-contact, or with surf_ID2), or grnd_IDs and surf_ID2 (nodes to surface)",
+        ));
+    }
+    Ok(())
+}
+
+/// Stmin (1-20, 0 → 0) and Stmax (21-40, 0 → 1e30, at least Stmin) of
+/// TYPE24 and TYPE25.
+fn stiffness_bounds(c: &Card) -> InputResult<(f64, f64)> {
+    let stmin = real_ge0(c, 1, "Stmin", 0.0, "the minimum stiffness")?;
+    let stmax = real_ge0(c, 21, "Stmax", EP30, "the maximum stiffness")?;
+    Ok((stmin, stmax.max(stmin)))
+}
+
 /// Inacti of TYPE24 and TYPE25 (columns 31-40): 0 → 1000; −1, 1, 3, 5; 6
 /// read as 5, as the Starter does.
 fn penalty_inacti(c: &Card) -> InputResult<i64> {
@@ -820,15 +834,9 @@ fn read_type24(cards: &mut Cards) -> InputResult<Type24> {
     )?;
     let c2 = cards.next("the card with grnd_IDs, Iedge, Edge_angle, Gap_max_s, Gap_max_m")?;
     let grnd_ids = c2.id_opt(1, "grnd_IDs")?;
-    if surf_id1 == 0 && (surf_id2 == 0 || grnd_ids == 0) {
-        return Err(c1.err(
-            "surf_ID1",
-            "0: expected surf_ID1 (self-contact, or with surf_ID2), or grnd_IDs and surf_ID2 (nodes to surface)",
-        ));
-    }
+    penalty_sides(&c1, surf_id1, surf_id2, grnd_ids)?;
     let c3 = cards.next("the card with Stmin, Stmax, Igap0, Ipen0, Ipen_max, Stfac_mdt")?;
-    let stmin = real_ge0(&c3, 1, "Stmin", 0.0, "the minimum stiffness")?;
-    let stmax = real_ge0(&c3, 21, "Stmax", EP30, "the maximum stiffness")?;
+    let (stmin, stmax) = stiffness_bounds(&c3)?;
     let c4 = cards.next("the card with Stfac, Fric, Tstart, Tstop")?;
     let (tstart, tstop) = times(&c4)?;
     let c5 = cards.next("the card with IBC, Inacti, VISs, Tpressfit")?;
@@ -857,7 +865,7 @@ fn read_type24(cards: &mut Cards) -> InputResult<Type24> {
         gap_max_s: real_ge0(&c2, 61, "Gap_max_s", EP30, "the maximum secondary gap")?,
         gap_max_m: real_ge0(&c2, 81, "Gap_max_m", EP30, "the maximum main gap")?,
         stmin,
-        stmax: stmax.max(stmin),
+        stmax,
         igap0: flag(&c3, 41, "Igap0", &[0, 1, 1000], 1000)?,
         ipen0: flag(&c3, 51, "Ipen0", &[0, 1, 1000], 1000)?,
         ipen_max: real_ge0(&c3, 61, "Ipen_max", 0.0, "the largest initial penetration")?,

@@ -25,12 +25,11 @@
 //! laws and filters, /FRICTION, sensors.
 
 use super::layout::{Interface, Pass};
-use super::type25::{Impact, Type25 as Kernel};
+use super::type25::{penalty_common, Impact, Type25 as Kernel};
 use super::{
     CandidateKind, CandidateSearch, CardCommon, InterfaceType, NodeState, PairContext, PairForce,
     PairOutcome, PairState, SurfaceSizes,
 };
-use crate::contact::friction::FrictionLaw;
 use crate::contact::gap::{GapRule, InitialPenetration};
 use crate::contact::geometry::V3;
 use crate::model::{self, InterfaceKind};
@@ -81,22 +80,7 @@ impl InterfaceType for Type24 {
         let InterfaceKind::Type24(t) = kind else {
             return None;
         };
-        let common = CardCommon {
-            stfac: t.stfac,
-            friction: FrictionLaw {
-                ifric: 0,
-                fric: t.fric,
-                iform: 2,
-                visf: 0.0,
-                ..FrictionLaw::none()
-            },
-            gap_card: 0.0,
-            tstart: t.tstart,
-            tstop: t.tstop,
-            ibc: t.ibc,
-            inacti: t.inacti,
-            idel: t.idel,
-        };
+        let common = penalty_common(t.stfac, t.fric, (t.tstart, t.tstop), t.ibc, t.inacti, t.idel);
         let mass_stiffness = t.ipstif == 1 || t.istf == 7;
         let kernel = Kernel {
             istf: t.istf,

@@ -127,22 +127,7 @@ impl InterfaceType for Type25 {
         let InterfaceKind::Type25(t) = kind else {
             return None;
         };
-        let common = CardCommon {
-            stfac: t.stfac,
-            friction: FrictionLaw {
-                ifric: 0,
-                fric: t.fric,
-                iform: 2,
-                visf: 0.0,
-                ..FrictionLaw::none()
-            },
-            gap_card: 0.0,
-            tstart: t.tstart,
-            tstop: t.tstop,
-            ibc: t.ibc,
-            inacti: t.inacti,
-            idel: t.idel,
-        };
+        let common = penalty_common(t.stfac, t.fric, (t.tstart, t.tstop), t.ibc, t.inacti, t.idel);
         let own = Type25 {
             istf: t.istf,
             stmin: t.stmin,
@@ -316,6 +301,35 @@ impl InterfaceType for Type25 {
         _g: f64,
     ) -> (InitialPenetration, f64) {
         (InitialPenetration::Keep, 0.0)
+    }
+}
+
+/// The common options of a TYPE24 or TYPE25 card: Stfac, Coulomb friction
+/// in the incremental form (the reference forces it: MODFR 2), no card gap,
+/// (Tstart, Tstop), IBC, Inacti, Idel.
+pub fn penalty_common(
+    stfac: f64,
+    fric: f64,
+    (tstart, tstop): (f64, f64),
+    ibc: [bool; 3],
+    inacti: i64,
+    idel: i64,
+) -> CardCommon {
+    CardCommon {
+        stfac,
+        friction: FrictionLaw {
+            ifric: 0,
+            fric,
+            iform: 2,
+            visf: 0.0,
+            ..FrictionLaw::none()
+        },
+        gap_card: 0.0,
+        tstart,
+        tstop,
+        ibc,
+        inacti,
+        idel,
     }
 }
 
