@@ -59,7 +59,8 @@ def rbody(rid, title, main, gid, mass=0.0):
             "#                Jxy                 Jyz                 Jxz", r20(0) * 3]
 
 
-def inter6(iid, title, surf1, surf2, fct, fscale, ascale, visc, fric=0.0, gap=0.0):
+def inter6(iid, title, surf1, surf2, fct, fscale, ascale, visc, fric=0.0, gap=0.0,
+           iform=0, fct_ul=0, stiff=0.0, fscale_ul=0.0):
     """/INTER/TYPE6 in the 2017 and later layout (src/deck/interfaces.rs read_type6)."""
     return [f"/INTER/TYPE6/{iid}", title,
             "#  surf_ID1  surf_ID2", i10(surf1) + i10(surf2),
@@ -68,33 +69,40 @@ def inter6(iid, title, surf1, surf2, fct, fscale, ascale, visc, fric=0.0, gap=0.
             "#                 IRS       IRm    Inacti  fct_IDff  fct_IDfv             Ascalef             Ascalev",
             " " * 10 + i10(0) * 5 + r20(0) * 2,
             "# fct_IDld     Iform             Ascalex            FscaleId      Icor",
-            i10(fct) + i10(0) + r20(ascale) + r20(fscale) + i10(0),
+            i10(fct) + i10(iform) + r20(ascale) + r20(fscale) + i10(0),
             "# fct_IDul                         Stiff            Fscaleul",
-            i10(0) + " " * 10 + r20(0) + r20(0),
+            i10(fct_ul) + " " * 10 + r20(stiff) + r20(fscale_ul),
             "#               Visc  fct_IDdv  fct_IDdf             Fscalev",
             r20(visc) + i10(0) * 2 + r20(0)]
 
 
-def type6_rest(name="type6_rest"):
+def blocks():
+    """The fixed rigid ground and the rigid block over it, touching: nodes,
+    shells and the starter lines every TYPE6 deck shares."""
     ground, g_sh = plate(1, 1, (-20.0, -20.0), 40.0, 40.0, 5, 5, 0.0)
     block, b_sh = plate(101, 101, (-10.0, -10.0), 20.0, 20.0, 2, 2, 0.0)
     # The block's surface faces the ground: reverse its shells' node order.
     b_sh = [(e, n[::-1]) for e, n in b_sh]
     mains = [(1000, 0.0, 0.0, 0.0), (2000, 0.0, 0.0, 0.0)]
-    S = header(name, "TYPE6: a rigid block resting on a rigid ground", [
-        f"A rigid shell block pushed by {W:g} kN on a rigid ground through /INTER/TYPE6",
-        "(decks/make_rigid.py): it rests where FscaleId f(p/Ascalex) = W."])
-    S += law1(1, "steel") + prop_shell(1, "t = 1 mm", 1.0)
+    S = law1(1, "steel") + prop_shell(1, "t = 1 mm", 1.0)
     S += part(1, "ground", 1, 1) + part(2, "block", 1, 1)
     S += nodes_block(ground + block + mains) + shells_block(1, g_sh) + shells_block(2, b_sh)
     S += group(1, "ground nodes", [n[0] for n in ground]) + group(2, "block nodes", [n[0] for n in block])
     S += group(3, "ground main node", [1000]) + group(4, "block main node", [2000])
     S += rbody(1, "ground", 1000, 1) + rbody(2, "block", 2000, 2, BLOCK_MASS)
     S += bcs(1, "ground fixed", "111 111", 3)
+    S += surf_part(1, "block bottom", [2]) + surf_part(2, "ground top", [1])
+    return S
+
+
+def type6_rest(name="type6_rest"):
+    S = header(name, "TYPE6: a rigid block resting on a rigid ground", [
+        f"A rigid shell block pushed by {W:g} kN on a rigid ground through /INTER/TYPE6",
+        "(decks/make_rigid.py): it rests where FscaleId f(p/Ascalex) = W."])
+    S += blocks()
     S += funct(1, "constant", [(0.0, 1.0), (1000.0, 1.0)])
     S += funct(2, "loading force vs penetration", CURVE)
     S += cload(1, "weight on the block", 1, "Z", 4, -W)
-    S += surf_part(1, "block bottom", [2]) + surf_part(2, "ground top", [1])
     S += inter6(1, "block on ground", 1, 2, 2, FSCALE, ASCALE, VISC)
     S += ["/END"]
     N = engine(name, TEND, -500, comments=[f"{TEND:g} ms; rests at p* = {rest_penetration():.6g} mm."])
@@ -156,7 +164,40 @@ def type14_sphere(name="type14_sphere"):
     return name, S, N
 
 
-DECKS = {"type6_rest": type6_rest, "type14_sphere": type14_sphere}
+# type6_drop, type6_drop_ul
+V0_DROP = 1.0                   # mm/ms: the block's speed at the impact
+K_DROP = 1.0                    # kN/mm: the loading curve's slope
+STIFF_DROP = 4.0                # kN/mm: Iform 2's unloading slope
+STIFF_UL, FSCALE_UL = 100.0, 0.25   # Iform 1: unloading slope, f_ul = 0.25 f_ld
+
+
+def type6_drop(name="type6_drop", iform=2):
+    """The block hits the ground at V0_DROP; TYPE6 with a linear loading
+    curve K_DROP·p. Iform 2: unloading along Stiff to zero, so it rebounds
+    at V0·sqrt(K/Stiff); Iform 1: along Stiff down to the unloading curve
+    FSCALE_UL·K·p, then on it."""
+    ul = iform == 1
+    S = header(name, f"TYPE6 Iform {iform}: a rigid block dropped on a rigid ground", [
+        f"A rigid shell block hits a rigid ground at {V0_DROP:g} mm/ms through /INTER/TYPE6 with a",
+        f"linear loading curve and Iform {iform} (decks/make_rigid.py)."])
+    S += blocks()
+    S += inivel(1, "drop: the block", (0.0, 0.0, -V0_DROP), 2)
+    S += inivel(2, "drop: its main node", (0.0, 0.0, -V0_DROP), 4)
+    S += funct(2, "loading force vs penetration", [(0.0, 0.0), (10.0, 10.0 * K_DROP)])
+    S += inter6(1, "block on ground", 1, 2, 2, 1.0, 1.0, 0.0, iform=iform, fct_ul=2 if ul else 0,
+                stiff=STIFF_UL if ul else STIFF_DROP, fscale_ul=FSCALE_UL if ul else 0.0)
+    S += ["/END"]
+    tend = 7.0 if ul else 4.0
+    N = engine(name, tend, -10, comments=[f"{tend:g} ms: the block is off the ground again."])
+    return name, S, N
+
+
+def type6_drop_ul():
+    return type6_drop("type6_drop_ul", iform=1)
+
+
+DECKS = {"type6_rest": type6_rest, "type14_sphere": type14_sphere, "type6_drop": type6_drop,
+         "type6_drop_ul": type6_drop_ul}
 
 if __name__ == "__main__":
     out = sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(os.path.abspath(__file__))

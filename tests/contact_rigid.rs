@@ -16,6 +16,10 @@
 //! - a surface not on a rigid body, and the options not computed, stop the
 //!   run by name.
 //!
+//! Iform 1 and 2 (type6_drop, type6_drop_ul): a block dropped at 1 mm/ms
+//! rebounds with the energy of its unloading path (along Stiff down to
+//! zero or to the unloading curve).
+//!
 //! Hyper-ellipsoid contact (§8.9, TYPE14) on type14_sphere: a rigid sphere
 //! (/SURF/ELLIPS on a 10 kg /RBODY) dropped at v0 = 2 mm/ms on a fixed plate,
 //! the total elastic force a nonlinear curve of the largest penetration:
@@ -148,21 +152,63 @@ fn a_type6_surface_off_any_rigid_body_stops_the_run_by_name() {
 
 #[test]
 fn type6_options_it_does_not_compute_stop_the_run_by_name() {
-    // Iform = 1 with an unloading curve and a transition stiffness.
-    let (code, err) = run_variant("type6_rest", "type6_iform", |i, lines| {
-        if i >= 1 && lines[i - 1].starts_with("# fct_IDld") {
-            Some(common::set_cols(lines[i], 10, 20, 1))
-        } else if i >= 1 && lines[i - 1].starts_with("# fct_IDul") {
-            Some(format!("{:>10}{:>10}{:>20}{:>20}", 2, "", "1.0", "1.0"))
-        } else {
-            None
-        }
+    // Icor = 1 (columns 61-70 of the fct_IDld card) with Iform 2 and Stiff.
+    let (code, err) = run_variant("type6_drop", "type6_icor", |i, lines| {
+        (i >= 1 && lines[i - 1].starts_with("# fct_IDld"))
+            .then(|| common::set_cols(lines[i], 60, 70, 1))
     });
     assert_eq!(code, 2, "{err}");
     assert!(
-        err.contains("/INTER/TYPE6/1") && err.contains("Iform"),
+        err.contains("/INTER/TYPE6/1") && err.contains("Icor"),
         "{err}"
     );
+}
+
+/// The block's vertical speed at the end of a run of decks/NAME, after it
+/// left the ground (its main node, 2000).
+fn rebound_speed(r: &Run) -> f64 {
+    r.final_state()[&2000][5]
+}
+
+/// Iform 2 (type6_drop): the block hits the ground at v0 = 1 mm/ms, loads
+/// on the linear curve K·p (K = 1 kN/mm) to ½Mv0² = ½K·p², unloads along
+/// Stiff = 4 kN/mm to zero: it gives back F²/2Stiff = (K/Stiff)·½Mv0² and
+/// leaves at v0·√(K/Stiff) = 0.5 mm/ms, within 1%. Iform 1 (type6_drop_ul):
+/// along Stiff = 100 down to the unloading curve 0.25·K·p, then on it; the
+/// energy given back is the area under that path, the share
+/// (1 + q·x)(1 − x) + q·x² of ½K·p² (x = p_i/p, below), so it leaves at
+/// 0.5056 mm/ms, within 1%.
+/// Both byte-identical on 2 ranks; Iform 2 restarted mid-unloading from 2
+/// ranks on 1 ends identically (the interface's memory travels).
+#[test]
+fn iform_1_and_2_give_back_the_energy_of_the_unloading_path() {
+    let d = deck("type6_drop");
+    let r = run(&d, &scratch("type6_drop_1"), &RunArgs::default());
+    assert!(r.listing.normal_termination());
+    let v = rebound_speed(&r);
+    assert!(
+        (v - 0.5).abs() < 0.005,
+        "Iform 2: rebound {v}, expected 0.5"
+    );
+    assert_same_final_state_on_2_ranks(&d, "type6_drop_2", &r);
+    assert_restart_2_to_1_ends_as(&d, "type6_drop_restart", 20, &r);
+    // Iform 1: from (p, K·p) along Stiff S to the unloading curve q·K·p at
+    // p_i = p·(S − K)/(S − qK), then on it to zero; per unit ½K·p².
+    let (k, s, q): (f64, f64, f64) = (1.0, 100.0, 0.25);
+    let x = (s - k) / (s - q * k);
+    let share = (1.0 + q * x) * (1.0 - x) + q * x * x;
+    let r = run(
+        &deck("type6_drop_ul"),
+        &scratch("type6_drop_ul_1"),
+        &RunArgs::default(),
+    );
+    let v = rebound_speed(&r);
+    let expect = share.sqrt();
+    assert!(
+        (v - expect).abs() < 0.01 * expect,
+        "Iform 1: rebound {v}, expected {expect}"
+    );
+    assert!((v - 0.5).abs() > 0.004, "the Stiff segment counts: {v}");
 }
 
 const CURVE14: [(f64, f64); 3] = [(0.0, 0.0), (10.0, 0.5), (30.0, 4.5)];

@@ -206,6 +206,10 @@ pub struct ContactSystem {
     /// Sort every cycle (benchmark reference).
     pub always_sort: bool,
     pub sums: Vec<InterfaceSums>,
+    /// Total-force types: each interface's memory from cycle to cycle
+    /// (TYPE6 Iform 1/2: the last largest penetration and force), the same
+    /// on every rank (it follows the reduced p_max).
+    pub(super) total_memory: Vec<[f64; 2]>,
     pub timers: ContactTimers,
     node_ids: Vec<u64>,
     /// Idel: element (kind index, element index) → the (interface, pass,
@@ -352,6 +356,7 @@ impl ContactSystem {
             runs,
             sorted_once: false,
             always_sort: false,
+            total_memory: vec![[0.0; 2]; sums.len()],
             sums,
             timers: ContactTimers::default(),
             node_ids: setup.nodes.iter().map(|&g| node_ids[g as usize]).collect(),

@@ -183,7 +183,8 @@ impl ContactSystem {
         world.max_f64(&mut p_max);
         sum_over_ranks(world, &mut r);
         let resultant = geo::norm([r[0].value(), r[1].value(), r[2].value()]);
-        let (f, step) = self.setup.interfaces[ii].ty().total_force(p_max[0]);
+        let memory = &mut self.total_memory[ii];
+        let (f, step) = self.setup.interfaces[ii].ty().total_force(p_max[0], memory);
         let fac = if resultant > 0.0 { f / resultant } else { 0.0 };
         (fac, step)
     }

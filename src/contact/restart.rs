@@ -40,7 +40,7 @@ use serde::{Deserialize, Serialize};
 use std::collections::HashMap;
 
 /// Layout of the contact sections; a file with another is refused.
-pub const LAYOUT: u32 = 2;
+pub const LAYOUT: u32 = 3;
 
 /// Interfaces as the restart file describes them: (id, type, per pass
 /// (secondary nodes, main segments)).
@@ -63,6 +63,8 @@ pub struct ContactScalars {
     energy: Vec<f64>,
     /// The run's contact energy (solver::run), summed over ranks.
     pub e_contact: f64,
+    /// Total-force types' memory per interface (layout 3), alike on every rank.
+    total_memory: Vec<[f64; 2]>,
 }
 
 /// One owned secondary node's memory in one pass.
@@ -149,6 +151,7 @@ impl ContactSystem {
             removed_total: self.removed_total.clone(),
             energy: sums,
             e_contact,
+            total_memory: self.total_memory.clone(),
         };
         let mut records = Vec::new();
         for (ii, it) in self.setup.interfaces.iter().enumerate() {
@@ -239,6 +242,7 @@ impl ContactSystem {
                 .any(|(a, b)| a.len() != b.len())
             || sc.removed_total.len() != self.runs.len()
             || sc.energy.len() != self.runs.len()
+            || sc.total_memory.len() != self.runs.len()
         {
             return Err(bad("interface tables of the wrong size"));
         }
@@ -322,6 +326,7 @@ impl ContactSystem {
         self.timers.sorts = sc.sorts;
         self.dead = sc.dead.iter().copied().collect();
         self.removed_total.clone_from(&sc.removed_total);
+        self.total_memory.clone_from(&sc.total_memory);
         self.removed_now.clear();
         let root = world.rank() == 0;
         for (s, &e) in self.sums.iter_mut().zip(&sc.energy) {

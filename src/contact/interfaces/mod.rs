@@ -411,8 +411,10 @@ pub trait InterfaceType: Sync {
 
     /// Total-force types: the total normal force at the largest penetration
     /// `p_max` (0 when nothing penetrates), and the interface's time step
-    /// (∞ when it sets none).
-    fn total_force(&self, _p_max: f64) -> (f64, f64) {
+    /// (∞ when it sets none). `memory` is the interface's from the last
+    /// cycle (zeros at the start), the same on every rank; the type keeps
+    /// what it needs there (TYPE6 Iform 1/2: the last p_max and force).
+    fn total_force(&self, _p_max: f64, _memory: &mut [f64; 2]) -> (f64, f64) {
         (0.0, f64::INFINITY)
     }
 

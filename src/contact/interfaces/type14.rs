@@ -243,7 +243,7 @@ impl InterfaceType for Type14 {
     }
 
     /// Stif·f(p_max), and the body's step √(2M/K).
-    fn total_force(&self, p_max: f64) -> (f64, f64) {
+    fn total_force(&self, p_max: f64, _memory: &mut [f64; 2]) -> (f64, f64) {
         if p_max <= 0.0 {
             return (0.0, f64::INFINITY);
         }

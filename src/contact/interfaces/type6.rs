@@ -51,6 +51,18 @@ pub struct Type6 {
     pub visc: f64,
     /// The smaller of the two rigid bodies' masses (EQ. 8.7.5.1).
     pub body_mass: f64,
+    /// Iform: 0 elastic (one curve both ways); 1 unloading along Stiff down
+    /// to the unloading curve; 2 down to zero.
+    #[serde(default)]
+    pub iform: i64,
+    /// Stiff: the slope of unloading and reloading between the curves.
+    #[serde(default)]
+    pub stiff: f64,
+    pub fct_id_ul: model::Id,
+    /// The unloading curve (fct_IDul, Iform 1) and its ordinate scale.
+    pub unload: Option<Function>,
+    #[serde(default)]
+    pub fscale_ul: f64,
 }
 
 impl Type6 {
@@ -60,6 +72,34 @@ impl Type6 {
             Some(f) => function::scaled_with_slope(f, p, self.ascalex, self.fscale_ld),
             None => (0.0, 0.0),
         }
+    }
+
+    /// Iform 1/2 (the reference engine's rule, docs/notes/
+    /// type6_type14_type15_research.md §2.1): from the last (p, F), load
+    /// along Stiff up to the loading curve, F = min(f_ld(p), F' + Stiff·Δp),
+    /// or unload along Stiff down to the unloading curve (Iform 1:
+    /// Fscaleul·f_ul(p/Ascalex)) or to zero (Iform 2),
+    /// F = max(f_ul(p), F' + Stiff·Δp). The memory is dropped when the
+    /// surfaces separate (the reference keeps F', which would make the next
+    /// impact start at it). Returns F and whether it is on a Stiff line.
+    fn hysteresis(&self, p: f64, f_ld: f64, memory: &mut [f64; 2]) -> (f64, bool) {
+        if p <= 0.0 {
+            *memory = [0.0; 2];
+            return (0.0, false);
+        }
+        let [p_prev, f_prev] = *memory;
+        let along = f_prev + self.stiff * (p - p_prev);
+        let f = if p >= p_prev {
+            f_ld.min(along)
+        } else {
+            let f_ul = match (&self.unload, self.iform) {
+                (Some(u), 1) => function::scaled(u, p, self.ascalex, self.fscale_ul),
+                _ => 0.0,
+            };
+            f_ul.max(along)
+        };
+        *memory = [p, f];
+        (f, f == along)
     }
 }
 
@@ -108,6 +148,11 @@ impl InterfaceType for Type6 {
             fscale_ld: t.fscale_ld,
             visc: t.visc,
             body_mass: 0.0,
+            iform: t.iform,
+            stiff: t.stiff,
+            fct_id_ul: t.fct_id_ul,
+            unload: None,
+            fscale_ul: t.fscale_ul,
         };
         Some((own, common))
     }
@@ -120,8 +165,8 @@ impl InterfaceType for Type6 {
             Some("a static friction force (Sfric)")
         } else if t.fct_id_ff != 0 || t.fct_id_fv != 0 {
             Some("friction factor functions (fct_IDff, fct_IDfv)")
-        } else if t.iform != 0 {
-            Some("elasto-plastic loading and unloading (Iform = 1, 2)")
+        } else if t.icor != 0 {
+            Some("the force correction of an initial intersection (Icor = 1)")
         } else if t.inacti != 0 {
             Some("Inacti = 5 (variable gap for initial penetrations)")
         } else if t.fct_id_dv != 0 || t.fct_id_df != 0 {
@@ -137,6 +182,9 @@ impl InterfaceType for Type6 {
     /// one rigid body (§8.7.1), and not the same one.
     fn bind(&mut self, m: &model::Model, i: &model::Interface, kw: &str) -> Result<(), String> {
         self.load = Some(super::bound_curve(m, self.fct_id_ld, kw, "fct_IDld")?);
+        if self.iform == 1 && self.fct_id_ul != 0 {
+            self.unload = Some(super::bound_curve(m, self.fct_id_ul, kw, "fct_IDul")?);
+        }
         let mut bodies = [0usize; 2];
         for (b, (segs, field)) in bodies.iter_mut().zip([
             (&i.secondary_segments, "surf_ID1"),
@@ -216,16 +264,23 @@ impl InterfaceType for Type6 {
     }
 
     /// F(p_max) and Δt = 0.1·√(M/K) (EQ. 8.7.5.1–2).
-    fn total_force(&self, p_max: f64) -> (f64, f64) {
-        let (f, tangent) = self.curve(p_max.max(0.0));
+    fn total_force(&self, p_max: f64, memory: &mut [f64; 2]) -> (f64, f64) {
+        let (f_ld, tangent) = self.curve(p_max.max(0.0));
+        let (f, on_stiff) = if self.iform == 0 {
+            (if p_max > 0.0 { f_ld.max(0.0) } else { 0.0 }, false)
+        } else {
+            self.hysteresis(p_max, f_ld.max(0.0), memory)
+        };
         let secant = if p_max > 0.0 { f / p_max } else { 0.0 };
-        let k = tangent.max(secant);
+        // On a Stiff line the force moves with Stiff: the step must see it
+        // (the reference takes the curve's tangent and the secant only).
+        let k = tangent.max(secant).max(if on_stiff { self.stiff } else { 0.0 });
         let dt = if k > 0.0 && self.body_mass > 0.0 {
             0.1 * (self.body_mass / k).sqrt()
         } else {
             f64::INFINITY
         };
-        (if p_max > 0.0 { f.max(0.0) } else { 0.0 }, dt)
+        (f, dt)
     }
 
     #[inline]
@@ -312,6 +367,11 @@ mod tests {
             fscale_ld: 2.0,
             visc: 0.0,
             body_mass: 4.0,
+            iform: 0,
+            stiff: 0.0,
+            fct_id_ul: 0,
+            unload: None,
+            fscale_ul: 1.0,
         }
     }
 
@@ -320,13 +380,47 @@ mod tests {
     #[test]
     fn the_total_force_and_step_follow_the_scaled_curve() {
         let t = linear(100.0);
-        let (f, dt) = t.total_force(0.01);
+        let mut memory = [0.0; 2];
+        let (f, dt) = t.total_force(0.01, &mut memory);
         assert!((f - 2.0 * 100.0 * 0.02).abs() < 1e-12);
         assert!((dt - 0.1 * (4.0f64 / 400.0).sqrt()).abs() < 1e-15);
-        let (f0, dt0) = t.total_force(0.0);
+        let (f0, dt0) = t.total_force(0.0, &mut memory);
         assert_eq!(f0, 0.0);
         assert_eq!(dt0, dt);
         assert_eq!(t.resultant_sign(0), 1.0);
         assert_eq!(t.resultant_sign(1), -1.0);
+    }
+
+    /// Iform 2: loading on the curve, unloading along Stiff to zero,
+    /// reloading along Stiff back to the curve; Iform 1 stops unloading on
+    /// the unloading curve. The memory is dropped at separation.
+    #[test]
+    fn iform_unloads_and_reloads_along_stiff_between_the_curves() {
+        // f_ld = 2·100·(p/0.5) = 400 p; Stiff 4000.
+        let mut t = linear(100.0);
+        t.iform = 2;
+        t.stiff = 4000.0;
+        let mut m = [0.0; 2];
+        let f = |t: &Type6, p: f64, m: &mut [f64; 2]| t.total_force(p, m).0;
+        // Loading from 0: along Stiff until it meets the curve (one step).
+        assert!((f(&t, 0.01, &mut m) - 4.0).abs() < 1e-12);
+        assert!((f(&t, 0.02, &mut m) - 8.0).abs() < 1e-12);
+        // Unloading by 0.001: 8 − 4000·0.001 = 4; the step sees Stiff.
+        let (fu, dt) = t.total_force(0.019, &mut m);
+        assert!((fu - 4.0).abs() < 1e-12);
+        assert!((dt - 0.1 * (4.0f64 / 4000.0).sqrt()).abs() < 1e-15);
+        // Further: zero (Iform 2), not negative.
+        assert_eq!(f(&t, 0.017, &mut m), 0.0);
+        // Reloading from (0.017, 0) along Stiff: 4000·0.001 = 4, below the curve.
+        assert!((f(&t, 0.018, &mut m) - 4.0).abs() < 1e-12);
+        // Separation drops the memory.
+        assert_eq!(f(&t, 0.0, &mut m), 0.0);
+        assert_eq!(m, [0.0; 2]);
+        // Iform 1 with f_ul = 0.25·f_ld: unloading stops on it.
+        t.iform = 1;
+        t.unload = t.load.clone();
+        t.fscale_ul = 0.5;
+        f(&t, 0.02, &mut m);
+        assert!((f(&t, 0.015, &mut m) - 0.25 * 400.0 * 0.015).abs() < 1e-12);
     }
 }
