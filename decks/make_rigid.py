@@ -196,7 +196,40 @@ def type6_drop_ul():
     return type6_drop("type6_drop_ul", iform=1)
 
 
-DECKS = {"type6_rest": type6_rest, "type14_sphere": type14_sphere, "type6_drop": type6_drop,
+# type14_damped
+K14D, VISC14D, V0_14D, M14D = 1.0, 0.1, 1.0, 1.0   # kN/mm, fraction, mm/ms, kg
+
+
+def type14_damped(name="type14_damped"):
+    """A lone node of 1 kg (/ADMAS) hits a fixed sphere (R = 10 mm, no
+    /RBODY) at 1 mm/ms: TYPE14 with a linear node spring Stif = 1 kN/mm and
+    Visc = 0.1, a spring-dashpot of damping ratio 0.1 that lets the node go
+    when its penetration is back to 0: it leaves at
+    v0·exp(-0.1·pi/sqrt(1 - 0.01)) (the normal force is not clamped)."""
+    S = header(name, "TYPE14 Visc: a node bounces off a fixed sphere", [
+        "A 1 kg node hits a fixed rigid sphere at 1 mm/ms through /INTER/TYPE14 with a",
+        "linear spring and Visc = 0.1 (decks/make_rigid.py)."])
+    # A soft fixed shell far below sets the run's step (about 0.05 ms; the
+    # node's own, sqrt(2m/(k + 2c/dt)), would be about 1 ms).
+    pad, pad_sh = plate(101, 1, (-5.0, -5.0), 10.0, 10.0, 1, 1, -100.0)
+    S += law1(1, "soft", e=0.21) + prop_shell(1, "t = 1 mm", 1.0) + part(1, "pad", 1, 1)
+    S += nodes_block([(1, 0.0, 0.0, 10.5)] + pad) + shells_block(1, pad_sh)
+    S += group(1, "the node", [1]) + group(2, "pad", [n[0] for n in pad])
+    S += bcs(1, "pad fixed", "111 111", 2)
+    S += ["/ADMAS/0/1", "1 kg", "#               MASS            grnd_ID", r20(M14D) + i10(1)]
+    S += ellipsoid(10, "sphere", (0.0, 0.0, 0.0), (10.0,) * 3)
+    S += inivel(1, "towards the sphere", (0.0, 0.0, -V0_14D), 1)
+    S += [f"/INTER/TYPE14/1", "node on sphere",
+          "#  grnd_IDs  surf_IDm  fct_IDld   fct_IDf  fct_IDd1  fct_IDd2",
+          i10(1) + i10(10) + i10(0) * 4,
+          "#               Stif                Fric                Visc                 Gap",
+          r20(K14D) + r20(0) + r20(VISC14D) + r20(0)]
+    S += ["/END"]
+    N = engine(name, 5.0, -10, comments=["5 ms: contact from 0.5 ms for half a damped period, 3.16 ms."])
+    return name, S, N
+
+
+DECKS = {"type6_rest": type6_rest, "type14_damped": type14_damped, "type14_sphere": type14_sphere, "type6_drop": type6_drop,
          "type6_drop_ul": type6_drop_ul}
 
 if __name__ == "__main__":

@@ -14,6 +14,14 @@
 //!   interface's resultant is Stif·f(p_max), shared by the nodes in
 //!   proportion to their penetration vectors (the runtime's total-force
 //!   phases, as TYPE6); without it each node is a linear spring Stif·p.
+//! - Viscosity (§8.9: "a local normal viscosity is computed at each
+//!   node"; the reference engine's form, docs/notes/
+//!   type6_type14_type15_research.md §2.2): each penetrated node takes a
+//!   normal damper c = Visc·2·√(k·m), k its stiffness (Stif, or the total
+//!   force's share per unit penetration), m its mass, against the normal
+//!   speed relative to the surface at its contact point; the normal force
+//!   is not clamped at 0, so the damper may pull while the node leaves.
+//!   Its stiffness for the nodal step is k + 2c/Δt, as the reference's.
 //! - The reaction, −F at the contact point, goes to the rigid body (force
 //!   and moment about its centre). A fixed ellipsoid (no /RBODY) takes none.
 //! - Time step: each node's stiffness enters its nodal step (EQ. 8.8.5.2);
@@ -49,6 +57,10 @@ pub struct Type14 {
     pub body: Option<usize>,
     pub body_mass: f64,
     pub offset: V3,
+    /// Visc: the critical damping fraction of each penetrated node's normal
+    /// damper, c = Visc·2·√(k·m) (k the node's stiffness, m its mass).
+    #[serde(default)]
+    pub visc: f64,
 }
 
 /// Where the ellipsoid is: its centre and the rotation from its axes to
@@ -147,6 +159,7 @@ impl InterfaceType for Type14 {
             fct_id_ld: t.fct_id_ld,
             stif: t.stif,
             gap: t.gap,
+            visc: t.visc,
             ..Default::default()
         };
         Some((own, common))
@@ -158,8 +171,8 @@ impl InterfaceType for Type14 {
         };
         if t.fric != 0.0 || t.fct_id_f != 0 {
             Some("friction (Fric, fct_IDf)")
-        } else if t.visc != 0.0 || t.fct_id_d1 != 0 || t.fct_id_d2 != 0 {
-            Some("viscosity (Visc, fct_IDd1, fct_IDd2)")
+        } else if t.fct_id_d1 != 0 || t.fct_id_d2 != 0 {
+            Some("viscosity functions (fct_IDd1, fct_IDd2)")
         } else {
             None
         }
@@ -296,12 +309,21 @@ impl InterfaceType for Type14 {
                 })
             }
         };
-        let f_n = k * pen;
+        // The normal damper against the surface's velocity at the node's
+        // contact point (the body's motion there; a fixed ellipsoid's is 0).
+        let c_d = self.visc * 2.0 * (k * c.ms).sqrt();
+        let v_surface = match self.body.and_then(|b| c.bodies.get(b)) {
+            Some(b) => geo::add(b.v, geo::cross(b.omega, geo::sub(point, b.center))),
+            None => [0.0; 3],
+        };
+        let v_n = geo::dot(geo::sub(c.vs, v_surface), n);
+        let f_n = k * pen - c_d * v_n;
+        let kt = if c.dt > 0.0 { k + 2.0 * c_d / c.dt } else { k };
         PairOutcome::Force(PairForce {
             fs: geo::scale(n, f_n),
             sec_shape: NODE_SHAPE,
             shape: [0.0; 4],
-            kt: k,
+            kt,
             dt_kin: f64::INFINITY,
             f_n,
             f_t: [0.0; 3],
