@@ -229,7 +229,41 @@ def type14_damped(name="type14_damped"):
     return name, S, N
 
 
-DECKS = {"type6_rest": type6_rest, "type14_damped": type14_damped, "type14_sphere": type14_sphere, "type6_drop": type6_drop,
+# type14_slide
+MU14S, W14S, V0_14S = 0.3, 0.3, 1.0     # -, kN, mm/ms
+TEND14S = 5.0                           # ms
+
+
+def type14_slide(name="type14_slide"):
+    """A 1 kg node pressed by W = 0.3 kN on the flat top of a fixed
+    ellipsoid (a = b = 10 m, c = 10 mm), starting at its equilibrium
+    penetration W/k and sliding at 1 mm/ms: TYPE14 with Stif k = 1 kN/mm and
+    Fric 0.3 brakes it at mu W / m = 0.09 mm/ms^2, v(t) = v0 - mu W t / m
+    until it stops at 11.1 ms (the run ends at 5 ms)."""
+    S = header(name, "TYPE14 Fric: a node sliding on an ellipsoid", [
+        "A 1 kg node pressed on a fixed flat ellipsoid slides at 1 mm/ms and is braked by",
+        "/INTER/TYPE14's Coulomb friction (decks/make_rigid.py)."])
+    pad, pad_sh = plate(101, 1, (-5.0, -5.0), 10.0, 10.0, 1, 1, -100.0)
+    S += law1(1, "soft", e=0.21) + prop_shell(1, "t = 1 mm", 1.0) + part(1, "pad", 1, 1)
+    S += nodes_block([(1, 0.0, 0.0, 10.0 - W14S / K14D)] + pad) + shells_block(1, pad_sh)
+    S += group(1, "the node", [1]) + group(2, "pad", [n[0] for n in pad])
+    S += bcs(1, "pad fixed", "111 111", 2)
+    S += ["/ADMAS/0/1", "1 kg", "#               MASS            grnd_ID", r20(M14D) + i10(1)]
+    S += ellipsoid(10, "flat ellipsoid", (0.0, 0.0, 0.0), (1.0e4, 1.0e4, 10.0))
+    S += inivel(1, "sliding", (V0_14S, 0.0, 0.0), 1)
+    S += funct(1, "constant", [(0.0, 1.0), (1000.0, 1.0)])
+    S += cload(1, "pressed down", 1, "Z", 1, -W14S)
+    S += [f"/INTER/TYPE14/1", "node on ellipsoid",
+          "#  grnd_IDs  surf_IDm  fct_IDld   fct_IDf  fct_IDd1  fct_IDd2",
+          i10(1) + i10(10) + i10(0) * 4,
+          "#               Stif                Fric                Visc                 Gap",
+          r20(K14D) + r20(MU14S) + r20(0.1) + r20(0)]
+    S += ["/END"]
+    N = engine(name, TEND14S, -10, comments=[f"{TEND14S:g} ms of braking."])
+    return name, S, N
+
+
+DECKS = {"type6_rest": type6_rest, "type14_damped": type14_damped, "type14_slide": type14_slide, "type14_sphere": type14_sphere, "type6_drop": type6_drop,
          "type6_drop_ul": type6_drop_ul}
 
 if __name__ == "__main__":

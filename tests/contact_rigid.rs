@@ -32,7 +32,9 @@
 //!   body gathers, on several ranks) and 2 threads; restart 2 → 1.
 //!
 //! TYPE14's normal damper (type14_damped): a node bounces off a fixed sphere
-//! with the restitution of a spring-dashpot of damping ratio Visc.
+//! with the restitution of a spring-dashpot of damping ratio Visc; its
+//! friction (type14_slide): a node sliding on the ellipsoid is braked by
+//! μ·W.
 
 mod common;
 #[path = "contact_common/mod.rs"]
@@ -301,13 +303,14 @@ fn a_type14_run_restarted_on_another_rank_count_ends_identically() {
 
 #[test]
 fn type14_options_it_does_not_compute_stop_the_run_by_name() {
-    let (code, err) = run_variant("type14_sphere", "type14_fric", |i, lines| {
-        (i >= 1 && lines[i - 1].starts_with("#               Stif"))
-            .then(|| format!("{:>20}{:>20}{:>20}{:>20}", "1", "0.3", "0", "0"))
+    // fct_IDf (columns 31-40 of card 1) names the load curve /FUNCT/2.
+    let (code, err) = run_variant("type14_sphere", "type14_fct_f", |i, lines| {
+        (i >= 1 && lines[i - 1].starts_with("#  grnd_IDs  surf_IDm"))
+            .then(|| common::set_cols(lines[i], 30, 40, 2))
     });
     assert_eq!(code, 2, "{err}");
     assert!(
-        err.contains("/INTER/TYPE14/1") && err.contains("friction"),
+        err.contains("/INTER/TYPE14/1") && err.contains("fct_IDf"),
         "{err}"
     );
 }
@@ -332,6 +335,46 @@ fn a_type14_damper_takes_the_energy_of_a_damped_half_period() {
     assert!((v - e).abs() < 0.01 * e, "rebound {v}, expected {e}");
     let closes = energy_closes(&r, "type14_damped");
     assert!(closes.abs() < 0.1, "the energy closes to {closes}%");
+}
+
+/// TYPE14 Fric (type14_slide): a 1 kg node pressed by W = 0.3 kN on a
+/// fixed flat ellipsoid slides at 1 mm/ms. While it slides the friction
+/// force is μ·W = 0.09 kN against its motion at every printed cycle
+/// (within 0.1%), the normal force W, and it brakes as v = v0 − μ·W·t/m,
+/// within 0.01 mm/ms at 5 ms (the impact's cycle takes no friction and
+/// the tangential spring needs a step to reach μ·W: about 0.1 ms late).
+#[test]
+fn a_type14_node_sliding_on_the_ellipsoid_is_braked_by_coulomb_friction() {
+    let r = run(
+        &deck("type14_slide"),
+        &scratch("type14_slide"),
+        &RunArgs::default(),
+    );
+    assert!(r.listing.normal_termination());
+    let (mu, w) = (0.3, 0.3);
+    let lines = r.listing.of(1);
+    assert!(lines.len() >= 5);
+    for l in lines.iter().filter(|l| l.t > 0.2) {
+        assert!(
+            (l.tangent[0] + mu * w).abs() < 1e-3 * mu * w,
+            "t = {}: friction {:?}",
+            l.t,
+            l.tangent
+        );
+        assert!(
+            (l.normal[2] - w).abs() < 1e-3 * w,
+            "t = {}: {:?}",
+            l.t,
+            l.normal
+        );
+    }
+    let t_end = r.listing.cycles.last().unwrap().t;
+    let v = r.final_state()[&1][3];
+    let expect = 1.0 - mu * w * t_end;
+    assert!(
+        (v - expect).abs() < 0.01,
+        "v = {v} at {t_end}, expected {expect}"
+    );
 }
 
 #[test]

@@ -72,11 +72,15 @@ fn paraview_opens_the_xdmf_and_renders_the_last_state() {
     let xdmf = dir.join("BOX1BL.xdmf");
     let png = dir.join("paraview_last_state.png");
     let script = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/py/paraview_render.py");
-    // Xvfb now and then refuses the first connection ("bad X server
-    // connection", seen once in a CI rehearsal under load): that is the X
-    // server starting, not ParaView reading the file, so it is tried again.
+    // Xvfb now and then refuses the connection ("bad X server connection",
+    // seen in CI rehearsals with both cores loaded, three times in a row
+    // once): that is the X server starting, not ParaView reading the file,
+    // so it is tried again, waiting longer each time.
     let mut out = None;
-    for _ in 0..3 {
+    for attempt in 0..6u64 {
+        if attempt > 0 {
+            std::thread::sleep(std::time::Duration::from_secs(2 * attempt));
+        }
         let o = std::process::Command::new("xvfb-run")
             .args(["-a", "pvpython"])
             .arg(&script)

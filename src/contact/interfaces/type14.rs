@@ -22,6 +22,10 @@
 //!   speed relative to the surface at its contact point; the normal force
 //!   is not clamped at 0, so the damper may pull while the node leaves.
 //!   Its stiffness for the nodal step is k + 2c/Δt, as the reference's.
+//! - Friction (Fric): each node already in contact at the last cycle takes
+//!   an elastic tangential spring of its normal stiffness on its slip
+//!   relative to the surface, capped at Fric·max(F_n, 0) (incremental,
+//!   `Type14::friction`).
 //! - The reaction, −F at the contact point, goes to the rigid body (force
 //!   and moment about its centre). A fixed ellipsoid (no /RBODY) takes none.
 //! - Time step: each node's stiffness enters its nodal step (EQ. 8.8.5.2);
@@ -33,7 +37,7 @@ use super::{
     CandidateKind, CandidateSearch, CardCommon, InterfaceType, NodeState, PairContext, PairForce,
     PairOutcome, PairState, SurfaceSizes, NODE_SHAPE,
 };
-use crate::contact::friction::FrictionLaw;
+use crate::contact::friction::{self, FrictionLaw};
 use crate::contact::gap::{GapRule, InitialPenetration};
 use crate::contact::geometry::{self as geo, V3};
 use crate::kinematics::function;
@@ -61,6 +65,9 @@ pub struct Type14 {
     /// damper, c = Visc·2·√(k·m) (k the node's stiffness, m its mass).
     #[serde(default)]
     pub visc: f64,
+    /// Fric: the Coulomb coefficient (fct_IDf refused).
+    #[serde(default)]
+    pub fric: f64,
 }
 
 /// Where the ellipsoid is: its centre and the rotation from its axes to
@@ -118,6 +125,29 @@ impl Type14 {
         })
     }
 
+    /// Coulomb friction of one penetrated node (§8.9: "a local friction
+    /// coefficient is computed at each impacted node from the elastic
+    /// force there"; the reference engine's form, docs/notes/
+    /// type6_type14_type15_research.md §2.2): an elastic tangential spring
+    /// of the node's normal stiffness `k` on its slip relative to the
+    /// surface, capped at Fric·max(F_n, 0); only for a node already in
+    /// contact at the last cycle (the impact's cycle takes none). `st.ft`
+    /// keeps the force, `st.side` marks the contact.
+    fn friction(&self, k: f64, f_n: f64, v_rel: V3, n: V3, dt: f64, st: &mut PairState) -> V3 {
+        let impacted_before = st.side != 0;
+        st.side = 1;
+        if self.fric <= 0.0 || !impacted_before {
+            return [0.0; 3];
+        }
+        let law = FrictionLaw {
+            fric: self.fric,
+            iform: 2,
+            ..FrictionLaw::none()
+        };
+        let vt = friction::tangential(v_rel, n);
+        friction::tangential_force(&law, self.fric, f_n.max(0.0), vt, n, k, 0.0, dt, &mut st.ft)
+    }
+
     /// Stif·f(p) and its slope.
     fn curve(&self, p: f64) -> (f64, f64) {
         match &self.load {
@@ -160,6 +190,7 @@ impl InterfaceType for Type14 {
             stif: t.stif,
             gap: t.gap,
             visc: t.visc,
+            fric: t.fric,
             ..Default::default()
         };
         Some((own, common))
@@ -169,8 +200,8 @@ impl InterfaceType for Type14 {
         let InterfaceKind::Type14(t) = kind else {
             return None;
         };
-        if t.fric != 0.0 || t.fct_id_f != 0 {
-            Some("friction (Fric, fct_IDf)")
+        if t.fct_id_f != 0 {
+            Some("a friction function (fct_IDf)")
         } else if t.fct_id_d1 != 0 || t.fct_id_d2 != 0 {
             Some("viscosity functions (fct_IDd1, fct_IDd2)")
         } else {
@@ -271,7 +302,7 @@ impl InterfaceType for Type14 {
     }
 
     #[inline]
-    fn pair(&self, c: &PairContext, _ns: &mut NodeState, _st: &mut PairState) -> PairOutcome {
+    fn pair(&self, c: &PairContext, _ns: &mut NodeState, st: &mut PairState) -> PairOutcome {
         let (Some(pose), Some(e)) = (self.pose(c.bodies), self.ellipsoid.as_ref()) else {
             return PairOutcome::Free;
         };
@@ -287,6 +318,9 @@ impl InterfaceType for Type14 {
         };
         let pen = self.gap - d;
         if pen <= 0.0 {
+            if c.scale.is_some() || self.load.is_none() {
+                *st = PairState::default();
+            }
             return PairOutcome::Free;
         }
         let n = mat_vec(&pose.rot, n_local);
@@ -316,17 +350,19 @@ impl InterfaceType for Type14 {
             Some(b) => geo::add(b.v, geo::cross(b.omega, geo::sub(point, b.center))),
             None => [0.0; 3],
         };
-        let v_n = geo::dot(geo::sub(c.vs, v_surface), n);
+        let v_rel = geo::sub(c.vs, v_surface);
+        let v_n = geo::dot(v_rel, n);
         let f_n = k * pen - c_d * v_n;
         let kt = if c.dt > 0.0 { k + 2.0 * c_d / c.dt } else { k };
+        let f_t = self.friction(k, f_n, v_rel, n, c.dt, st);
         PairOutcome::Force(PairForce {
-            fs: geo::scale(n, f_n),
+            fs: geo::add(geo::scale(n, f_n), f_t),
             sec_shape: NODE_SHAPE,
             shape: [0.0; 4],
             kt,
             dt_kin: f64::INFINITY,
             f_n,
-            f_t: [0.0; 3],
+            f_t,
             pen,
             dir: n,
             point,
