@@ -260,12 +260,7 @@ fn node_pairs<T: InterfaceType>(
             // One pair per node, its memory the node's (kept when the node
             // slides onto another segment, dropped when it leaves contact).
             let wp = mem.walk_pair;
-            let live: Vec<u32> = segs
-                .iter()
-                .copied()
-                .filter(|m| ns.off_segs.binary_search(m).is_err())
-                .collect();
-            let Some((m, side)) = nearest(ty, v, k, &live, (wp.0, wp.1.side)) else {
+            let Some((m, side)) = nearest(ty, v, k, segs, &ns.off_segs, (wp.0, wp.1.side)) else {
                 *wp = (NONE, PairState::default());
                 return out;
             };
@@ -390,7 +385,8 @@ fn context<'a>(v: &'a PassView, k: usize, m: u32, pv: &'a PairValues) -> PairCon
 }
 
 /// Types with one segment per node: the nearest candidate in contact (the
-/// first of equals, in candidate order) and the side the node is on.
+/// first of equals, in candidate order; `off`, sorted, left out) and the
+/// side the node is on.
 /// The node's current segment keeps its side; another takes the side whose
 /// normal points as the current one's pushes (`None` side 0: a new impact).
 fn nearest<T: InterfaceType>(
@@ -398,6 +394,7 @@ fn nearest<T: InterfaceType>(
     v: &PassView,
     k: usize,
     segs: &[u32],
+    off: &[u32],
     current: (u32, i8),
 ) -> Option<(u32, i8)> {
     let normal = |m: u32, pv: &PairValues| geo::segment_normal(&pv.xm, v.p.is_tri(m as usize));
@@ -407,6 +404,9 @@ fn nearest<T: InterfaceType>(
         .map(|pv| geo::scale(normal(current.0, &pv), f64::from(current.1)));
     let mut best: Option<(f64, u32, i8)> = None;
     for &m in segs {
+        if off.binary_search(&m).is_ok() {
+            continue;
+        }
         let Some(pv) = pair_values(v, k, m) else {
             continue;
         };
