@@ -65,9 +65,6 @@ pub struct Type14 {
     /// damper, c = Visc·2·√(k·m) (k the node's stiffness, m its mass).
     #[serde(default)]
     pub visc: f64,
-    /// Fric: the Coulomb coefficient (fct_IDf refused).
-    #[serde(default)]
-    pub fric: f64,
 }
 
 /// Where the ellipsoid is: its centre and the rotation from its axes to
@@ -131,21 +128,17 @@ impl Type14 {
     /// type6_type14_type15_research.md §2.2): an elastic tangential spring
     /// of the node's normal stiffness `k` on its slip relative to the
     /// surface, capped at Fric·max(F_n, 0); only for a node already in
-    /// contact at the last cycle (the impact's cycle takes none). `st.ft`
-    /// keeps the force, `st.side` marks the contact.
-    fn friction(&self, k: f64, f_n: f64, v_rel: V3, n: V3, dt: f64, st: &mut PairState) -> V3 {
+    /// contact at the last cycle (the impact's cycle takes none). `law` is
+    /// the interface's (Fric, incremental); `st.ft` keeps the force,
+    /// `st.side` marks the contact.
+    fn friction(law: &FrictionLaw, k: f64, f_n: f64, v_rel: V3, n: V3, dt: f64, st: &mut PairState) -> V3 {
         let impacted_before = st.side != 0;
         st.side = 1;
-        if self.fric <= 0.0 || !impacted_before {
+        if !law.active() || !impacted_before {
             return [0.0; 3];
         }
-        let law = FrictionLaw {
-            fric: self.fric,
-            iform: 2,
-            ..FrictionLaw::none()
-        };
         let vt = friction::tangential(v_rel, n);
-        friction::tangential_force(&law, self.fric, f_n.max(0.0), vt, n, k, 0.0, dt, &mut st.ft)
+        friction::tangential_force(law, law.fric, f_n.max(0.0), vt, n, k, 0.0, dt, &mut st.ft)
     }
 
     /// Stif·f(p) and its slope.
@@ -176,7 +169,11 @@ impl InterfaceType for Type14 {
         };
         let common = CardCommon {
             stfac: 1.0,
-            friction: FrictionLaw::none(),
+            friction: FrictionLaw {
+                fric: t.fric,
+                iform: 2,
+                ..FrictionLaw::none()
+            },
             gap_card: t.gap,
             tstart: 0.0,
             tstop: model::contact::EP30,
@@ -190,7 +187,6 @@ impl InterfaceType for Type14 {
             stif: t.stif,
             gap: t.gap,
             visc: t.visc,
-            fric: t.fric,
             ..Default::default()
         };
         Some((own, common))
@@ -354,7 +350,7 @@ impl InterfaceType for Type14 {
         let v_n = geo::dot(v_rel, n);
         let f_n = k * pen - c_d * v_n;
         let kt = if c.dt > 0.0 { k + 2.0 * c_d / c.dt } else { k };
-        let f_t = self.friction(k, f_n, v_rel, n, c.dt, st);
+        let f_t = Self::friction(&c.it.friction, k, f_n, v_rel, n, c.dt, st);
         PairOutcome::Force(PairForce {
             fs: geo::add(geo::scale(n, f_n), f_t),
             sec_shape: NODE_SHAPE,
