@@ -6,7 +6,8 @@
 //! elsewhere (`tests/architecture.rs` checks it).
 
 use crate::deck::{self, Deck, EngineFile, ReadOptions};
-use crate::model::{Id, InputError, Model};
+use crate::keyword;
+use crate::model::{Id, InputError, Loc, Model};
 use std::path::{Path, PathBuf};
 
 /// How to read an input.
@@ -23,6 +24,9 @@ pub struct InputOptions {
 enum Format {
     /// Radioss block format: starter `NAME_0000.rad` (+ engine `NAME_0001.rad`).
     Radioss(Box<Deck>),
+    /// LS-DYNA keyword deck (`*KEYWORD`): translated into the Radioss
+    /// reader's card records (see `keyword`), run controls included.
+    Keyword(Box<Deck>),
 }
 
 /// An input as read from its files: builds the model, and builds it again
@@ -32,9 +36,13 @@ pub struct Input {
 }
 
 impl Input {
-    /// Reads the input at `path` (Radioss only today: every path is read as a
-    /// Radioss starter deck).
+    /// Reads the input at `path`: a keyword deck when its name ends in
+    /// `.k`, `.key`, `.dyn` or `.kw` or its first line is `*KEYWORD`, else a
+    /// Radioss starter deck.
     pub fn read(path: &Path, opts: &InputOptions) -> Result<Input, InputError> {
+        if is_keyword_path(path) {
+            return read_keyword(path, opts);
+        }
         let engine = match &opts.controls {
             Some(p) => EngineFile::Given(p.clone()),
             None => EngineFile::Auto,
@@ -54,7 +62,7 @@ impl Input {
     /// Validates the input and builds the model.
     pub fn model(&self) -> Result<Model, InputError> {
         match &self.format {
-            Format::Radioss(d) => deck::build_model(d),
+            Format::Radioss(d) | Format::Keyword(d) => deck::build_model(d),
         }
     }
 
@@ -66,7 +74,7 @@ impl Input {
         x: &[[f64; 3]],
     ) -> Result<Model, InputError> {
         match &self.format {
-            Format::Radioss(d) => {
+            Format::Radioss(d) | Format::Keyword(d) => {
                 let mut d2 = Deck::clone(d);
                 for nc in d2.nodes.iter_mut() {
                     if let Ok(i) = ids.binary_search(&nc.id) {
@@ -79,6 +87,46 @@ impl Input {
     }
 }
 
+/// Whether `path` names a keyword deck (by its extension, else by its
+/// first line).
+pub fn is_keyword_path(path: &Path) -> bool {
+    let ext = path
+        .extension()
+        .map(|e| e.to_string_lossy().to_ascii_lowercase())
+        .unwrap_or_default();
+    matches!(ext.as_str(), "k" | "key" | "dyn" | "kw") || keyword::is_keyword_deck(path)
+}
+
+/// A keyword deck: it carries its run controls (no separate controls
+/// file); `strict` makes its first unsupported keyword an error.
+fn read_keyword(path: &Path, opts: &InputOptions) -> Result<Input, InputError> {
+    if let Some(c) = &opts.controls {
+        return Err(InputError::new(
+            Loc {
+                file: c.clone(),
+                line: 0,
+            },
+            "",
+            "",
+            "a keyword deck carries its run controls (*CONTROL_TERMINATION ...): expected no separate controls file",
+        ));
+    }
+    let d = keyword::read(path)?;
+    if opts.strict {
+        if let Some(u) = d.unsupported.first() {
+            return Err(InputError::new(
+                u.loc.clone(),
+                &u.keyword,
+                "",
+                u.message.clone(),
+            ));
+        }
+    }
+    Ok(Input {
+        format: Format::Keyword(Box::new(d)),
+    })
+}
+
 /// Reads the input at `path` and builds the model.
 pub fn load(path: &Path, opts: &InputOptions) -> Result<Model, InputError> {
     Input::read(path, opts)?.model()
@@ -88,6 +136,9 @@ pub fn load(path: &Path, opts: &InputOptions) -> Result<Model, InputError> {
 /// [`InputOptions::controls`] is not given (Radioss: `dir/NAME_0001.rad` for
 /// `dir/NAME_0000.rad`).
 pub fn controls_beside(path: &Path) -> Option<PathBuf> {
+    if is_keyword_path(path) {
+        return None;
+    }
     deck::engine_beside(path)
 }
 

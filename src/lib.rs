@@ -14,6 +14,7 @@ pub mod element;
 pub mod error;
 pub mod global;
 pub mod input;
+pub mod keyword;
 pub mod kinematics;
 pub mod material;
 pub mod model;

@@ -11,7 +11,7 @@ use std::path::{Path, PathBuf};
 
 /// Paths under `src/` (relative, `/`-separated) that may name a reader:
 /// folders end with `/`.
-const INPUT_LAYER: &[&str] = &["deck/", "input.rs"];
+const INPUT_LAYER: &[&str] = &["deck/", "keyword/", "input.rs"];
 
 /// Every `.rs` file under `dir`, sorted.
 fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {

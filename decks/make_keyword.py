@@ -1,0 +1,119 @@
+#!/usr/bin/env python3
+"""Writes the keyword-reader twin decks: one model as an LS-DYNA keyword deck
+(NAME.k) and as a Radioss block deck (NAME_0000.rad + NAME_0001.rad), so a
+test can check that both readers build the same model (the same run, bit for
+bit). Units: kg, mm, ms (stress in GPa).
+
+The model: a steel plate of NX x NY shells (5 mm, 1 mm thick, 3 points
+through the thickness) clamped along x = 0 and flapping up at 1 m/s, beside a
+free steel block of 2 x 2 x 4 bricks flying at 2 m/s along -x. Elastic
+(*MAT_ELASTIC / /MAT/LAW1). The keyword deck reads its end time through a
+*PARAMETER, its block through an *INCLUDE, and fixes one node by *NODE's TC/RC
+fields.
+
+    python3 decks/make_keyword.py OUT_DIR NAME [TEND]
+"""
+import os
+import sys
+
+out, name = sys.argv[1], sys.argv[2]
+tend = float(sys.argv[3]) if len(sys.argv) > 3 else 0.3
+nx, ny, h, t = 8, 3, 5.0, 1.0
+rho, e, nu = 7.85e-6, 210.0, 0.3
+
+# Plate nodes 1.., block nodes 1001..; shells 1.., bricks 101..
+plate = {}
+for j in range(ny + 1):
+    for i in range(nx + 1):
+        plate[(i, j)] = (len(plate) + 1, i * h, j * h, 0.0)
+shells = []
+for j in range(ny):
+    for i in range(nx):
+        n = lambda a, b: plate[(i + a, j + b)][0]
+        shells.append((len(shells) + 1, n(0, 0), n(1, 0), n(1, 1), n(0, 1)))
+block = {}
+for k in range(3):
+    for j in range(3):
+        for i in range(5):
+            block[(i, j, k)] = (1001 + len(block), 60.0 + i * h, j * h, 10.0 + k * h)
+bricks = []
+for k in range(2):
+    for j in range(2):
+        for i in range(4):
+            b = lambda a, c, d: block[(i + a, j + c, k + d)][0]
+            bricks.append((101 + len(bricks), b(0, 0, 0), b(1, 0, 0), b(1, 1, 0), b(0, 1, 0),
+                           b(0, 0, 1), b(1, 0, 1), b(1, 1, 1), b(0, 1, 1)))
+clamped = [plate[(0, j)][0] for j in range(ny + 1)]
+# The first clamped node is fixed by *NODE TC = 7, RC = 7 instead of the set.
+tc_node, clamped_set = clamped[0], clamped[1:]
+
+# ---- keyword deck ----
+k8 = lambda v: f"{v:>8d}"
+k10 = lambda v: f"{v:>10d}"
+f10 = lambda v: f"{v:>10.6g}"
+f16 = lambda v: f"{v:>16.9g}"
+K = ["*KEYWORD", "$ " + name + ": written by decks/make_keyword.py (twin of " + name + "_0000.rad)",
+     "*TITLE", "Keyword twin: clamped flapping plate and a free block",
+     "*PARAMETER", "$ end time", "R TEND    " + f10(tend),
+     "*CONTROL_TERMINATION", "$  ENDTIM", "&TEND",
+     "*CONTROL_TIMESTEP", "$  DTINIT    TSSFAC", f10(0) + f10(0.9),
+     "*DATABASE_BINARY_D3PLOT", f10(tend / 3),
+     "*DATABASE_GLSTAT", f10(tend / 30),
+     "*PART", "plate", k10(1) + k10(1) + k10(1),
+     "*SECTION_SHELL_TITLE", "plate section",
+     "$   SECID    ELFORM      SHRF       NIP", k10(1) + k10(2) + f10(1.0) + k10(3), f10(t) * 4,
+     "*MAT_ELASTIC", "$     MID        RO         E        PR", k10(1) + f10(rho) + f10(e) + f10(nu),
+     "*PART", "block", k10(2) + k10(2) + k10(2),
+     "*SECTION_SOLID", k10(2) + k10(1),
+     "*MAT_ELASTIC_TITLE", "block steel", "1,7.85e-6,210.,0.3".replace("1,", "2,", 1),
+     "*NODE"]
+for (nid, x, y, z) in plate.values():
+    tc = 7 if nid == tc_node else 0
+    K.append(k8(nid) + f16(x) + f16(y) + f16(z) + k8(tc) + k8(tc))
+K += ["*ELEMENT_SHELL"] + ["".join(k8(v) for v in (s[0], 1) + s[1:]) for s in shells]
+K += ["*SET_NODE_LIST_TITLE", "clamped edge", k10(1)]
+K += ["".join(k10(v) for v in clamped_set[i:i + 8]) for i in range(0, len(clamped_set), 8)]
+K += ["*BOUNDARY_SPC_SET", "$    NSID       CID      DOFX      DOFY      DOFZ     DOFRX     DOFRY     DOFRZ",
+      k10(1) + k10(0) + k10(1) * 6]
+K += ["*INITIAL_VELOCITY_GENERATION", "$      ID      STYP     OMEGA        VX        VY        VZ",
+      k10(1) + k10(2) + f10(0) + f10(0) + f10(0) + f10(1.0), f10(0) * 6,
+      "*SET_PART_LIST", k10(7), k10(2),
+      "*INITIAL_VELOCITY_GENERATION", k10(7) + k10(1) + f10(0) + f10(-2.0) + f10(0) + f10(0), f10(0) * 6]
+K += ["*INCLUDE", name + "_block.k", "*END"]
+B = ["*KEYWORD", "$ the block's mesh, included by " + name + ".k", "*NODE +"]
+for (nid, x, y, z) in block.values():
+    B.append(f"{nid:>20d}" + f"{x:>20.12g}" + f"{y:>20.12g}" + f"{z:>20.12g}")
+B += ["*ELEMENT_SOLID"] + ["".join(k8(v) for v in (b[0], 2) + b[1:]) for b in bricks]
+B += ["*END"]
+
+# ---- Radioss twin ----
+i10 = lambda v: f"{v:>10d}"
+r20 = lambda v: f"{v:>20.10g}"
+R = ["#RADIOSS STARTER", f"# {name}: Radioss twin of {name}.k, written by decks/make_keyword.py",
+     "/BEGIN", name, i10(2019) + i10(0), "kg".rjust(20) + "mm".rjust(20) + "ms".rjust(20),
+     "kg".rjust(20) + "mm".rjust(20) + "ms".rjust(20),
+     "/TITLE", "Keyword twin: clamped flapping plate and a free block",
+     "/MAT/LAW1/1", "", r20(rho), r20(e) + r20(nu),
+     "/MAT/LAW1/2", "block steel", r20(rho), r20(e) + r20(nu),
+     "/PROP/SHELL/1", "plate section", i10(1) + i10(0) * 3, r20(0) * 5,
+     i10(3) + i10(1) + r20(t) + r20(1.0),
+     "/PROP/SOLID/2", "", i10(1) + i10(0) * 7, r20(1.5) + r20(0.06) + r20(0.1),
+     "/PART/1", "plate", i10(1) + i10(1), "/PART/2", "block", i10(2) + i10(2),
+     "/NODE"]
+R += [i10(n) + r20(x) + r20(y) + r20(z) for (n, x, y, z) in list(plate.values()) + list(block.values())]
+R += ["/SHELL/1"] + ["".join(i10(v) for v in s) for s in shells]
+R += ["/BRICK/2"] + ["".join(i10(v) for v in b) for b in bricks]
+R += ["/GRNOD/NODE/1", "clamped edge"] + ["".join(i10(v) for v in clamped_set)]
+R += ["/GRNOD/NODE/2", "TC node", i10(tc_node)]
+R += ["/BCS/1", "clamped edge", "   111 111" + i10(0) + i10(1)]
+R += ["/BCS/2", "TC node", "   111 111" + i10(0) + i10(2)]
+R += ["/GRNOD/PART/3", "plate", i10(1), "/GRNOD/PART/4", "block", i10(2)]
+R += ["/INIVEL/TRA/1", "plate", r20(0) + r20(0) + r20(1.0) + i10(3) + i10(0)]
+R += ["/INIVEL/TRA/2", "block", r20(-2.0) + r20(0) + r20(0) + i10(4) + i10(0)]
+R += ["/END"]
+E = ["#RADIOSS ENGINE", f"/RUN/{name}/1", r20(tend), "/DT", "0.9 0.0", "/ANIM/DT", f"0.0 {tend / 3!r}"]
+
+os.makedirs(out, exist_ok=True)
+for fname, lines in [(f"{name}.k", K), (f"{name}_block.k", B), (f"{name}_0000.rad", R), (f"{name}_0001.rad", E)]:
+    with open(os.path.join(out, fname), "w") as f:
+        f.write("\n".join(lines) + "\n")

@@ -1,0 +1,261 @@
+//! The LS-DYNA keyword reader (`*KEYWORD` decks: `.k`, `.key`, `.dyn`).
+//!
+//! Each keyword it computes is translated into the same card records the
+//! Radioss reader gives for the Radioss card that means the same thing
+//! (`*SECTION_SHELL` ELFORM 2 → /PROP/SHELL Ishell 1, `*MAT_ELASTIC` →
+//! /MAT/LAW1, `*SET_NODE_LIST` → /GRNOD/NODE, ...), and the one model
+//! builder (`deck::build_model`) turns them into the model. So a keyword
+//! deck and its Radioss twin build the same model bit for bit, and every
+//! later stage is shared. References are checked here in keyword terms
+//! first (which part names a missing section), so errors name the keyword
+//! deck's file:line, keyword and field.
+//!
+//! The keyword policy is the Radioss reader's: a keyword is computed (a
+//! translator below), safe to skip (an output request: noted, not fatal),
+//! or unsupported: recorded by name so that `run` refuses the deck. An
+//! option of a computed keyword that nothing computes (a non-zero EOSID,
+//! a mass-scaling DT2MS) is refused the same way, by keyword and field.
+
+mod card;
+mod conditions;
+mod controls;
+mod materials;
+mod mesh;
+mod references;
+mod sections;
+pub mod source;
+
+use crate::deck::Deck;
+use crate::model::{Begin, Id, InputError, InputResult, Loc, Units, Warning};
+use card::{Cards, Parameters};
+use source::Block;
+use std::path::Path;
+
+pub use source::is_keyword_deck;
+
+/// The translation in progress: the records, and what keywords refer to
+/// across the deck.
+pub(crate) struct Ctx<'a> {
+    pub deck: Deck,
+    pub params: &'a Parameters,
+    /// `*SET_PART_LIST` parts by set id.
+    pub part_sets: Vec<(Id, Vec<i64>)>,
+    /// Next id of a node group made for a keyword that names nodes or
+    /// parts directly (above every id a deck writes).
+    next_group: Id,
+}
+
+/// First id of the node groups the reader makes itself.
+const OWN_GROUPS: Id = 1 << 40;
+
+impl Ctx<'_> {
+    /// An option of a computed keyword that nothing computes: `run`
+    /// refuses the deck by keyword and field.
+    pub fn refuse(&mut self, loc: &Loc, keyword: &str, what: impl Into<String>) {
+        let w = Warning {
+            loc: loc.clone(),
+            keyword: format!("{keyword}, {}", what.into()),
+            message: "not computed; `run` stops on it (`run --skip-unsupported` ignores it)".into(),
+        };
+        self.deck.warnings.push(w.clone());
+        self.deck.unsupported.push(w);
+    }
+
+    /// A node group of its own for `kind` over `items` (nodes or parts).
+    pub fn own_group(
+        &mut self,
+        kind: crate::deck::NodeGroupKind,
+        items: Vec<i64>,
+        title: String,
+        loc: &Loc,
+    ) -> Id {
+        let id = self.next_group;
+        self.next_group += 1;
+        self.deck.node_groups.push(crate::deck::NodeGroupCard {
+            id,
+            title,
+            kind,
+            items,
+            item_locs: vec![(0, loc.clone())],
+            loc: loc.clone(),
+        });
+        id
+    }
+}
+
+/// A translator: reads one keyword block into the records.
+type Translate = fn(&Block, &mut Cards, &mut Ctx) -> InputResult<()>;
+
+/// The keywords computed, by name (options `_TITLE`/`_ID` removed, see
+/// [`base_name`]).
+const TRANSLATORS: &[(&str, Translate)] = &[
+    ("NODE", mesh::node),
+    ("ELEMENT_SHELL", mesh::shell),
+    ("ELEMENT_SOLID", mesh::solid),
+    ("PART", mesh::part),
+    ("SECTION_SHELL", sections::shell),
+    ("SECTION_SOLID", sections::solid),
+    ("MAT_ELASTIC", materials::elastic),
+    ("MAT_001", materials::elastic),
+    ("MAT_PLASTIC_KINEMATIC", materials::plastic_kinematic),
+    ("MAT_003", materials::plastic_kinematic),
+    ("SET_NODE_LIST", conditions::node_set),
+    ("SET_NODE", conditions::node_set),
+    ("SET_PART_LIST", conditions::part_set),
+    ("SET_PART", conditions::part_set),
+    ("BOUNDARY_SPC_NODE", conditions::spc_node),
+    ("BOUNDARY_SPC_SET", conditions::spc_set),
+    (
+        "INITIAL_VELOCITY_GENERATION",
+        conditions::velocity_generation,
+    ),
+    ("INITIAL_VELOCITY", conditions::velocity_set),
+    ("INITIAL_VELOCITY_NODE", conditions::velocity_node),
+    ("DEFINE_CURVE", conditions::curve),
+    ("CONTROL_TERMINATION", controls::termination),
+    ("CONTROL_TIMESTEP", controls::timestep),
+    ("DATABASE_BINARY_D3PLOT", controls::d3plot),
+    ("TITLE", controls::title),
+];
+
+/// Keywords read by no translator that change nothing in the solution
+/// (output requests), with why: noted, not fatal.
+const SAFE_TO_SKIP: &[(&str, &str)] = &[
+    (
+        "DATABASE_",
+        "an output request: it changes nothing in the solution",
+    ),
+    (
+        "CONTROL_OUTPUT",
+        "listing options: they change nothing in the solution",
+    ),
+];
+
+/// The keyword without its `_TITLE` / `_ID` option, and whether it has them.
+pub(crate) fn base_name(name: &str) -> (&str, bool, bool) {
+    let (n, title) = match name.strip_suffix("_TITLE") {
+        Some(n) => (n, true),
+        None => (name, false),
+    };
+    match n.strip_suffix("_ID") {
+        Some(b) => (b, title, true),
+        None => (n, title, false),
+    }
+}
+
+/// Reads the keyword deck at `path` into the Radioss reader's records.
+pub fn read(path: &Path) -> InputResult<Deck> {
+    let src = source::read(path)?;
+    if !src.has_keyword_header {
+        let at = src.blocks.first().map(|b| b.loc.clone()).unwrap_or(Loc {
+            file: path.to_path_buf(),
+            line: 1,
+        });
+        return Err(InputError::new(
+            at,
+            "*KEYWORD",
+            "",
+            "a keyword deck starts with *KEYWORD",
+        ));
+    }
+    let params = parameters(&src.blocks)?;
+    let mut ctx = Ctx {
+        deck: Deck {
+            path: path.to_path_buf(),
+            begin: Some(begin(path, &src.blocks[0].loc)),
+            ..Default::default()
+        },
+        params: &params,
+        part_sets: Vec::new(),
+        next_group: OWN_GROUPS,
+    };
+    for b in &src.blocks {
+        translate(b, &mut ctx)?;
+    }
+    references::check(&ctx)?;
+    Ok(ctx.deck)
+}
+
+fn translate(b: &Block, ctx: &mut Ctx) -> InputResult<()> {
+    let (base, _, _) = base_name(&b.name);
+    if matches!(base, "KEYWORD" | "PARAMETER") {
+        // The header, and the parameters (read before every other keyword).
+        return Ok(());
+    }
+    let params = ctx.params;
+    if let Some((_, f)) = TRANSLATORS.iter().find(|(n, _)| *n == base) {
+        let mut cards = Cards::new(b, params);
+        return f(b, &mut cards, ctx);
+    }
+    let w = |message: String| Warning {
+        loc: b.loc.clone(),
+        keyword: format!("*{}", b.name),
+        message,
+    };
+    match SAFE_TO_SKIP.iter().find(|(k, _)| b.name.starts_with(k)) {
+        Some((_, why)) => ctx.deck.warnings.push(w(format!(
+            "keyword skipped ({} line(s)): {why}",
+            b.lines.len()
+        ))),
+        None => {
+            let u = w(format!(
+                "keyword not supported; `run` stops on it (`run --skip-unsupported` skips its {} line(s))",
+                b.lines.len()
+            ));
+            ctx.deck.warnings.push(u.clone());
+            ctx.deck.unsupported.push(u);
+        }
+    }
+    Ok(())
+}
+
+/// `*PARAMETER` cards: pairs of fields "Tname" (T the type: R, I or C)
+/// and value, four pairs on a line.
+fn parameters(blocks: &[Block]) -> InputResult<Parameters> {
+    let mut out = Parameters::new();
+    let none = Parameters::new();
+    for b in blocks.iter().filter(|b| b.name == "PARAMETER") {
+        let mut cards = Cards::new(b, &none);
+        while let Some(c) = cards.next_opt(card::standard(b.long)) {
+            for pair in 0..4 {
+                let name = c.raw(2 * pair);
+                if name.is_empty() {
+                    continue;
+                }
+                let (ty, rest) = name.split_at(1);
+                let rest = rest.trim();
+                if !matches!(ty.to_ascii_uppercase().as_str(), "R" | "I" | "C") || rest.is_empty() {
+                    return Err(c.err(
+                        "PRMR",
+                        format!("'{name}': expected a type letter R, I or C followed by the name"),
+                    ));
+                }
+                out.insert(rest.to_ascii_uppercase(), c.raw(2 * pair + 1).to_string());
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// The run's header: its name is the deck's file stem; a keyword deck
+/// carries no units (they are the deck's own, consistent).
+fn begin(path: &Path, loc: &Loc) -> Begin {
+    let stem = path
+        .file_stem()
+        .map(|s| s.to_string_lossy().to_string())
+        .unwrap_or_else(|| "keyword".into());
+    let units = Units {
+        mass: "(deck)".into(),
+        length: "(deck)".into(),
+        time: "(deck)".into(),
+        ..Units::default()
+    };
+    Begin {
+        run_name: stem,
+        invers: 0,
+        irun: 0,
+        input_units: units.clone(),
+        work_units: units,
+        loc: loc.clone(),
+    }
+}
