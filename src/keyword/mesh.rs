@@ -77,7 +77,7 @@ fn element_widths(long: bool) -> Vec<usize> {
 
 /// `*ELEMENT_SHELL`: EID PID N1 N2 N3 N4 (N5–N8 of higher-order shells
 /// refused). N4 = N3 or blank: a triangle.
-pub fn shell(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
+pub fn shell(_b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
     while let Some(c) = cards.next_opt(element_widths(cards.long())) {
         if c.is_blank() {
             continue;
@@ -112,7 +112,6 @@ pub fn shell(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
             ctx.deck.elements.shell4.push(card(n));
         }
     }
-    let _ = b;
     Ok(())
 }
 
