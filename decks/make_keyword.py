@@ -11,13 +11,23 @@ free steel block of 2 x 2 x 4 bricks flying at 2 m/s along -x. Elastic
 *PARAMETER, its block through an *INCLUDE, and fixes one node by *NODE's TC/RC
 fields.
 
-    python3 decks/make_keyword.py OUT_DIR NAME [TEND]
+    python3 decks/make_keyword.py OUT_DIR NAME [TEND [contact]]
+
+"contact": the plate lies still and the block falls on it at 2 m/s from 1.5 mm
+above its contact thickness, its nodes in contact with the plate through
+*CONTACT_AUTOMATIC_NODES_TO_SURFACE (SOFT 0, FS 0.2, VDC 5 %), and in the
+twin a /INTER/TYPE7 with Istf 1 and Stfac = LS-DYNA's SOFT 0 stiffness of the
+plate's segments, SLSFAC·K·A/d_max (uniform squares: every pair's, the block
+nodes' K·V^(1/3) being larger); a *RIGIDWALL_PLANAR 3 mm below the plate
+(every node) and an *ELEMENT_MASS of 0.01 kg on the block's first node
+(/RWALL/PLANE and /ADMAS in the twin).
 """
 import os
 import sys
 
 out, name = sys.argv[1], sys.argv[2]
 tend = float(sys.argv[3]) if len(sys.argv) > 3 else 0.3
+contact = len(sys.argv) > 4 and sys.argv[4] == "contact"
 nx, ny, h, t = 8, 3, 5.0, 1.0
 rho, e, nu = 7.85e-6, 210.0, 0.3
 
@@ -35,7 +45,8 @@ block = {}
 for k in range(3):
     for j in range(3):
         for i in range(5):
-            block[(i, j, k)] = (1001 + len(block), 60.0 + i * h, j * h, 10.0 + k * h)
+            x0, z0 = (10.0, 2.0) if contact else (60.0, 10.0)
+            block[(i, j, k)] = (1001 + len(block), x0 + i * h, j * h, z0 + k * h)
 bricks = []
 for k in range(2):
     for j in range(2):
@@ -46,6 +57,10 @@ for k in range(2):
 clamped = [plate[(0, j)][0] for j in range(ny + 1)]
 # The first clamped node is fixed by *NODE TC = 7, RC = 7 instead of the set.
 tc_node, clamped_set = clamped[0], clamped[1:]
+
+v_plate, v_block = (0.0, (0.0, 0.0, -2.0)) if contact else (1.0, (-2.0, 0.0, 0.0))
+slsfac, bulk = 0.1, e / (3 * (1 - 2 * nu))
+k_soft0 = slsfac * bulk * h * h / (h * 2 ** 0.5)
 
 # ---- keyword deck ----
 k8 = lambda v: f"{v:>8d}"
@@ -76,9 +91,18 @@ K += ["".join(k10(v) for v in clamped_set[i:i + 8]) for i in range(0, len(clampe
 K += ["*BOUNDARY_SPC_SET", "$    NSID       CID      DOFX      DOFY      DOFZ     DOFRX     DOFRY     DOFRZ",
       k10(1) + k10(0) + k10(1) * 6]
 K += ["*INITIAL_VELOCITY_GENERATION", "$      ID      STYP     OMEGA        VX        VY        VZ",
-      k10(1) + k10(2) + f10(0) + f10(0) + f10(0) + f10(1.0), f10(0) * 6,
+      k10(1) + k10(2) + f10(0) + f10(0) + f10(0) + f10(v_plate), f10(0) * 6,
       "*SET_PART_LIST", k10(7), k10(2),
-      "*INITIAL_VELOCITY_GENERATION", k10(7) + k10(1) + f10(0) + f10(-2.0) + f10(0) + f10(0), f10(0) * 6]
+      "*INITIAL_VELOCITY_GENERATION", k10(7) + k10(1) + f10(0) + "".join(f10(v) for v in v_block), f10(0) * 6]
+if contact:
+    K += ["*CONTROL_CONTACT", "$  SLSFAC", f10(slsfac),
+          "*CONTACT_AUTOMATIC_NODES_TO_SURFACE_ID", k10(1) + "block on plate",
+          "$    SSID      MSID     SSTYP     MSTYP", k10(2) + k10(1) + k10(3) + k10(3),
+          "$      FS        FD        DC        VC       VDC", f10(0.2) + f10(0) * 3 + f10(5.0),
+          "$     SFS       SFM", f10(1.0) + f10(1.0),
+          "*RIGIDWALL_PLANAR", "$    NSID", k10(0), "$      XT        YT        ZT        XH        YH        ZH",
+          f10(0) + f10(0) + f10(-3.0) + f10(0) + f10(0) + f10(-2.0),
+          "*ELEMENT_MASS", "$    EID     NID            MASS", k8(1) + k8(1001) + f16(0.01)]
 K += ["*INCLUDE", name + "_block.k", "*END"]
 B = ["*KEYWORD", "$ the block's mesh, included by " + name + ".k", "*NODE +"]
 for (nid, x, y, z) in block.values():
@@ -108,8 +132,20 @@ R += ["/GRNOD/NODE/2", "TC node", i10(tc_node)]
 R += ["/BCS/1", "clamped edge", "   111 111" + i10(0) + i10(1)]
 R += ["/BCS/2", "TC node", "   111 111" + i10(0) + i10(2)]
 R += ["/GRNOD/PART/3", "plate", i10(1), "/GRNOD/PART/4", "block", i10(2)]
-R += ["/INIVEL/TRA/1", "plate", r20(0) + r20(0) + r20(1.0) + i10(3) + i10(0)]
-R += ["/INIVEL/TRA/2", "block", r20(-2.0) + r20(0) + r20(0) + i10(4) + i10(0)]
+R += ["/INIVEL/TRA/1", "plate", r20(0) + r20(0) + r20(v_plate) + i10(3) + i10(0)]
+R += ["/INIVEL/TRA/2", "block", "".join(r20(v) for v in v_block) + i10(4) + i10(0)]
+if contact:
+    r17 = lambda v: f"{v:>20.17g}"
+    R += ["/SURF/PART/6", "plate", i10(1),
+          "/INTER/TYPE7/1", "block on plate",
+          i10(4) + i10(6) + i10(1) + i10(0) + i10(1) + " " * 10 + i10(0) + i10(0) + i10(0) + i10(0),
+          "", "", r17(k_soft0) + r20(0.2) + r20(0) + r20(0) + r20(0),
+          "       000" + " " * 20 + i10(0) + r20(0.05) + r20(1.0) + r20(0), "",
+          "/GRNOD/PART/8", "every node", i10(1) + i10(2),
+          "/RWALL/PLANE/1", "", i10(0) + i10(0) + i10(8) + i10(0), r20(0) * 4 + i10(0),
+          r20(0) + r20(0) + r20(-3.0), r20(0) + r20(0) + r20(-2.0),
+          "/GRNOD/NODE/9", "mass node", i10(1001),
+          "/ADMAS/0/1", "", r20(0.01) + i10(9)]
 R += ["/END"]
 E = ["#RADIOSS ENGINE", f"/RUN/{name}/1", r20(tend), "/DT", "0.9 0.0", "/ANIM/DT", f"0.0 {tend / 3!r}"]
 

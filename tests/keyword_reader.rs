@@ -279,3 +279,75 @@ fn mat_plastic_kinematic_is_bilinear_cowper_symonds() {
         .unwrap();
     assert!(plastic > 1e-3, "{line}");
 }
+
+/// The energies CSV as numbers, row by row.
+fn rows(csv: &[u8]) -> Vec<Vec<f64>> {
+    String::from_utf8_lossy(csv)
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
+        .collect()
+}
+
+/// *CONTACT_AUTOMATIC_NODES_TO_SURFACE with SOFT 0 (decks/keyword_contact:
+/// a brick block falling on a shell plate, beside a *RIGIDWALL_PLANAR
+/// and an *ELEMENT_MASS, all four translated) runs LS-DYNA's penalty
+/// stiffness SLSFAC·K·A/d_max of the plate's segments (smaller than the
+/// block nodes' SLSFAC·K·V^(1/3)): its twin, a /INTER/TYPE7 whose constant
+/// stiffness (Istf 1) is that value written in the deck, gives the same
+/// energies at every cycle to round-off (the stiffness is computed, not
+/// read, so the bits may differ); the block hits the plate (pairs), and the
+/// keyword deck is byte-identical on 2 ranks.
+#[test]
+fn soft0_contact_runs_ls_dynas_penalty_stiffness() {
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("decks/keyword_contact");
+    let k = dir.join("keyword_contact.k");
+    let (fs_k, en_k) = run(0, &k, "kw-contact-k");
+    let (_, en_r) = run(0, &dir.join("keyword_contact_0000.rad"), "kw-contact-r");
+    let (a, b) = (rows(&en_k), rows(&en_r));
+    assert_eq!(a.len(), b.len(), "the same cycles");
+    assert!(a.len() > 1000, "{} cycles", a.len());
+    let contact = a.iter().map(|r| r[7]).fold(0.0f64, f64::max);
+    assert!(
+        contact > 1e-3,
+        "the block hits the plate: contact energy {contact}"
+    );
+    for (ra, rb) in a.iter().zip(&b) {
+        for (x, y) in ra.iter().zip(rb) {
+            let scale = x.abs().max(y.abs()).max(1e-3);
+            assert!((x - y).abs() <= 1e-9 * scale, "cycle {}: {x} vs {y}", ra[1]);
+        }
+    }
+    let (fs_2, en_2) = run(2, &k, "kw-contact-np2");
+    assert!(
+        fs_2 == fs_k && en_2 == en_k,
+        "the keyword contact deck differs on 2 ranks"
+    );
+    // SOFT 2 is refused by name.
+    let text = std::fs::read_to_string(&k).unwrap();
+    let soft2 = text.replacen(
+        "         1         1\n*RIGIDWALL",
+        "         1         1\n         2\n*RIGIDWALL",
+        1,
+    );
+    assert!(soft2 != text, "the deck's card 3");
+    let scratch = common::scratch("kw-contact-soft2");
+    std::fs::write(scratch.join("c.k"), soft2).unwrap();
+    std::fs::copy(
+        dir.join("keyword_contact_block.k"),
+        scratch.join("keyword_contact_block.k"),
+    )
+    .unwrap();
+    let out = common::crashsim(&[
+        "run",
+        scratch.join("c.k").to_str().unwrap(),
+        "--out",
+        scratch.to_str().unwrap(),
+    ]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("*CONTACT_AUTOMATIC_NODES_TO_SURFACE_ID, SOFT 2"),
+        "{err}"
+    );
+}

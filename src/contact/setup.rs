@@ -10,7 +10,7 @@ use super::geometry::{self as geo, V3};
 use super::interfaces::{
     CandidateSearch, CardCommon, InterfaceType, PassSides, SurfaceSizes, TypeOptions,
 };
-use super::stiffness;
+use super::stiffness::{self, ElementSize};
 use crate::model::{geometry as mgeo, Model};
 use crate::model::{ElementKind, InterfaceKind};
 use std::collections::HashMap;
@@ -101,7 +101,7 @@ impl FaceIndex {
 /// Ks = 0.5·E·t on shells, B·V^(1/3) on solids (card eq. (6), (7)), the largest
 /// over the node's elements; g_s = half the largest shell thickness (card
 /// comment 11); the smallest edge of the node's elements.
-fn node_data(m: &Model, nodes: &[u32]) -> HashMap<u32, (f64, f64, f64)> {
+fn node_data(m: &Model, nodes: &[u32], ty: &dyn InterfaceType) -> HashMap<u32, (f64, f64, f64)> {
     let mut out: HashMap<u32, (f64, f64, f64)> = nodes
         .iter()
         .map(|&n| (n, (0.0, 0.0, f64::INFINITY)))
@@ -122,10 +122,32 @@ fn node_data(m: &Model, nodes: &[u32]) -> HashMap<u32, (f64, f64, f64)> {
                 continue;
             };
             let (stiff, g) = if shell {
-                (stiffness::shell(mat.e, set.thick[e]), 0.5 * set.thick[e])
-            } else {
+                let x = face_points(m, n);
+                let (area, dmax) = face_size(&x, n.len() == 3);
+                let size = ElementSize {
+                    bulk: bulk(mat),
+                    shell: true,
+                    area,
+                    dmax,
+                    volume: 0.0,
+                };
+                let k = ty.element_stiffness(&size, false);
                 (
-                    stiffness::solid_node(bulk(mat), element_volume(m, ki, e)),
+                    k.unwrap_or_else(|| stiffness::shell(mat.e, set.thick[e])),
+                    0.5 * set.thick[e],
+                )
+            } else {
+                let v = element_volume(m, ki, e);
+                let size = ElementSize {
+                    bulk: bulk(mat),
+                    shell: false,
+                    area: v.max(0.0).powf(2.0 / 3.0),
+                    dmax: 0.0,
+                    volume: v,
+                };
+                let k = ty.element_stiffness(&size, false);
+                (
+                    k.unwrap_or_else(|| stiffness::solid_node(bulk(mat), v)),
                     0.0,
                 )
             };
@@ -147,6 +169,23 @@ fn node_data(m: &Model, nodes: &[u32]) -> HashMap<u32, (f64, f64, f64)> {
         }
     }
     out
+}
+
+/// The positions of a face's 3 or 4 nodes (a triangle repeats its third).
+fn face_points(m: &Model, n: &[u32]) -> [V3; 4] {
+    let x = |i: usize| m.nodes.x[n[i.min(n.len() - 1)] as usize];
+    [x(0), x(1), x(2), x(3)]
+}
+
+/// A face's area and its longest diagonal (a triangle: its longest edge).
+fn face_size(x: &[V3; 4], tri: bool) -> (f64, f64) {
+    let d = |a: usize, b: usize| geo::norm(geo::sub(x[a], x[b]));
+    let dmax = if tri {
+        d(0, 1).max(d(1, 2)).max(d(2, 0))
+    } else {
+        d(0, 2).max(d(1, 3))
+    };
+    (geo::segment_area(x, tri), dmax)
 }
 
 /// Per-segment data from the element under it.
@@ -176,20 +215,38 @@ fn segment_data(
         .mat
         .map(|i| &m.materials[i as usize])
         .ok_or_else(|| format!("part {} under a contact segment has no material", part.id))?;
+    let xs = face_points(m, seg);
+    let tri = seg[3] == seg[2];
+    let (area, dmax) = face_size(&xs, tri);
     if matches!(set.kind, ElementKind::Shell4 | ElementKind::Shell3) {
         let t = set.thick[e as usize];
+        let size = ElementSize {
+            bulk: bulk(mat),
+            shell: true,
+            area,
+            dmax,
+            volume: 0.0,
+        };
         return Ok(SegData {
-            k: stiffness::shell(mat.e, t),
+            k: ty
+                .element_stiffness(&size, true)
+                .unwrap_or_else(|| stiffness::shell(mat.e, t)),
             gap: 0.5 * t,
             thick: Some(t),
             elem: (ki, e),
         });
     }
-    let x: Vec<V3> = seg.iter().map(|&n| m.nodes.x[n as usize]).collect();
-    let xs = [x[0], x[1], x[2], x[3]];
-    let area = geo::segment_area(&xs, seg[3] == seg[2]);
     let vol = element_volume(m, ki as usize, e as usize);
-    let k = ty.solid_segment_stiffness(bulk(mat), area, vol);
+    let size = ElementSize {
+        bulk: bulk(mat),
+        shell: false,
+        area,
+        dmax,
+        volume: vol,
+    };
+    let k = ty
+        .element_stiffness(&size, true)
+        .unwrap_or_else(|| ty.solid_segment_stiffness(bulk(mat), area, vol));
     Ok(SegData {
         k,
         gap: 0.0,
@@ -439,7 +496,7 @@ fn build_pass(
         seg_elem.push(d.elem);
     }
     let sec = &sides.sec;
-    let nd = node_data(m, sec);
+    let nd = node_data(m, sec, ty);
     let own_k: HashMap<u32, f64> = match sides.own {
         Some(own) => {
             let mut h: HashMap<u32, f64> = HashMap::new();

@@ -66,6 +66,39 @@ pub fn type7_pair(istf: i64, stfac: f64, km: f64, ks: f64, stmin: f64, stmax: f6
     stmin.max(stmax.min(kn))
 }
 
+/// What a type's own stiffness rule reads of the element under a contact
+/// face or around a contact node.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ElementSize {
+    /// Bulk modulus of its material.
+    pub bulk: f64,
+    /// A shell (else a solid).
+    pub shell: bool,
+    /// The face's area (a solid's node: V^(2/3)) and, on a shell, its
+    /// longest diagonal (a triangle: its longest edge).
+    pub area: f64,
+    pub dmax: f64,
+    /// The solid's volume.
+    pub volume: f64,
+}
+
+/// LS-DYNA's SOFT = 0 penalty stiffness (`model::contact::DynaPenalty`):
+/// f·K·A/d_max on a shell, f·K·A²/V on a solid, f = SLSFAC·SFS or
+/// SLSFAC·SFM.
+pub fn dyna_soft0(f: f64, el: &ElementSize) -> f64 {
+    if el.shell {
+        if el.dmax > 0.0 {
+            f * el.bulk * el.area / el.dmax
+        } else {
+            0.0
+        }
+    } else if el.volume > 0.0 {
+        f * el.bulk * el.area * el.area / el.volume
+    } else {
+        0.0
+    }
+}
+
 /// TYPE7 elastic reaction and tangent stiffness at penetration `p` in gap `g`:
 /// F = K0·P·Gap/(Gap − P) (EQ. 8.8.9.1, 8.8.11.1), Kt = K0·Gap²/(Gap − P)² (EQ. 8.8.9.2).
 /// `p` must be below `g` (the caller deactivates a node at the mid-plane).
@@ -82,6 +115,36 @@ pub fn type7_energy(k0: f64, g: f64, p: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn ls_dynas_soft0_stiffness_of_a_shell_and_a_solid_face() {
+        // A 5 × 5 shell square: f·K·A/d_max; a 5 mm cube's face: f·K·A²/V.
+        let shell = ElementSize {
+            bulk: 175.0,
+            shell: true,
+            area: 25.0,
+            dmax: 50f64.sqrt(),
+            volume: 0.0,
+        };
+        assert!((dyna_soft0(0.1, &shell) - 0.1 * 175.0 * 25.0 / 50f64.sqrt()).abs() < 1e-12);
+        let solid = ElementSize {
+            shell: false,
+            dmax: 0.0,
+            volume: 125.0,
+            ..shell
+        };
+        assert!((dyna_soft0(0.1, &solid) - 0.1 * 175.0 * 5.0).abs() < 1e-12);
+        assert_eq!(
+            dyna_soft0(
+                0.1,
+                &ElementSize {
+                    volume: 0.0,
+                    ..solid
+                }
+            ),
+            0.0
+        );
+    }
 
     #[test]
     fn the_mass_time_step_stiffness_keeps_two_masses_stable() {

@@ -352,30 +352,7 @@ fn read_type7_card(cards: &mut Cards, type19: bool) -> InputResult<Type7> {
         None
     };
 
-    let thermal = if ithe == 1 {
-        let t1 = cards
-            .next("the thermal card with Kthe, fct_IDK, Tint, Ithe_form, AscaleK (Ithe = 1)")?;
-        let t2 = cards.next("the thermal card with Frad, Drad, Fheats, Fheatm (Ithe = 1)")?;
-        let fct_idk = t1.id_opt(21, "fct_IDK")?;
-        let kthe = real_ge0(&t1, 1, "Kthe", 0.0, "the heat exchange coefficient")?;
-        Some(Type7Thermal {
-            kthe: if kthe == 0.0 && fct_idk != 0 {
-                1.0
-            } else {
-                kthe
-            },
-            fct_idk,
-            tint: t1.real(41, "Tint", 0.0)?,
-            ithe_form: flag(&t1, 61, "Ithe_form", &[0, 1], 0)?,
-            ascalek: real_ge0(&t1, 71, "AscaleK", 1.0, "the abscissa scale factor")?,
-            frad: real_ge0(&t2, 1, "Frad", 0.0, "the radiation factor")?,
-            drad: real_ge0(&t2, 21, "Drad", 0.0, "the radiation distance")?,
-            fheats: real_ge0(&t2, 41, "Fheats", 0.0, "the frictional heating factor")?,
-            fheatm: real_ge0(&t2, 61, "Fheatm", 0.0, "the frictional heating factor")?,
-        })
-    } else {
-        None
-    };
+    let thermal = read_type7_thermal(cards, ithe)?;
 
     Ok(Type7 {
         grnod_ids,
@@ -420,6 +397,36 @@ fn read_type7_card(cards: &mut Cards, type19: bool) -> InputResult<Type7> {
         fric_coefs,
         adm,
         thermal,
+        dyna: None,
+    })
+}
+
+/// The two thermal cards of /INTER/TYPE7 (Ithe = 1): Kthe, fct_IDK, Tint,
+/// Ithe_form, AscaleK; Frad, Drad, Fheats, Fheatm.
+fn read_type7_thermal(cards: &mut Cards, ithe: i64) -> InputResult<Option<Type7Thermal>> {
+    Ok(if ithe == 1 {
+        let t1 = cards
+            .next("the thermal card with Kthe, fct_IDK, Tint, Ithe_form, AscaleK (Ithe = 1)")?;
+        let t2 = cards.next("the thermal card with Frad, Drad, Fheats, Fheatm (Ithe = 1)")?;
+        let fct_idk = t1.id_opt(21, "fct_IDK")?;
+        let kthe = real_ge0(&t1, 1, "Kthe", 0.0, "the heat exchange coefficient")?;
+        Some(Type7Thermal {
+            kthe: if kthe == 0.0 && fct_idk != 0 {
+                1.0
+            } else {
+                kthe
+            },
+            fct_idk,
+            tint: t1.real(41, "Tint", 0.0)?,
+            ithe_form: flag(&t1, 61, "Ithe_form", &[0, 1], 0)?,
+            ascalek: real_ge0(&t1, 71, "AscaleK", 1.0, "the abscissa scale factor")?,
+            frad: real_ge0(&t2, 1, "Frad", 0.0, "the radiation factor")?,
+            drad: real_ge0(&t2, 21, "Drad", 0.0, "the radiation distance")?,
+            fheats: real_ge0(&t2, 41, "Fheats", 0.0, "the frictional heating factor")?,
+            fheatm: real_ge0(&t2, 61, "Fheatm", 0.0, "the frictional heating factor")?,
+        })
+    } else {
+        None
     })
 }
 

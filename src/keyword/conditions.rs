@@ -188,12 +188,14 @@ pub fn velocity_generation(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> Input
                 &c.loc(),
             ),
             1 => {
-                let parts = ctx
-                    .part_sets
-                    .iter()
-                    .find(|(s, _)| *s == id)
-                    .map(|(_, p)| p.clone())
-                    .ok_or_else(|| c.err("ID", format!("part set {id} is not defined (expected a *SET_PART before this card)")))?;
+                let parts = ctx.part_set(id).ok_or_else(|| {
+                    c.err(
+                        "ID",
+                        format!(
+                            "part set {id} is not defined (expected a *SET_PART before this card)"
+                        ),
+                    )
+                })?;
                 ctx.own_group(
                     NodeGroupKind::Part,
                     parts,

@@ -18,12 +18,14 @@
 
 mod card;
 mod conditions;
+mod contacts;
 mod controls;
 mod materials;
 mod mesh;
 mod references;
 mod sections;
 pub mod source;
+mod walls_masses;
 
 use crate::deck::Deck;
 use crate::model::{Begin, Id, InputError, InputResult, Loc, Units, Warning};
@@ -40,6 +42,14 @@ pub(crate) struct Ctx<'a> {
     pub params: &'a Parameters,
     /// `*SET_PART_LIST` parts by set id.
     pub part_sets: Vec<(Id, Vec<i64>)>,
+    /// SLSFAC of `*CONTROL_CONTACT` (0.1 without it).
+    pub slsfac: f64,
+    /// The interfaces the contact keywords made, and the surfaces that take
+    /// every part (SSTYP 5), completed once the deck is read.
+    pub contacts: Vec<usize>,
+    pub all_parts_surfaces: Vec<usize>,
+    /// Node groups that take every part's nodes (a rigid wall's NSID 0).
+    pub all_parts_groups: Vec<usize>,
     /// Next id of a node group made for a keyword that names nodes or
     /// parts directly (above every id a deck writes).
     next_group: Id,
@@ -61,6 +71,20 @@ impl Ctx<'_> {
         self.deck.unsupported.push(w);
     }
 
+    /// An id for a group or surface the reader makes itself.
+    pub fn own_id(&mut self) -> Id {
+        self.next_group += 1;
+        self.next_group - 1
+    }
+
+    /// The parts of `*SET_PART` `id`.
+    pub fn part_set(&self, id: Id) -> Option<Vec<i64>> {
+        self.part_sets
+            .iter()
+            .find(|(s, _)| *s == id)
+            .map(|(_, p)| p.clone())
+    }
+
     /// A node group of its own for `kind` over `items` (nodes or parts).
     pub fn own_group(
         &mut self,
@@ -69,8 +93,7 @@ impl Ctx<'_> {
         title: String,
         loc: &Loc,
     ) -> Id {
-        let id = self.next_group;
-        self.next_group += 1;
+        let id = self.own_id();
         self.deck.node_groups.push(crate::deck::NodeGroupCard {
             id,
             title,
@@ -112,6 +135,17 @@ const TRANSLATORS: &[(&str, Translate)] = &[
     ("INITIAL_VELOCITY", conditions::velocity_set),
     ("INITIAL_VELOCITY_NODE", conditions::velocity_node),
     ("DEFINE_CURVE", conditions::curve),
+    ("CONTACT_AUTOMATIC_SINGLE_SURFACE", contacts::single_surface),
+    (
+        "CONTACT_AUTOMATIC_NODES_TO_SURFACE",
+        contacts::nodes_to_surface,
+    ),
+    ("CONTROL_CONTACT", contacts::control),
+    ("RIGIDWALL_PLANAR", walls_masses::planar),
+    ("RIGIDWALL_PLANAR_ORTHO", walls_masses::planar),
+    ("RIGIDWALL_PLANAR_MOVING", walls_masses::planar),
+    ("RIGIDWALL_PLANAR_FINITE", walls_masses::planar),
+    ("ELEMENT_MASS", walls_masses::mass),
     ("CONTROL_TERMINATION", controls::termination),
     ("CONTROL_TIMESTEP", controls::timestep),
     ("DATABASE_BINARY_D3PLOT", controls::d3plot),
@@ -167,11 +201,16 @@ pub fn read(path: &Path) -> InputResult<Deck> {
         },
         params: &params,
         part_sets: Vec::new(),
+        slsfac: 0.1,
+        contacts: Vec::new(),
+        all_parts_surfaces: Vec::new(),
+        all_parts_groups: Vec::new(),
         next_group: OWN_GROUPS,
     };
     for b in &src.blocks {
         translate(b, &mut ctx)?;
     }
+    contacts::finish(&mut ctx);
     references::check(&ctx)?;
     Ok(ctx.deck)
 }

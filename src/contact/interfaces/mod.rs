@@ -325,6 +325,18 @@ pub trait InterfaceType: Sync {
     /// the segment's `area` and the element's `volume`.
     fn solid_segment_stiffness(&self, bulk: f64, area: f64, volume: f64) -> f64;
 
+    /// A type's own penalty stiffness of the element under a main segment
+    /// (`main`) or around a secondary node, replacing the Radioss rules
+    /// (shells 0.5·E·t, solids [`Self::solid_segment_stiffness`] and
+    /// B·V^(1/3)); `None` keeps them.
+    fn element_stiffness(
+        &self,
+        _el: &crate::contact::stiffness::ElementSize,
+        _main: bool,
+    ) -> Option<f64> {
+        None
+    }
+
     /// The stiffness of pair (secondary k, segment m).
     fn pair_stiffness(&self, it: &Interface, p: &Pass, k: usize, m: usize) -> f64;
 

@@ -54,6 +54,10 @@ pub struct Type7 {
     pub fscalegap: f64,
     pub gapmax: f64,
     pub mesh_size_pct: f64,
+    /// A keyword deck's SOFT = 0 contact: LS-DYNA's penalty stiffness
+    /// instead of Istf's.
+    #[serde(default)]
+    pub dyna: Option<crate::model::contact::DynaPenalty>,
 }
 
 impl InterfaceType for Type7 {
@@ -127,6 +131,7 @@ impl InterfaceType for Type7 {
             fscalegap: t.fscalegap,
             gapmax: t.gapmax,
             mesh_size_pct: t.mesh_size_pct,
+            dyna: t.dyna,
         };
         Some((own, common))
     }
@@ -165,8 +170,20 @@ impl InterfaceType for Type7 {
         stiffness::brick_type7(bulk, area, volume)
     }
 
-    /// By Istf (card eq. (1)–(3)).
+    /// LS-DYNA's SOFT = 0 rule for a keyword deck's contact.
+    fn element_stiffness(&self, el: &stiffness::ElementSize, main: bool) -> Option<f64> {
+        let d = self.dyna?;
+        let f = d.slsfac * if main { d.sfm } else { d.sfs };
+        Some(stiffness::dyna_soft0(f, el))
+    }
+
+    /// By Istf (card eq. (1)–(3)); a keyword deck's contact: the smaller of
+    /// the main segment's and the secondary node's (LS-DYNA's default
+    /// penalty option).
     fn pair_stiffness(&self, it: &Interface, p: &Pass, k: usize, m: usize) -> f64 {
+        if self.dyna.is_some() {
+            return p.seg_k[m].min(p.sec_k[k]);
+        }
         stiffness::type7_pair(
             self.istf,
             it.stfac,

@@ -132,6 +132,27 @@ pub struct Type7 {
     pub adm: Option<Type7Adm>,
     /// The two thermal cards (Ithe = 1).
     pub thermal: Option<Type7Thermal>,
+    /// An LS-DYNA keyword contact run on this kernel (`*CONTACT_AUTOMATIC_…`,
+    /// SOFT = 0): its penalty stiffness replaces Istf's; `None` for /INTER/TYPE7.
+    #[serde(default)]
+    pub dyna: Option<DynaPenalty>,
+}
+
+/// LS-DYNA's SOFT = 0 penalty stiffness (keyword manual volume I, *CONTACT
+/// card 3 and *CONTROL_CONTACT SLSFAC; theory manual, "Contact-Impact
+/// Algorithm", penalty method): a segment on a shell takes k = f·K·A/d_max
+/// (A its area, d_max its longest diagonal), on a solid k = f·K·A²/V, with
+/// K the bulk modulus and f = SLSFAC·SFM for main segments, SLSFAC·SFS for
+/// secondary nodes (from the elements around them); a pair takes the
+/// smaller of its two (the default penalty option: the minimum of the main
+/// segment's and the secondary node's).
+#[derive(Clone, Copy, Debug, Serialize, Deserialize, PartialEq)]
+pub struct DynaPenalty {
+    /// SLSFAC (*CONTROL_CONTACT, default 0.1).
+    pub slsfac: f64,
+    /// SFS, SFM (*CONTACT card 3, default 1).
+    pub sfs: f64,
+    pub sfm: f64,
 }
 
 /// TYPE7 adaptive-meshing card (Iadm = 2).

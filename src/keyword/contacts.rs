@@ -1,0 +1,341 @@
+//! `*CONTACT_AUTOMATIC_SINGLE_SURFACE` and `*CONTACT_AUTOMATIC_NODES_TO_SURFACE`
+//! with SOFT = 0, and `*CONTROL_CONTACT`'s SLSFAC (keyword manual volume I,
+//! "*CONTACT", "*CONTROL_CONTACT").
+//!
+//! They run on the TYPE7 kernel (node to segment, both sides of a shell,
+//! edges and corners; the reference guide maps these keywords to a
+//! Radioss penalty interface too) with LS-DYNA's own penalty stiffness
+//! (`model::contact::DynaPenalty`: SLSFAC·SFS or SFM times K·A/d_max on
+//! shells, K·A²/V on solids, the smaller of the pair's two) and its
+//! contact thickness: half the shell thickness on each side (TYPE7's
+//! variable gap, Igap 1). Coulomb friction FS (DC 0); the damper VDC, in
+//! percent of critical, is TYPE7's VISs. What differs from LS-DYNA and is
+//! TYPE7's: the force stiffens as the penetration nears the gap
+//! (K·g/(g − p), EQ. 8.8.9.1: the same to 1% below p = 1% of g) and the
+//! quadratic damper of a fast approach. Other SOFT values, SST/MST,
+//! SFST/SFMT, DC, VC, box and set types not read are refused by name.
+
+use super::card::Cards;
+use super::source::Block;
+use super::{base_name, Ctx};
+use crate::deck::{NodeGroupKind, SurfaceCard, SurfaceDef};
+use crate::model::contact::{DynaPenalty, Type7, EP30};
+use crate::model::{Id, InputResult, InterfaceKind, InterfaceSpec, Loc};
+
+/// `*CONTROL_CONTACT` card 1: SLSFAC RWPNAL ISLCHK SHLTHK PENOPT THKCHG
+/// ORIEN ENMASS. SLSFAC (0 → 0.1) scales every contact's stiffness.
+pub fn control(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
+    let kw = format!("*{}", b.name);
+    let std = cards.standard();
+    let c = cards.next(
+        std,
+        "the card SLSFAC RWPNAL ISLCHK SHLTHK PENOPT THKCHG ORIEN ENMASS",
+    )?;
+    let s = c.real(0, "SLSFAC", 0.0)?;
+    if s < 0.0 {
+        return Err(c.err(
+            "SLSFAC",
+            format!("{s}: expected a scale factor >= 0 (0: 0.1)"),
+        ));
+    }
+    ctx.slsfac = if s == 0.0 { 0.1 } else { s };
+    // SHLTHK 0/1 (thickness considered), PENOPT 0/1 (the minimum of the
+    // pair's stiffnesses), THKCHG 0 (the initial thickness) are what runs.
+    for (i, name, most) in [(3, "SHLTHK", 1), (4, "PENOPT", 1), (5, "THKCHG", 0)] {
+        if !(0..=most).contains(&c.int(i, name, 0)?) {
+            ctx.refuse(&c.loc(), &kw, format!("field {name}"));
+        }
+    }
+    Ok(())
+}
+
+/// Which contact keyword.
+#[derive(Clone, Copy, PartialEq)]
+enum Form {
+    SingleSurface,
+    NodesToSurface,
+}
+
+pub fn single_surface(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
+    contact(b, cards, ctx, Form::SingleSurface)
+}
+
+pub fn nodes_to_surface(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
+    contact(b, cards, ctx, Form::NodesToSurface)
+}
+
+fn contact(b: &Block, cards: &mut Cards, ctx: &mut Ctx, form: Form) -> InputResult<()> {
+    let kw = format!("*{}", b.name);
+    let std = cards.standard();
+    let (mut id, mut title) = (0, String::new());
+    let (_, titled, with_id) = base_name(&b.name);
+    if titled || with_id {
+        let c = cards.next(vec![10, 70], "the card CID HEADING")?;
+        id = c.id_opt(0, "CID")?;
+        title = c.raw(1).to_string();
+    }
+    let c1 = cards.next(
+        std.clone(),
+        "card 1: SSID MSID SSTYP MSTYP SBOXID MBOXID SPR MPR",
+    )?;
+    let loc = c1.loc();
+    let ssid = c1.id_opt(0, "SSID")?;
+    let msid = c1.id_opt(1, "MSID")?;
+    let sstyp = c1.int(2, "SSTYP", 0)?;
+    let mstyp = c1.int(3, "MSTYP", 0)?;
+    for (i, name) in [(4, "SBOXID"), (5, "MBOXID")] {
+        if c1.int(i, name, 0)? != 0 {
+            ctx.refuse(&loc, &kw, format!("field {name}"));
+        }
+    }
+    let c2 = cards.next(std.clone(), "card 2: FS FD DC VC VDC PENCHK BT DT")?;
+    let fs = c2.real(0, "FS", 0.0)?;
+    let vdc = c2.real(4, "VDC", 0.0)?;
+    for (i, name) in [(2, "DC"), (3, "VC"), (5, "PENCHK")] {
+        if c2.real(i, name, 0.0)? != 0.0 {
+            ctx.refuse(&c2.loc(), &kw, format!("field {name}"));
+        }
+    }
+    let bt = c2.real(6, "BT", 0.0)?;
+    let dt = c2.real(7, "DT", 0.0)?;
+    let c3 = cards.next(std.clone(), "card 3: SFS SFM SST MST SFST SFMT FSF VSF")?;
+    let one = |v: f64| if v == 0.0 { 1.0 } else { v };
+    let sfs = one(c3.real(0, "SFS", 1.0)?);
+    let sfm = one(c3.real(1, "SFM", 1.0)?);
+    for (i, name, free) in [
+        (2, "SST", 0.0),
+        (3, "MST", 0.0),
+        (4, "SFST", 1.0),
+        (5, "SFMT", 1.0),
+        (6, "FSF", 1.0),
+        (7, "VSF", 1.0),
+    ] {
+        let v = c3.real(i, name, free)?;
+        if v != free && v != 0.0 {
+            ctx.refuse(&c3.loc(), &kw, format!("field {name}"));
+        }
+    }
+    optional_cards(cards, ctx, &kw)?;
+    let surf = match form {
+        Form::SingleSurface => parts_surface(ctx, ssid, sstyp, &loc, &kw, "SSID")?,
+        Form::NodesToSurface => parts_surface(ctx, msid, mstyp, &loc, &kw, "MSID")?,
+    };
+    let grnod = match form {
+        Form::SingleSurface => 0,
+        Form::NodesToSurface => secondary_nodes(ctx, ssid, sstyp, &loc, &kw)?,
+    };
+    if id == 0 {
+        id = ctx.deck.interfaces.len() as Id + 1;
+    }
+    let t = type7(
+        grnod,
+        surf,
+        fs,
+        vdc,
+        bt,
+        dt,
+        DynaPenalty {
+            slsfac: ctx.slsfac,
+            sfs,
+            sfm,
+        },
+    );
+    ctx.deck.interfaces.push(InterfaceSpec {
+        id,
+        unit_id: 0,
+        title,
+        kind: InterfaceKind::Type7(t),
+        loc: loc.clone(),
+        ids_loc: loc,
+    });
+    ctx.contacts.push(ctx.deck.interfaces.len() - 1);
+    Ok(())
+}
+
+/// Optional cards A (SOFT SOFSCL LCIDAB MAXPAR SBOPT DEPTH BSORT FRCFRQ)
+/// and B (PENMAX THKOPT SHLTHK SNLOG ISYM I2D3D SLDTHK SLDSTF): SOFT 0 is
+/// computed; the options that change SOFT 0's answer are refused.
+fn optional_cards(cards: &mut Cards, ctx: &mut Ctx, kw: &str) -> InputResult<()> {
+    let std = cards.standard();
+    if let Some(a) = cards.next_opt(std.clone()) {
+        let soft = a.int(0, "SOFT", 0)?;
+        if soft != 0 {
+            ctx.refuse(&a.loc(), kw, format!("SOFT {soft} (SOFT 0 is computed)"));
+        }
+        if a.int(2, "LCIDAB", 0)? != 0 {
+            ctx.refuse(&a.loc(), kw, "field LCIDAB");
+        }
+    }
+    if let Some(b) = cards.next_opt(std) {
+        for (i, name) in [
+            (0, "PENMAX"),
+            (1, "THKOPT"),
+            (2, "SHLTHK"),
+            (6, "SLDTHK"),
+            (7, "SLDSTF"),
+        ] {
+            if b.real(i, name, 0.0)? != 0.0 {
+                ctx.refuse(&b.loc(), kw, format!("field {name}"));
+            }
+        }
+    }
+    if cards.remaining() > 0 {
+        let c = cards.next_opt(cards.standard()).unwrap();
+        ctx.refuse(&c.loc(), kw, "optional cards C and beyond");
+    }
+    Ok(())
+}
+
+/// The TYPE7 options of a SOFT = 0 contact: variable gap (half thicknesses),
+/// LS-DYNA's stiffness, Coulomb FS, damping VDC % of critical, BT/DT.
+fn type7(grnod: Id, surf: Id, fs: f64, vdc: f64, bt: f64, dt: f64, dyna: DynaPenalty) -> Type7 {
+    Type7 {
+        grnod_ids: grnod,
+        surf_idm: surf,
+        istf: 4,
+        ithe: 0,
+        igap: 1,
+        ibag: 0,
+        idel: 0,
+        icurv: 0,
+        iadm: 0,
+        fscalegap: 1.0,
+        gapmax: EP30,
+        fpenmax: 0.0,
+        itied: 0,
+        ists: 0,
+        stmin: 0.0,
+        stmax: EP30,
+        mesh_size_pct: 0.4,
+        dtmin: 0.0,
+        irem_gap: 1,
+        irem_i2: 3,
+        curv_nodes: None,
+        stfac: 1.0,
+        fric: fs,
+        gapmin: 0.0,
+        tstart: bt,
+        tstop: if dt == 0.0 { EP30 } else { dt },
+        ibc: [false; 3],
+        inacti: 1000,
+        viss: vdc / 100.0,
+        visf: if fs != 0.0 { 1.0 } else { 0.0 },
+        bumult: 0.2,
+        ifric: 0,
+        ifiltr: 0,
+        xfreq: 0.0,
+        iform: 1,
+        sens_id: 0,
+        fct_idf: 0,
+        ascalef: 1.0,
+        fric_id: 0,
+        fric_coefs: None,
+        adm: None,
+        thermal: None,
+        dyna: Some(dyna),
+    }
+}
+
+/// A surface of the parts a set names: type 2 (part set), 3 (part) or 5
+/// (every part, filled once the deck is read).
+fn parts_surface(
+    ctx: &mut Ctx,
+    sid: Id,
+    styp: i64,
+    loc: &Loc,
+    kw: &str,
+    field: &str,
+) -> InputResult<Id> {
+    let parts: Vec<i64> = match styp {
+        3 => vec![sid as i64],
+        2 => ctx.part_set(sid).ok_or_else(|| {
+            crate::model::InputError::new(
+                loc.clone(),
+                kw,
+                field,
+                format!("part set {sid} is not defined (expected a *SET_PART before this contact)"),
+            )
+        })?,
+        5 => Vec::new(),
+        _ => {
+            ctx.refuse(
+                loc,
+                kw,
+                format!("set type {styp} for {field} (2 part set, 3 part and 5 all are read)"),
+            );
+            Vec::new()
+        }
+    };
+    let id = ctx.own_id();
+    if styp == 5 {
+        ctx.all_parts_surfaces.push(ctx.deck.surfaces.len());
+    }
+    ctx.deck.surfaces.push(SurfaceCard {
+        id,
+        title: format!("{kw} {field} {sid}"),
+        def: SurfaceDef::Parts(parts),
+        item_locs: vec![(0, loc.clone())],
+        loc: loc.clone(),
+    });
+    Ok(id)
+}
+
+/// The secondary nodes of a nodes-to-surface contact: a node set (4), or
+/// the nodes of a part (3) or part set (2).
+fn secondary_nodes(ctx: &mut Ctx, sid: Id, styp: i64, loc: &Loc, kw: &str) -> InputResult<Id> {
+    match styp {
+        4 => Ok(sid),
+        3 => Ok(ctx.own_group(
+            NodeGroupKind::Part,
+            vec![sid as i64],
+            format!("{kw} part {sid}"),
+            loc,
+        )),
+        2 => {
+            let parts = ctx.part_set(sid).ok_or_else(|| {
+                crate::model::InputError::new(
+                    loc.clone(),
+                    kw,
+                    "SSID",
+                    format!(
+                        "part set {sid} is not defined (expected a *SET_PART before this contact)"
+                    ),
+                )
+            })?;
+            Ok(ctx.own_group(
+                NodeGroupKind::Part,
+                parts,
+                format!("{kw} part set {sid}"),
+                loc,
+            ))
+        }
+        _ => {
+            ctx.refuse(
+                loc,
+                kw,
+                format!("set type {styp} for SSID (2 part set, 3 part and 4 node set are read)"),
+            );
+            Ok(ctx.own_group(NodeGroupKind::Node, Vec::new(), kw.to_string(), loc))
+        }
+    }
+}
+
+/// After the last keyword: SSTYP 5 surfaces and NSID 0 rigid walls take
+/// every part, and every
+/// contact takes the deck's SLSFAC (a *CONTROL_CONTACT may come after it).
+pub fn finish(ctx: &mut Ctx) {
+    let all: Vec<i64> = ctx.deck.parts.iter().map(|p| p.id as i64).collect();
+    for &i in &ctx.all_parts_surfaces {
+        ctx.deck.surfaces[i].def = SurfaceDef::Parts(all.clone());
+    }
+    for &i in &ctx.all_parts_groups {
+        ctx.deck.node_groups[i].items = all.clone();
+    }
+    for &i in &ctx.contacts {
+        if let InterfaceKind::Type7(t) = &mut ctx.deck.interfaces[i].kind {
+            if let Some(d) = &mut t.dyna {
+                d.slsfac = ctx.slsfac;
+            }
+        }
+    }
+}
