@@ -4,10 +4,17 @@ demo and benchmark deck): a thin-walled steel tube (Johnson-Cook, Ishell=1,
 3 integration points) flying at 10 m/s into a rigid wall, with TYPE7
 self-contact and 50 kg added at its back end. Units: kg, mm, ms (stress in GPa).
 
-    python3 decks/make_tube.py OUT_DIR NAME [NW NL [TEND [nocontact]]]
+    python3 decks/make_tube.py OUT_DIR NAME [NW NL [TEND [nocontact|keyword]]]
 
 NW shells across each side, NL along the length (default 5 x 20 = 400 shells),
 TEND the end time in ms (default 10); "nocontact" leaves the TYPE7 out.
+"keyword" also writes the same crash as an LS-DYNA keyword deck NAME.k
+(issue 17's tube twin): *MAT_JOHNSON_COOK, *SECTION_SHELL ELFORM 2 (NIP 3,
+SHRF 5/6), *ELEMENT_MASS on the back ring, *RIGIDWALL_PLANAR and
+*CONTACT_AUTOMATIC_SINGLE_SURFACE SOFT 0 whose stiffness matches the TYPE7's
+(SFS = SFM = 0.5·E·t / (SLSFAC·K·A/d_max)); the Radioss deck then leaves out
+what MAT_015 has not (SIG_max0, the strain-rate filter) and gives the 50 kg
+as /ADMAS on each back node, so that both describe one model.
 """
 import os
 import sys
@@ -17,6 +24,7 @@ nw = int(sys.argv[3]) if len(sys.argv) > 3 else 5
 nl = int(sys.argv[4]) if len(sys.argv) > 4 else 20
 tend = float(sys.argv[5]) if len(sys.argv) > 5 else 10.0
 contact = not (len(sys.argv) > 6 and sys.argv[6] == "nocontact")
+keyword = len(sys.argv) > 6 and sys.argv[6] == "keyword"
 width, length = 50.0, 200.0
 i10 = lambda v: f"{v:>10d}"
 r20 = lambda v: f"{v:>20.10g}"
@@ -51,13 +59,13 @@ L += ["#RADIOSS STARTER", f"# {name}: square tube crash, written by decks/make_t
 L[-2] = "kg".rjust(20) + "mm".rjust(20) + "ms".rjust(20)
 L += ["/TITLE", f"Square tube {nw}x{nl} per side into a rigid wall"]
 L += ["/DEF_SHELL", "#   ISHELL    ISMSTR    ITHICK     IPLAS   ISTRAIN                        I_SH3N     IDRIL",
-      i10(1) + i10(2) + i10(1) + i10(0) + i10(1) + " " * 20 + i10(2) + i10(0)]
+      i10(1) + i10(2) + i10(0 if keyword else 1) + i10(0) + i10(1) + " " * 20 + i10(2) + i10(0)]
 L += ["/MAT/PLAS_JOHNS/1", "Steel (Johnson-Cook)", "#              RHO_I", r20(7.85e-6),
       "#                  E                  Nu     Iflag", r20(210.0) + r20(0.3) + i10(0),
       "#                  a                   b                   n           EPS_p_max            SIG_max0",
-      r20(0.25) + r20(0.35) + r20(0.5) + r20(0) + r20(0.6),
+      r20(0.25) + r20(0.35) + r20(0.5) + r20(0) + r20(0 if keyword else 0.6),
       "#                  c           EPS_DOT_0       ICC   Fsmooth               F_cut               Chard",
-      r20(0.01) + r20(1e-3) + i10(1) + i10(1) + r20(1.0) + r20(0),
+      r20(0.01) + r20(1e-3) + i10(1) + i10(0 if keyword else 1) + r20(0 if keyword else 1.0) + r20(0),
       "#                  m              T_melt              rhoC_p                 T_r",
       r20(0) * 4]
 L += ["/PROP/SHELL/1", "Tube wall 1.2 mm",
@@ -75,7 +83,11 @@ def group(gid, title, ids):
 L += ["/INIVEL/TRA/1", "10 m/s towards the wall", "#                 Vx                  Vy                  Vz   Gnod_id   Skew_id",
       r20(-10.0) + r20(0) + r20(0) + i10(2) + i10(0)]
 L += ["/GRNOD/PART/2", "all tube nodes", i10(1)]
-L += ["/ADMAS/1/1", "50 kg at the back end", "#               MASS  grnod_ID", r20(50.0) + i10(3)]
+if keyword:
+    L += ["/ADMAS/0/1", "50 kg at the back end, on each node its share", "#               MASS  grnod_ID",
+          r20(50.0 / len(back)) + i10(3)]
+else:
+    L += ["/ADMAS/1/1", "50 kg at the back end", "#               MASS  grnod_ID", r20(50.0) + i10(3)]
 L += group(3, "back end", back)
 L += ["/RWALL/PLANE/1", "Rigid wall at x = -1", "#  node_ID     Slide grnod_ID1 grnod_ID2", i10(0) + i10(0) + i10(4) + i10(0),
       "#           D_search                fric            Diameter                ffac       ifq", r20(0) * 4 + i10(0),
@@ -102,3 +114,32 @@ with open(os.path.join(out, f"{name}_0000.rad"), "w") as f:
 with open(os.path.join(out, f"{name}_0001.rad"), "w") as f:
     f.write("\n".join(["#RADIOSS ENGINE", f"/RUN/{name}/1", f"{tend:>20.6g}", "/DT", "0.9 0.0",
                        "/PRINT/-100/55", "/ANIM/DT", "0.0 1.0", "/TFILE/4", "0.05", "/PARITH/ON"]) + "\n")
+
+if keyword:
+    # The same crash as an LS-DYNA keyword deck (units kg, mm, ms as above).
+    k8 = lambda v: f"{v:>8d}"
+    k10 = lambda v: f"{v:>10d}"
+    f10 = lambda v: f"{v:>10.6g}"
+    f16 = lambda v: f"{v:>16.9g}"
+    slsfac, bulk, e, t = 0.1, 210.0 / (3 * (1 - 2 * 0.3)), 210.0, 1.2
+    sf = 0.5 * e * t / (slsfac * bulk * h * h / (h * 2 ** 0.5))  # TYPE7's 0.5·E·t on h × h squares
+    K = ["*KEYWORD", f"$ {name}: the square tube crash of {name}_0000.rad, written by decks/make_tube.py",
+         "*TITLE", f"Square tube {nw}x{nl} per side into a rigid wall (keyword twin)",
+         "*CONTROL_TERMINATION", f10(tend), "*CONTROL_TIMESTEP", f10(0) + f10(0.9),
+         "*DATABASE_BINARY_D3PLOT", f10(1.0), "*CONTROL_CONTACT", f10(slsfac),
+         "*PART", "Tube", k10(1) + k10(1) + k10(1),
+         "*SECTION_SHELL", k10(1) + k10(2) + f"{5 / 6:>10.9f}"[1:] + k10(3), f10(t) * 4,
+         "*MAT_JOHNSON_COOK", "$     MID        RO         G         E        PR",
+         k10(1) + f10(7.85e-6) + f10(0) + f10(e) + f10(0.3),
+         "$       A         B         N         C         M        TM        TR      EPSO",
+         f10(0.25) + f10(0.35) + f10(0.5) + f10(0.01) + f10(0) + f10(0) + f10(0) + f10(1e-3), f10(0)]
+    K += ["*NODE"] + [k8(n) + f16(x) + f16(y) + f16(z) for (n, x, y, z) in nodes]
+    K += ["*ELEMENT_SHELL"] + [k8(e_) + k8(1) + k8(a) + k8(b) + k8(c) + k8(d) for (e_, a, b, c, d) in shells]
+    K += ["*INITIAL_VELOCITY_GENERATION", k10(1) + k10(2) + f10(0) + f10(-10.0) + f10(0) + f10(0), f10(0)]
+    K += ["*ELEMENT_MASS"] + [k8(i + 1) + k8(n) + f16(50.0 / len(back)) for i, n in enumerate(back)]
+    K += ["*RIGIDWALL_PLANAR", k10(0), f10(-1.0) + f10(0) + f10(0) + f10(0) + f10(0) + f10(0)]
+    K += ["*CONTACT_AUTOMATIC_SINGLE_SURFACE_ID", k10(1) + "Tube self-contact", k10(1) + k10(0) + k10(3),
+          f10(0.2) + f10(0) + f10(0) + f10(0) + f10(5.0), f"{sf:>10.7f}" * 2]
+    K += ["*END"]
+    with open(os.path.join(out, f"{name}.k"), "w") as f:
+        f.write("\n".join(K) + "\n")

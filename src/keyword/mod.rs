@@ -122,6 +122,8 @@ const TRANSLATORS: &[(&str, Translate)] = &[
     ("MAT_001", materials::elastic),
     ("MAT_PLASTIC_KINEMATIC", materials::plastic_kinematic),
     ("MAT_003", materials::plastic_kinematic),
+    ("MAT_JOHNSON_COOK", materials::johnson_cook),
+    ("MAT_015", materials::johnson_cook),
     ("SET_NODE_LIST", conditions::node_set),
     ("SET_NODE", conditions::node_set),
     ("SET_PART_LIST", conditions::part_set),
