@@ -1,6 +1,6 @@
-//! `*MAT_ELASTIC` (MAT_001), `*MAT_PLASTIC_KINEMATIC` (MAT_003) and
-//! `*MAT_JOHNSON_COOK` (MAT_015) → the material of the same id (keyword
-//! manual volume II).
+//! `*MAT_ELASTIC` (MAT_001), `*MAT_PLASTIC_KINEMATIC` (MAT_003),
+//! `*MAT_JOHNSON_COOK` (MAT_015) and `*MAT_PIECEWISE_LINEAR_PLASTICITY`
+//! (MAT_024) → the material of the same id (keyword manual volume II).
 //!
 //! MAT_003 is bilinear plasticity with Cowper-Symonds rate scaling:
 //! σ_y = (SIGY + E_p·ε_p)·(1 + (ε̇/C)^(1/P)), E_p = E·ETAN/(E − ETAN), with
@@ -13,7 +13,10 @@ use super::card::Cards;
 use super::sections::title;
 use super::source::Block;
 use super::Ctx;
-use crate::model::{CowperSymonds, InputResult, JohnsonCook, MaterialLaw, MaterialSpec, NO_LIMIT};
+use crate::model::{
+    CowperSymonds, InputResult, JohnsonCook, MaterialLaw, MaterialSpec, RateCurve,
+    TabulatedPlasticity, NO_LIMIT,
+};
 
 /// MID RO E PR DA DB K.
 pub fn elastic(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
@@ -83,24 +86,14 @@ pub fn plastic_kinematic(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputRe
             ));
         }
         let law = MaterialLaw::CowperSymonds(CowperSymonds {
-            a: sigy,
-            b: e * etan / (e - etan),
-            n: 1.0,
             chard: 1.0 - beta,
-            sig_max0: NO_LIMIT,
             c: src,
             p: if src == 0.0 { 1.0 } else { srp },
-            icc: 1,
-            fsmooth: 0,
-            f_cut: NO_LIMIT,
             // VP 0: the rate of the total strain scales the yield stress;
             // VP 1: viscoplastic, the plastic strain rate.
             vp: if vp == 1.0 { 1 } else { 2 },
             eps_p_max: if fs > 0.0 { fs } else { NO_LIMIT },
-            eps_t1: NO_LIMIT,
-            eps_t2: NO_LIMIT,
-            fct_idy: 0,
-            fscale_y: 1.0,
+            ..bilinear(sigy, e * etan / (e - etan))
         });
         ctx.deck
             .materials
@@ -251,4 +244,142 @@ pub fn johnson_cook(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<
             .push(material(id, title, rho, e, nu, law, c.loc()));
     }
     Ok(())
+}
+
+/// `*MAT_PIECEWISE_LINEAR_PLASTICITY` (MAT_024): card 1 MID RO E PR SIGY
+/// ETAN FAIL TDEL, card 2 C P LCSS LCSR VP, cards 3–4 EPS1–8 and ES1–8.
+/// The yield stress against the effective plastic strain is the curve
+/// LCSS, else the points (EPSi, ESi), which become /MAT/LAW36 with that one
+/// curve (reference guide /MAT/LAW36: σ_y = f(ε_p), extended with its last
+/// slope); without either it is bilinear, SIGY + E·ETAN/(E − ETAN)·ε_p,
+/// with Cowper-Symonds rate scaling (C, P): /MAT/LAW44 with n = 1, as
+/// MAT_003. FAIL (> 0) is the plastic strain at failure. A rate curve
+/// (LCSR), Cowper-Symonds on a curve, a table LCSS, FAIL < 0 and TDEL are
+/// refused by name.
+pub fn piecewise_linear(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
+    let kw = format!("*{}", b.name);
+    while cards.remaining() > 0 {
+        let title = title(b, cards)?;
+        let std = cards.standard();
+        let c = cards.next(std.clone(), "card 1: MID RO E PR SIGY ETAN FAIL TDEL")?;
+        let (id, rho, e, nu) = common(&c)?;
+        let (sigy, etan) = (c.real(4, "SIGY", 0.0)?, c.real(5, "ETAN", 0.0)?);
+        let fail = c.real(6, "FAIL", 0.0)?;
+        if fail < 0.0 {
+            ctx.refuse(
+                &c.loc(),
+                &kw,
+                format!("FAIL < 0 (a user failure subroutine, material {id})"),
+            );
+        }
+        if c.real(7, "TDEL", 0.0)? != 0.0 {
+            ctx.refuse(&c.loc(), &kw, format!("field TDEL (material {id})"));
+        }
+        let eps_p_max = if fail > 0.0 { fail } else { NO_LIMIT };
+        let c2 = cards.next(std.clone(), "card 2: C P LCSS LCSR VP")?;
+        let (rc, rp) = (c2.real(0, "C", 0.0)?, c2.real(1, "P", 0.0)?);
+        let lcss = c2.id_opt(2, "LCSS")?;
+        if c2.id_opt(3, "LCSR")? != 0 {
+            ctx.refuse(&c2.loc(), &kw, format!("field LCSR (material {id})"));
+        }
+        let vp = c2.real(4, "VP", 0.0)?;
+        let (c3, c4) = (cards.next_opt(std.clone()), cards.next_opt(std));
+        let mut points = Vec::new();
+        if let (Some(c3), Some(c4)) = (&c3, &c4) {
+            for i in 0..8 {
+                let (x, y) = (c3.real(i, "EPS", 0.0)?, c4.real(i, "ES", 0.0)?);
+                if (x != 0.0 || y != 0.0) && points.last().is_some_and(|&(p, _)| x <= p) {
+                    return Err(c3.err(
+                        &format!("EPS{}", i + 1),
+                        format!("{x}: expected increasing plastic strains"),
+                    ));
+                }
+                if y > 0.0 {
+                    points.push((x, y));
+                }
+            }
+        }
+        let law = if lcss == 0 && points.is_empty() {
+            if sigy <= 0.0 || !(0.0..e).contains(&etan) {
+                return Err(c.err("SIGY, ETAN", format!("SIGY {sigy}, ETAN {etan}: without LCSS or EPS/ES, expected SIGY > 0 and 0 <= ETAN < E")));
+            }
+            MaterialLaw::CowperSymonds(CowperSymonds {
+                c: rc,
+                p: if rc == 0.0 { 1.0 } else { rp },
+                vp: if vp == 1.0 { 1 } else { 2 },
+                eps_p_max,
+                ..bilinear(sigy, e * etan / (e - etan))
+            })
+        } else {
+            if rc != 0.0 || rp != 0.0 {
+                ctx.refuse(
+                    &c2.loc(),
+                    &kw,
+                    format!("C and P with a yield curve (material {id})"),
+                );
+            }
+            let fct = if lcss != 0 {
+                lcss
+            } else {
+                let f = ctx.own_id();
+                let (x, y) = points.into_iter().unzip();
+                ctx.deck.functions.push(crate::model::Function {
+                    id: f,
+                    title: format!("{kw} {id}: EPS/ES"),
+                    x,
+                    y,
+                    loc: c2.loc(),
+                });
+                f
+            };
+            MaterialLaw::Tabulated(TabulatedPlasticity {
+                eps_p_max,
+                eps_t: NO_LIMIT,
+                eps_m: NO_LIMIT,
+                eps_f: NO_LIMIT,
+                fsmooth: 0,
+                chard: 0.0,
+                f_cut: 0.0,
+                vp: if vp == 1.0 { 1 } else { 2 },
+                fct_p: 0,
+                fscale_p: 1.0,
+                fct_e: 0,
+                e_inf: 0.0,
+                ce: 0.0,
+                curves: vec![RateCurve {
+                    fct,
+                    fscale: 1.0,
+                    eps_dot: 0.0,
+                    x: Vec::new(),
+                    y: Vec::new(),
+                }],
+            })
+        };
+        ctx.deck
+            .materials
+            .push(material(id, title, rho, e, nu, law, c.loc()));
+    }
+    Ok(())
+}
+
+/// σ_y = a + b·ε_p, isotropic, no rate, no failure (LAW44's fields).
+fn bilinear(a: f64, b: f64) -> CowperSymonds {
+    CowperSymonds {
+        a,
+        b,
+        n: 1.0,
+        chard: 0.0,
+        sig_max0: NO_LIMIT,
+        c: 0.0,
+        p: 1.0,
+        icc: 1,
+        fsmooth: 0,
+        f_cut: NO_LIMIT,
+        vp: 2,
+        eps_p_max: NO_LIMIT,
+        eps_t1: NO_LIMIT,
+        eps_t2: NO_LIMIT,
+        fct_idy: 0,
+        fscale_y: 1.0,
+    }
 }

@@ -124,6 +124,11 @@ const TRANSLATORS: &[(&str, Translate)] = &[
     ("MAT_003", materials::plastic_kinematic),
     ("MAT_JOHNSON_COOK", materials::johnson_cook),
     ("MAT_015", materials::johnson_cook),
+    (
+        "MAT_PIECEWISE_LINEAR_PLASTICITY",
+        materials::piecewise_linear,
+    ),
+    ("MAT_024", materials::piecewise_linear),
     ("SET_NODE_LIST", conditions::node_set),
     ("SET_NODE", conditions::node_set),
     ("SET_PART_LIST", conditions::part_set),
@@ -263,9 +268,10 @@ fn parameters(blocks: &[Block]) -> InputResult<Parameters> {
                 if name.is_empty() {
                     continue;
                 }
-                let (ty, rest) = name.split_at(1);
-                let rest = rest.trim();
-                if !matches!(ty.to_ascii_uppercase().as_str(), "R" | "I" | "C") || rest.is_empty() {
+                let mut chars = name.chars();
+                let ty = chars.next().unwrap_or(' ').to_ascii_uppercase();
+                let rest = chars.as_str().trim();
+                if !matches!(ty, 'R' | 'I' | 'C') || rest.is_empty() {
                     return Err(c.err(
                         "PRMR",
                         format!("'{name}': expected a type letter R, I or C followed by the name"),

@@ -48,6 +48,21 @@ pub fn check(ctx: &Ctx) -> InputResult<()> {
             element(ctx, c, kw, shell, &nodes)?;
         }
     }
+    for m in &d.materials {
+        let crate::model::MaterialLaw::Tabulated(t) = &m.law else {
+            continue;
+        };
+        for c in &t.curves {
+            if !d.functions.iter().any(|f| f.id == c.fct) {
+                return Err(e(
+                    &m.loc,
+                    "*MAT_PIECEWISE_LINEAR_PLASTICITY",
+                    "LCSS",
+                    missing(ctx, "curve", c.fct, "*DEFINE_CURVE"),
+                ));
+            }
+        }
+    }
     for b in &d.bcs {
         if !groups.contains(&b.grnod) {
             return Err(e(
