@@ -99,6 +99,17 @@ pub fn dyna_soft0(f: f64, el: &ElementSize) -> f64 {
     }
 }
 
+/// LS-DYNA's soft constraint stiffness (SOFT = 1; theory manual "Soft
+/// Constraint Penalty Formulation"): k = 0.5·SOFSCL·m*/Δt², the spring that
+/// keeps the mass m* stable at the step Δt with a margin (its own step
+/// √(2m*/k) = Δt·√(4/SOFSCL)); 0 before the first step.
+pub fn soft_constraint(sofscl: f64, m: f64, dt: f64) -> f64 {
+    if dt <= 0.0 {
+        return 0.0;
+    }
+    0.5 * sofscl * m / (dt * dt)
+}
+
 /// TYPE7 elastic reaction and tangent stiffness at penetration `p` in gap `g`:
 /// F = K0·P·Gap/(Gap − P) (EQ. 8.8.9.1, 8.8.11.1), Kt = K0·Gap²/(Gap − P)² (EQ. 8.8.9.2).
 /// `p` must be below `g` (the caller deactivates a node at the mid-plane).

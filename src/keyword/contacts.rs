@@ -1,19 +1,23 @@
 //! `*CONTACT_AUTOMATIC_SINGLE_SURFACE` and `*CONTACT_AUTOMATIC_NODES_TO_SURFACE`
-//! with SOFT = 0, and `*CONTROL_CONTACT`'s SLSFAC (keyword manual volume I,
+//! with SOFT = 0 or 1, and `*CONTROL_CONTACT`'s SLSFAC (keyword manual volume I,
 //! "*CONTACT", "*CONTROL_CONTACT").
 //!
 //! They run on the TYPE7 kernel (node to segment, both sides of a shell,
-//! edges and corners; the reference guide maps these keywords to a
-//! Radioss penalty interface too) with LS-DYNA's own penalty stiffness
-//! (`model::contact::DynaPenalty`: SLSFAC·SFS or SFM times K·A/d_max on
-//! shells, K·A²/V on solids, the smaller of the pair's two) and its
-//! contact thickness: half the shell thickness on each side (TYPE7's
-//! variable gap, Igap 1). Coulomb friction FS (DC 0); the damper VDC, in
-//! percent of critical, is TYPE7's VISs. What differs from LS-DYNA and is
-//! TYPE7's: the force stiffens as the penetration nears the gap
-//! (K·g/(g − p), EQ. 8.8.9.1: the same to 1% below p = 1% of g) and the
-//! quadratic damper of a fast approach. Other SOFT values, SST/MST,
-//! SFST/SFMT, DC, VC, box and set types not read are refused by name.
+//! edges and corners, its search; the reference guide maps these keywords
+//! to a Radioss penalty interface too) with LS-DYNA's own penalty:
+//! - stiffness (`model::contact::DynaPenalty`): SLSFAC·SFS or SFM times
+//!   K·A/d_max on shells, K·A²/V on solids, the smaller of the pair's two;
+//!   SOFT = 1 takes the larger of that and the soft constraint
+//!   0.5·SOFSCL·m*/Δt² (m* the smaller of the pair's node masses, Δt the
+//!   solution step; seed 003 and the theory manual's soft constraint);
+//! - force F = K·P, linear to and through the surface (no TYPE7 stiffening
+//!   toward the gap, no quadratic damper), and the damper VDC % of
+//!   critical, VDC/100·2·√(K·M);
+//! - contact thickness half the shell thickness on each side (TYPE7's
+//!   variable gap, Igap 1); Coulomb friction FS (DC 0).
+//!
+//! Other SOFT values, SST/MST, SFST/SFMT, DC, VC, box and set types not read
+//! are refused by name.
 
 use super::card::Cards;
 use super::source::Block;
@@ -115,7 +119,7 @@ fn contact(b: &Block, cards: &mut Cards, ctx: &mut Ctx, form: Form) -> InputResu
             ctx.refuse(&c3.loc(), &kw, format!("field {name}"));
         }
     }
-    optional_cards(cards, ctx, &kw)?;
+    let (soft, sofscl) = optional_cards(cards, ctx, &kw)?;
     let surf = match form {
         Form::SingleSurface => parts_surface(ctx, ssid, sstyp, &loc, &kw, "SSID")?,
         Form::NodesToSurface => parts_surface(ctx, msid, mstyp, &loc, &kw, "MSID")?,
@@ -138,6 +142,8 @@ fn contact(b: &Block, cards: &mut Cards, ctx: &mut Ctx, form: Form) -> InputResu
             slsfac: ctx.slsfac,
             sfs,
             sfm,
+            soft,
+            sofscl,
         },
     );
     ctx.deck.interfaces.push(InterfaceSpec {
@@ -155,12 +161,27 @@ fn contact(b: &Block, cards: &mut Cards, ctx: &mut Ctx, form: Form) -> InputResu
 /// Optional cards A (SOFT SOFSCL LCIDAB MAXPAR SBOPT DEPTH BSORT FRCFRQ)
 /// and B (PENMAX THKOPT SHLTHK SNLOG ISYM I2D3D SLDTHK SLDSTF): SOFT 0 is
 /// computed; the options that change SOFT 0's answer are refused.
-fn optional_cards(cards: &mut Cards, ctx: &mut Ctx, kw: &str) -> InputResult<()> {
+fn optional_cards(cards: &mut Cards, ctx: &mut Ctx, kw: &str) -> InputResult<(i64, f64)> {
     let std = cards.standard();
+    let mut soft = (0, 0.1);
     if let Some(a) = cards.next_opt(std.clone()) {
-        let soft = a.int(0, "SOFT", 0)?;
-        if soft != 0 {
-            ctx.refuse(&a.loc(), kw, format!("SOFT {soft} (SOFT 0 is computed)"));
+        soft.0 = a.int(0, "SOFT", 0)?;
+        if !(0..=1).contains(&soft.0) {
+            ctx.refuse(
+                &a.loc(),
+                kw,
+                format!("SOFT {} (SOFT 0 and 1 are computed)", soft.0),
+            );
+        }
+        let s = a.real(1, "SOFSCL", 0.0)?;
+        if s < 0.0 {
+            return Err(a.err(
+                "SOFSCL",
+                format!("{s}: expected a scale factor >= 0 (0: 0.1)"),
+            ));
+        }
+        if s > 0.0 {
+            soft.1 = s;
         }
         if a.int(2, "LCIDAB", 0)? != 0 {
             ctx.refuse(&a.loc(), kw, "field LCIDAB");
@@ -183,7 +204,7 @@ fn optional_cards(cards: &mut Cards, ctx: &mut Ctx, kw: &str) -> InputResult<()>
         let c = cards.next_opt(cards.standard()).unwrap();
         ctx.refuse(&c.loc(), kw, "optional cards C and beyond");
     }
-    Ok(())
+    Ok(soft)
 }
 
 /// The TYPE7 options of a SOFT = 0 contact: variable gap (half thicknesses),

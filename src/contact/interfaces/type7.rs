@@ -60,6 +60,27 @@ pub struct Type7 {
     pub dyna: Option<crate::model::contact::DynaPenalty>,
 }
 
+impl Type7 {
+    /// A keyword deck's SOFT = 1 contact: the larger of `k0` (SOFT = 0's)
+    /// and the soft constraint 0.5·SOFSCL·m*/Δt², m* the smaller of the
+    /// secondary node's mass and the main nodes' (their initial masses, the
+    /// same on every rank), Δt this cycle's step.
+    fn soft_constraint(&self, c: &PairContext, k0: f64) -> f64 {
+        match self.dyna {
+            Some(d) if d.soft == 1 => {
+                let m = c
+                    .main
+                    .nodes()
+                    .iter()
+                    .map(|&n| c.cnode_mass[n as usize])
+                    .fold(c.ms, f64::min);
+                k0.max(stiffness::soft_constraint(d.sofscl, m, c.dt))
+            }
+            _ => k0,
+        }
+    }
+}
+
 impl InterfaceType for Type7 {
     fn type_number(&self) -> u32 {
         7
@@ -210,7 +231,7 @@ impl InterfaceType for Type7 {
             Ok(i) => ns.gap0[i].1,
             Err(_) => nominal,
         };
-        let k0 = self.pair_stiffness(it, p, k, m);
+        let k0 = self.soft_constraint(c, self.pair_stiffness(it, p, k, m));
         let inp = Pair {
             xs: c.xs,
             vs: c.vs,
@@ -224,6 +245,7 @@ impl InterfaceType for Type7 {
             friction: &it.friction,
             area: p.seg_area[m],
             dt: c.dt,
+            linear: self.dyna.is_some(),
         };
         let f = if st.tie.is_some() {
             tied(&inp, st, self.itied)
@@ -289,6 +311,11 @@ pub struct Pair<'a> {
     /// Area of the main segment, for the contact pressure of the friction laws.
     pub area: f64,
     pub dt: f64,
+    /// LS-DYNA's penalty law (a keyword deck's contact): F = K0·P, linear to
+    /// and through the contact surface, and a damper VISs·2·√(K0·M) (VDC as
+    /// a fraction of critical), instead of EQ. 8.8.9.1's K0·Gap/(Gap − P)
+    /// and its quadratic damper.
+    pub linear: bool,
 }
 
 /// The pair's force, or `None` when the node is outside the gap (or at the
@@ -312,16 +339,24 @@ pub fn pair(p: &Pair, st: &mut PairState) -> Option<PairForce> {
     let s = geo::dot(geo::sub(p.xs, pr.point), pr.normal);
     st.side = if s >= 0.0 { 1 } else { -1 };
     let pen = p.gap - pr.dist;
-    let (f_el, kt) = stiffness::type7_reaction(p.k0, p.gap, pen);
+    let (f_el, kt) = if p.linear {
+        (p.k0 * pen, p.k0)
+    } else {
+        stiffness::type7_reaction(p.k0, p.gap, pen)
+    };
     let vc = geo::interpolate(&pr.shape, p.vm);
     let vrel = geo::sub(p.vs, vc);
     // Penetration rate: the node closing on the contact point.
     let dpdt = -geo::dot(vrel, pr.dir);
-    let c = damping(p.viss, p.k0, p.gap, pen, p.ms, dpdt);
+    let c = if p.linear {
+        p.viss * 2.0 * (p.k0 * p.ms).sqrt()
+    } else {
+        damping(p.viss, p.k0, p.gap, pen, p.ms, dpdt)
+    };
     // Signed: the damper may pull while the node leaves (EQ. 8.8.9.1).
     let f_n = f_el + c * dpdt;
     // The stiffness the dampers see: Kt closing in, Ks going out.
-    let kd = if dpdt > 0.0 {
+    let kd = if dpdt > 0.0 || p.linear {
         kt
     } else {
         p.k0 * p.gap / (p.gap - pen)
@@ -460,7 +495,33 @@ mod tests {
             friction: law,
             area: 1.0,
             dt: 1e-3,
+            linear: false,
         }
+    }
+
+    /// A keyword deck's contact: F = K0·P (no stiffening toward the gap),
+    /// the nodal step sees K0, the damper VISs·2·√(K0·M); a node past the
+    /// surface keeps being pushed by K0·P (LS-DYNA's penalty law).
+    #[test]
+    fn the_linear_penalty_law_of_a_keyword_contact() {
+        let xm = plate();
+        let vm = [[0.0; 3]; 4];
+        let law = FrictionLaw::none();
+        let mut st = PairState::default();
+        for z in [0.09, 0.05, 0.001] {
+            let mut inp = input([0.3, 0.3, z], [0.0; 3], &xm, &vm, &law);
+            inp.linear = true;
+            let f = pair(&inp, &mut st).unwrap();
+            let pen = 0.1 - z;
+            assert!((f.fs[2] - 1000.0 * pen).abs() < 1e-9, "{z}: {:?}", f.fs);
+            assert!((f.kt - 1000.0).abs() < 1e-9);
+        }
+        let mut inp = input([0.3, 0.3, 0.05], [0.0, 0.0, -2.0], &xm, &vm, &law);
+        inp.linear = true;
+        inp.viss = 0.05;
+        let f = pair(&inp, &mut st).unwrap();
+        let c = 0.05 * 2.0 * (1000.0f64 * 1.0).sqrt();
+        assert!((f.fs[2] - (1000.0 * 0.05 + c * 2.0)).abs() < 1e-9, "{:?}", f.fs);
     }
 
     #[test]

@@ -153,6 +153,14 @@ pub struct DynaPenalty {
     /// SFS, SFM (*CONTACT card 3, default 1).
     pub sfs: f64,
     pub sfm: f64,
+    /// SOFT (0 or 1) and SOFSCL (optional card A, default 0.1): SOFT = 1
+    /// takes the larger of the SOFT = 0 stiffness and the soft constraint
+    /// SOFSCL·0.5·m*/Δt² (m* the smaller of the secondary node's and the
+    /// main nodes' masses, Δt the solution step).
+    #[serde(default)]
+    pub soft: i64,
+    #[serde(default)]
+    pub sofscl: f64,
 }
 
 /// TYPE7 adaptive-meshing card (Iadm = 2).
