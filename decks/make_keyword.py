@@ -11,7 +11,7 @@ free steel block of 2 x 2 x 4 bricks flying at 2 m/s along -x. Elastic
 *PARAMETER, its block through an *INCLUDE, and fixes one node by *NODE's TC/RC
 fields.
 
-    python3 decks/make_keyword.py OUT_DIR NAME [TEND [contact]]
+    python3 decks/make_keyword.py OUT_DIR NAME [TEND [contact|loads]]
 
 "contact": the plate lies still and the block falls on it at 2 m/s from 1.5 mm
 above its contact thickness, its nodes in contact with the plate through
@@ -19,6 +19,11 @@ above its contact thickness, its nodes in contact with the plate through
 *RIGIDWALL_PLANAR 3 mm below the plate (every node) and an *ELEMENT_MASS of
 0.01 kg on the block's first node; keyword deck only (its LS-DYNA penalty law
 has no Radioss twin).
+
+"loads": the twin with, in both decks, a ramp curve (*DEFINE_CURVE / /FUNCT),
+the plate's free edge driven up by *BOUNDARY_PRESCRIBED_MOTION_SET (/IMPVEL),
+a point load on the plate (*LOAD_NODE_POINT / /CLOAD) and gravity
+(*LOAD_BODY_Z, positive down as LS-DYNA's / /GRAV with the opposite sign).
 """
 import os
 import sys
@@ -26,6 +31,7 @@ import sys
 out, name = sys.argv[1], sys.argv[2]
 tend = float(sys.argv[3]) if len(sys.argv) > 3 else 0.3
 contact = len(sys.argv) > 4 and sys.argv[4] == "contact"
+loads = len(sys.argv) > 4 and sys.argv[4] == "loads"
 nx, ny, h, t = 8, 3, 5.0, 1.0
 rho, e, nu = 7.85e-6, 210.0, 0.3
 
@@ -101,6 +107,15 @@ if contact:
           "*RIGIDWALL_PLANAR", "$    NSID", k10(0), "$      XT        YT        ZT        XH        YH        ZH",
           f10(0) + f10(0) + f10(-3.0) + f10(0) + f10(0) + f10(-2.0),
           "*ELEMENT_MASS", "$    EID     NID            MASS", k8(1) + k8(1001) + f16(0.01)]
+free_edge = [plate[(nx, j)][0] for j in range(ny + 1)]
+mid_node = plate[(nx // 2, 1)][0]
+if loads:
+    K += ["*DEFINE_CURVE", k10(1), f"{0.0:>20}{0.0:>20}", f"{1.0:>20}{1.0:>20}",
+          "*SET_NODE_LIST", k10(2)] + ["".join(k10(v) for v in free_edge)]
+    K += ["*BOUNDARY_PRESCRIBED_MOTION_SET", "$    NSID       DOF       VAD      LCID        SF",
+          k10(2) + k10(3) + k10(0) + k10(1) + f10(2.0),
+          "*LOAD_NODE_POINT", "$     NID       DOF      LCID        SF", k10(mid_node) + k10(3) + k10(1) + f10(-0.001),
+          "*LOAD_BODY_Z", "$    LCID        SF", k10(1) + f10(9.81e-3)]
 K += ["*INCLUDE", name + "_block.k", "*END"]
 B = ["*KEYWORD", "$ the block's mesh, included by " + name + ".k", "*NODE +"]
 for (nid, x, y, z) in block.values():
@@ -144,6 +159,14 @@ if contact:
           r20(0) + r20(0) + r20(-3.0), r20(0) + r20(0) + r20(-2.0),
           "/GRNOD/NODE/9", "mass node", i10(1001),
           "/ADMAS/0/1", "", r20(0.01) + i10(9)]
+if loads:
+    R += ["/FUNCT/1", "ramp", r20(0.0) + r20(0.0), r20(1.0) + r20(1.0),
+          "/GRNOD/NODE/10", "free edge", "".join(i10(v) for v in free_edge),
+          "/IMPVEL/1", "free edge up", i10(1) + "Z".rjust(10) + i10(0) + i10(0) + i10(10) + i10(0) + i10(0),
+          r20(1.0) + r20(2.0) + r20(0) + r20(0),
+          "/GRNOD/NODE/11", "loaded node", i10(mid_node),
+          "/CLOAD/1", "point load", i10(1) + "Z".rjust(10) + i10(0) + i10(0) + i10(11) + " " * 10 + r20(1.0) + r20(-0.001),
+          "/GRAV/1", "gravity", i10(1) + "Z".rjust(10) + i10(0) + i10(0) + i10(0) + " " * 10 + r20(1.0) + r20(-9.81e-3)]
 R += ["/END"]
 E = ["#RADIOSS ENGINE", f"/RUN/{name}/1", r20(tend), "/DT", "0.9 0.0", "/ANIM/DT", f"0.0 {tend / 3!r}"]
 

@@ -70,6 +70,18 @@ fn constraint(code: i64) -> Option<[bool; 3]> {
     })
 }
 
+/// An element card of nodes `nodes` (ids) in part `part`.
+fn element(id: u64, part: u64, nodes: Vec<u64>, loc: crate::model::Loc) -> ElementCard {
+    ElementCard {
+        id,
+        part,
+        nodes,
+        phi: 0.0,
+        thick: 0.0,
+        loc,
+    }
+}
+
 /// Element fields: 8 columns (20 in the long format).
 fn element_widths(long: bool) -> Vec<usize> {
     vec![if long { 20 } else { 8 }; 10]
@@ -97,14 +109,7 @@ pub fn shell(_b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
                 ));
             }
         }
-        let card = |nodes: Vec<u64>| ElementCard {
-            id,
-            part,
-            nodes,
-            phi: 0.0,
-            thick: 0.0,
-            loc: c.loc(),
-        };
+        let card = |nodes: Vec<u64>| element(id, part, nodes, c.loc());
         if n4 == 0 || n4 == n[2] {
             ctx.deck.elements.shell3.push(card(n));
         } else {
@@ -137,14 +142,7 @@ pub fn solid(_b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
                 n.push(c.id(2 + i, name)?);
             }
         }
-        let card = |nodes: Vec<u64>| ElementCard {
-            id,
-            part,
-            nodes,
-            phi: 0.0,
-            thick: 0.0,
-            loc: c.loc(),
-        };
+        let card = |nodes: Vec<u64>| element(id, part, nodes, c.loc());
         if n[4..].iter().all(|&v| v == n[3]) {
             n.truncate(4);
             ctx.deck.elements.tetra4.push(card(n));

@@ -20,6 +20,7 @@ mod card;
 mod conditions;
 mod contacts;
 mod controls;
+mod loads;
 mod materials;
 mod mesh;
 mod references;
@@ -153,6 +154,13 @@ const TRANSLATORS: &[(&str, Translate)] = &[
     ("RIGIDWALL_PLANAR_MOVING", walls_masses::planar),
     ("RIGIDWALL_PLANAR_FINITE", walls_masses::planar),
     ("ELEMENT_MASS", walls_masses::mass),
+    ("BOUNDARY_PRESCRIBED_MOTION_NODE", loads::prescribed_motion),
+    ("BOUNDARY_PRESCRIBED_MOTION_SET", loads::prescribed_motion),
+    ("LOAD_NODE_POINT", loads::node_load),
+    ("LOAD_NODE_SET", loads::node_load),
+    ("LOAD_BODY_X", loads::body_load),
+    ("LOAD_BODY_Y", loads::body_load),
+    ("LOAD_BODY_Z", loads::body_load),
     ("CONTROL_TERMINATION", controls::termination),
     ("CONTROL_TIMESTEP", controls::timestep),
     ("DATABASE_BINARY_D3PLOT", controls::d3plot),

@@ -73,6 +73,28 @@ pub fn check(ctx: &Ctx) -> InputResult<()> {
             ));
         }
     }
+    let motions = d.imposed_velocities.iter().chain(&d.imposed_displacements);
+    let groups_of = motions
+        .map(|m| (m.grnod, m.fct, &m.loc, "*BOUNDARY_PRESCRIBED_MOTION"))
+        .chain(
+            d.concentrated_loads
+                .iter()
+                .map(|l| (l.grnod, l.fct, &l.loc, "*LOAD_NODE")),
+        )
+        .chain(d.gravity.iter().map(|g| (0, g.fct, &g.loc, "*LOAD_BODY")));
+    for (g, f, loc, kw) in groups_of {
+        if g != 0 && !groups.contains(&g) {
+            return Err(e(loc, kw, "NSID", format!("node set {g} is not defined")));
+        }
+        if !d.functions.iter().any(|c| c.id == f) {
+            return Err(e(
+                loc,
+                kw,
+                "LCID",
+                missing(ctx, "curve", f, "*DEFINE_CURVE"),
+            ));
+        }
+    }
     for v in &d.initial_velocities {
         if !groups.contains(&v.grnod) {
             return Err(e(
