@@ -644,3 +644,68 @@ fn prescribed_motion_point_load_and_gravity_run_as_their_radioss_twin() {
         "block v_z {block} vs {want}"
     );
 }
+
+/// A contact's main side as a *SET_SEGMENT (MSTYP 0) of the plate's shells,
+/// in their own orientation, runs as the part (MSTYP 3) does: the same
+/// energies at every cycle to round-off; an undefined segment set is an
+/// error naming the contact and MSID.
+#[test]
+fn a_segment_set_is_a_contact_surface() {
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("decks/keyword_contact");
+    let text = std::fs::read_to_string(dir.join("keyword_contact.k")).unwrap();
+    let mut segs = String::from("*SET_SEGMENT\n        99\n");
+    let mut in_shells = false;
+    for l in text.lines() {
+        if l.starts_with('*') {
+            in_shells = l == "*ELEMENT_SHELL";
+            continue;
+        }
+        if in_shells && !l.starts_with('$') {
+            let f: Vec<u64> = l.split_whitespace().map(|v| v.parse().unwrap()).collect();
+            segs += &f[2..6]
+                .iter()
+                .map(|n| format!("{n:>10}"))
+                .collect::<String>();
+            segs.push('\n');
+        }
+    }
+    let card1 = "         2         1         3         3";
+    assert!(text.contains(card1));
+    let with_set = text
+        .replacen(card1, "         2        99         3         0", 1)
+        .replacen("*INCLUDE", &(segs + "*INCLUDE"), 1);
+    let scratch = common::scratch("kw-segset");
+    std::fs::copy(
+        dir.join("keyword_contact_block.k"),
+        scratch.join("keyword_contact_block.k"),
+    )
+    .unwrap();
+    std::fs::write(scratch.join("seg.k"), &with_set).unwrap();
+    let (_, en_s) = run(0, &scratch.join("seg.k"), "kw-segset-run");
+    let (_, en_p) = run(0, &dir.join("keyword_contact.k"), "kw-segset-part");
+    let (a, b) = (rows(&en_s), rows(&en_p));
+    assert_eq!(a.len(), b.len());
+    for (ra, rb) in a.iter().zip(&b) {
+        for (x, y) in ra.iter().zip(rb) {
+            assert!(
+                (x - y).abs() <= 1e-9 * x.abs().max(y.abs()).max(1e-3),
+                "cycle {}: {x} vs {y}",
+                ra[1]
+            );
+        }
+    }
+    std::fs::write(
+        scratch.join("bad.k"),
+        with_set.replacen("*SET_SEGMENT\n        99", "*SET_SEGMENT\n        98", 1),
+    )
+    .unwrap();
+    let out = common::crashsim(&["check", scratch.join("bad.k").to_str().unwrap()]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains(
+            "*CONTACT_AUTOMATIC_NODES_TO_SURFACE_ID, field MSID: segment set 99 is not defined"
+        ),
+        "{err}"
+    );
+}

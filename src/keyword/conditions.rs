@@ -6,7 +6,7 @@ use super::card::{Card, Cards};
 use super::sections::title;
 use super::source::Block;
 use super::{base_name, Ctx};
-use crate::deck::{NodeGroupCard, NodeGroupKind};
+use crate::deck::{NodeGroupCard, NodeGroupKind, SegmentCard, SurfaceCard, SurfaceDef};
 use crate::model::{BoundarySpec, Function, Id, InitialVelocitySpec, InputResult};
 
 /// The ids of a list card: up to 8 fields, blanks and zeros ignored.
@@ -328,6 +328,43 @@ pub fn curve(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
         title,
         x,
         y,
+        loc: c.loc(),
+    });
+    Ok(())
+}
+
+/// `*SET_SEGMENT`: SID DA1..DA4 SOLVER, then one segment a line, N1 N2 N3
+/// N4 (N4 = N3 or blank: a triangle) and its attributes A1..A4: the
+/// surface of that id (/SURF/SEG).
+pub fn segment_set(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
+    let title = title(b, cards)?;
+    let std = cards.standard();
+    let c = cards.next(std.clone(), "the card SID DA1 DA2 DA3 DA4 SOLVER")?;
+    let id = c.id(0, "SID")?;
+    let mut segs = Vec::new();
+    while let Some(d) = cards.next_opt(std.clone()) {
+        if d.is_blank() {
+            continue;
+        }
+        let n = [d.id(0, "N1")?, d.id(1, "N2")?, d.id(2, "N3")?];
+        let n4 = d.id_opt(3, "N4")?;
+        segs.push(SegmentCard {
+            id: segs.len() as Id + 1,
+            nodes: [n[0], n[1], n[2], if n4 == 0 { n[2] } else { n4 }],
+            loc: d.loc(),
+        });
+    }
+    if segs.is_empty() {
+        return Err(c.err(
+            "N1",
+            "no segment: expected lines N1 N2 N3 N4 after this card",
+        ));
+    }
+    ctx.deck.surfaces.push(SurfaceCard {
+        id,
+        title,
+        def: SurfaceDef::Segments(segs),
+        item_locs: vec![(0, c.loc())],
         loc: c.loc(),
     });
     Ok(())

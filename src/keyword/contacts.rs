@@ -257,8 +257,8 @@ fn type7(grnod: Id, surf: Id, fs: f64, vdc: f64, bt: f64, dt: f64, dyna: DynaPen
     }
 }
 
-/// A surface of the parts a set names: type 2 (part set), 3 (part) or 5
-/// (every part, filled once the deck is read).
+/// The main surface a set names: type 0 (segment set), 2 (part set), 3
+/// (part) or 5 (every part, filled once the deck is read).
 fn parts_surface(
     ctx: &mut Ctx,
     sid: Id,
@@ -267,6 +267,12 @@ fn parts_surface(
     kw: &str,
     field: &str,
 ) -> InputResult<Id> {
+    if styp == 0 {
+        // A *SET_SEGMENT: the surface of its id (checked once the deck is read).
+        ctx.segment_sets_used
+            .push((sid, loc.clone(), kw.to_string(), field.to_string()));
+        return Ok(sid);
+    }
     let parts: Vec<i64> = match styp {
         3 => vec![sid as i64],
         2 => ctx.part_set(sid).ok_or_else(|| {
@@ -306,6 +312,16 @@ fn parts_surface(
 fn secondary_nodes(ctx: &mut Ctx, sid: Id, styp: i64, loc: &Loc, kw: &str) -> InputResult<Id> {
     match styp {
         4 => Ok(sid),
+        0 => {
+            ctx.segment_sets_used
+                .push((sid, loc.clone(), kw.to_string(), "SSID".to_string()));
+            Ok(ctx.own_group(
+                NodeGroupKind::Surf,
+                vec![sid as i64],
+                format!("{kw} segment set {sid}"),
+                loc,
+            ))
+        }
         3 => Ok(ctx.own_group(
             NodeGroupKind::Part,
             vec![sid as i64],

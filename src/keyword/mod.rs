@@ -51,6 +51,9 @@ pub(crate) struct Ctx<'a> {
     pub all_parts_surfaces: Vec<usize>,
     /// Node groups that take every part's nodes (a rigid wall's NSID 0).
     pub all_parts_groups: Vec<usize>,
+    /// Segment sets contacts name (id, where, keyword, field), checked once
+    /// the deck is read.
+    pub segment_sets_used: Vec<(Id, Loc, String, String)>,
     /// Next id of a node group made for a keyword that names nodes or
     /// parts directly (above every id a deck writes).
     next_group: Id,
@@ -133,6 +136,7 @@ const TRANSLATORS: &[(&str, Translate)] = &[
     ("SET_NODE_LIST", conditions::node_set),
     ("SET_NODE", conditions::node_set),
     ("SET_PART_LIST", conditions::part_set),
+    ("SET_SEGMENT", conditions::segment_set),
     ("SET_PART", conditions::part_set),
     ("BOUNDARY_SPC_NODE", conditions::spc_node),
     ("BOUNDARY_SPC_SET", conditions::spc_set),
@@ -220,6 +224,7 @@ pub fn read(path: &Path) -> InputResult<Deck> {
         contacts: Vec::new(),
         all_parts_surfaces: Vec::new(),
         all_parts_groups: Vec::new(),
+        segment_sets_used: Vec::new(),
         next_group: OWN_GROUPS,
     };
     for b in &src.blocks {

@@ -63,6 +63,16 @@ pub fn check(ctx: &Ctx) -> InputResult<()> {
             }
         }
     }
+    for (id, loc, kw, field) in &ctx.segment_sets_used {
+        if !d.surfaces.iter().any(|s| s.id == *id) {
+            return Err(e(
+                loc,
+                kw,
+                field,
+                missing(ctx, "segment set", *id, "*SET_SEGMENT"),
+            ));
+        }
+    }
     for b in &d.bcs {
         if !groups.contains(&b.grnod) {
             return Err(e(
