@@ -72,6 +72,16 @@ fn variant(tag: &str, from: &str, to: &str) -> PathBuf {
     dir.join("keyword_twin.k")
 }
 
+/// `check` on the twin deck with `from` replaced by `to` (`variant`): it
+/// must stop with exit 2; its message.
+fn check_fails(tag: &str, from: &str, to: &str) -> String {
+    let deck = variant(tag, from, to);
+    let out = common::crashsim(&["check", deck.to_str().unwrap()]);
+    let err = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert_eq!(out.status.code(), Some(2), "{tag} ({to:?}): {err}");
+    err
+}
+
 #[test]
 fn bad_keyword_decks_exit_2_naming_file_line_keyword_and_field() {
     // (what is changed, into what, the message's start after "FILE:")
@@ -163,10 +173,7 @@ fn bad_keyword_decks_exit_2_naming_file_line_keyword_and_field() {
         ),
     ];
     for (i, (from, to, want)) in cases.iter().enumerate() {
-        let deck = variant(&format!("kw-bad-{i}"), from, to);
-        let out = common::crashsim(&["check", deck.to_str().unwrap()]);
-        let err = String::from_utf8_lossy(&out.stderr);
-        assert_eq!(out.status.code(), Some(2), "case {i} ({to:?}): {err}");
+        let err = check_fails(&format!("kw-bad-{i}"), from, to);
         assert!(
             err.contains("keyword_twin") && err.contains(": error: "),
             "case {i}: {err}"
@@ -450,15 +457,16 @@ fn more_bad_keyword_decks_exit_2_naming_file_line_keyword_and_field() {
         (inc, "*PARAMETER\nR X              1.0\n*INCLUDE", ""),
     ];
     for (i, (from, to, want)) in cases.iter().enumerate() {
-        let deck = variant(&format!("kw-bad2-{i}"), from, to);
-        let out = common::crashsim(&["check", deck.to_str().unwrap()]);
-        let err = String::from_utf8_lossy(&out.stderr);
         if want.is_empty() {
             // A second *PARAMETER block is fine.
-            common::ok(&out, "check");
+            let deck = variant(&format!("kw-bad2-{i}"), from, to);
+            common::ok(
+                &common::crashsim(&["check", deck.to_str().unwrap()]),
+                "check",
+            );
             continue;
         }
-        assert_eq!(out.status.code(), Some(2), "case {i} ({to:?}): {err}");
+        let err = check_fails(&format!("kw-bad2-{i}"), from, to);
         assert!(
             err.contains(&format!("keyword_twin.k:{want}")),
             "case {i}: got {err}"

@@ -11,7 +11,7 @@ use super::interfaces::{
     CandidateSearch, CardCommon, InterfaceType, PassSides, SurfaceSizes, TypeOptions,
 };
 use super::stiffness::{self, ElementSize};
-use crate::model::{geometry as mgeo, Model};
+use crate::model::{geometry as mgeo, MaterialSpec, Model};
 use crate::model::{ElementKind, InterfaceKind};
 use std::collections::HashMap;
 
@@ -122,15 +122,7 @@ fn node_data(m: &Model, nodes: &[u32], ty: &dyn InterfaceType) -> HashMap<u32, (
                 continue;
             };
             let (stiff, g) = if shell {
-                let x = face_points(m, n);
-                let (area, dmax) = face_size(&x, n.len() == 3);
-                let size = ElementSize {
-                    bulk: bulk(mat),
-                    shell: true,
-                    area,
-                    dmax,
-                    volume: 0.0,
-                };
+                let size = shell_size(mat, &face_points(m, n), n.len() == 3);
                 let k = ty.element_stiffness(&size, false);
                 (
                     k.unwrap_or_else(|| stiffness::shell(mat.e, set.thick[e])),
@@ -138,13 +130,7 @@ fn node_data(m: &Model, nodes: &[u32], ty: &dyn InterfaceType) -> HashMap<u32, (
                 )
             } else {
                 let v = element_volume(m, ki, e);
-                let size = ElementSize {
-                    bulk: bulk(mat),
-                    shell: false,
-                    area: v.max(0.0).powf(2.0 / 3.0),
-                    dmax: 0.0,
-                    volume: v,
-                };
+                let size = solid_size(mat, v.max(0.0).powf(2.0 / 3.0), v);
                 let k = ty.element_stiffness(&size, false);
                 (
                     k.unwrap_or_else(|| stiffness::solid_node(bulk(mat), v)),
@@ -177,15 +163,33 @@ fn face_points(m: &Model, n: &[u32]) -> [V3; 4] {
     [x(0), x(1), x(2), x(3)]
 }
 
-/// A face's area and its longest diagonal (a triangle: its longest edge).
-fn face_size(x: &[V3; 4], tri: bool) -> (f64, f64) {
+/// A shell face of material `mat` for a type's own stiffness rule: its
+/// area and longest diagonal (a triangle: its longest edge).
+fn shell_size(mat: &MaterialSpec, x: &[V3; 4], tri: bool) -> ElementSize {
     let d = |a: usize, b: usize| geo::norm(geo::sub(x[a], x[b]));
     let dmax = if tri {
         d(0, 1).max(d(1, 2)).max(d(2, 0))
     } else {
         d(0, 2).max(d(1, 3))
     };
-    (geo::segment_area(x, tri), dmax)
+    ElementSize {
+        bulk: bulk(mat),
+        shell: true,
+        area: geo::segment_area(x, tri),
+        dmax,
+        volume: 0.0,
+    }
+}
+
+/// A solid of material `mat` and volume `volume` under a face of `area`.
+fn solid_size(mat: &MaterialSpec, area: f64, volume: f64) -> ElementSize {
+    ElementSize {
+        bulk: bulk(mat),
+        shell: false,
+        area,
+        dmax: 0.0,
+        volume,
+    }
 }
 
 /// Per-segment data from the element under it.
@@ -217,16 +221,9 @@ fn segment_data(
         .ok_or_else(|| format!("part {} under a contact segment has no material", part.id))?;
     let xs = face_points(m, seg);
     let tri = seg[3] == seg[2];
-    let (area, dmax) = face_size(&xs, tri);
     if matches!(set.kind, ElementKind::Shell4 | ElementKind::Shell3) {
         let t = set.thick[e as usize];
-        let size = ElementSize {
-            bulk: bulk(mat),
-            shell: true,
-            area,
-            dmax,
-            volume: 0.0,
-        };
+        let size = shell_size(mat, &xs, tri);
         return Ok(SegData {
             k: ty
                 .element_stiffness(&size, true)
@@ -236,14 +233,9 @@ fn segment_data(
             elem: (ki, e),
         });
     }
+    let area = geo::segment_area(&xs, tri);
     let vol = element_volume(m, ki as usize, e as usize);
-    let size = ElementSize {
-        bulk: bulk(mat),
-        shell: false,
-        area,
-        dmax,
-        volume: vol,
-    };
+    let size = solid_size(mat, area, vol);
     let k = ty
         .element_stiffness(&size, true)
         .unwrap_or_else(|| ty.solid_segment_stiffness(bulk(mat), area, vol));

@@ -132,6 +132,25 @@ impl<'a> Card<'a> {
         }
     }
 
+    /// Three reals from field `first` on (a vector: VX VY VZ).
+    pub fn vec3(&self, first: usize, names: [&str; 3]) -> InputResult<[f64; 3]> {
+        Ok([
+            self.real(first, names[0], 0.0)?,
+            self.real(first + 1, names[1], 0.0)?,
+            self.real(first + 2, names[2], 0.0)?,
+        ])
+    }
+
+    /// Whether field `i` is given and not 0, read as an integer field
+    /// (`integer`: "1.5" is an error) or a real one.
+    pub fn given(&self, i: usize, name: &str, integer: bool) -> InputResult<bool> {
+        Ok(if integer {
+            self.int(i, name, 0)? != 0
+        } else {
+            self.real(i, name, 0.0)? != 0.0
+        })
+    }
+
     /// The whole line as a title.
     pub fn title(&self) -> String {
         self.line.text.trim().to_string()

@@ -108,21 +108,11 @@ fn spc(b: &Block, cards: &mut Cards, ctx: &mut Ctx, set: bool) -> InputResult<()
         if c.is_blank() {
             continue;
         }
-        let id = c.id(0, if set { "NSID" } else { "NID" })?;
         if c.id_opt(1, "CID")? != 0 {
             ctx.refuse(&c.loc(), &kw, "field CID (constraints in a local system)");
         }
         let fixed = dofs(&c, 2)?;
-        let grnod = if set {
-            id
-        } else {
-            ctx.own_group(
-                NodeGroupKind::Node,
-                vec![id as i64],
-                format!("{kw} node {id}"),
-                &c.loc(),
-            )
-        };
+        let grnod = ctx.card_nodes(&c, set, &kw)?;
         ctx.deck.bcs.push(BoundarySpec {
             id: ctx.deck.bcs.len() as Id + 1,
             title: kw.clone(),
@@ -168,16 +158,8 @@ pub fn velocity_generation(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> Input
         if c.real(2, "OMEGA", 0.0)? != 0.0 {
             ctx.refuse(&c.loc(), &kw, "field OMEGA (a rotating initial velocity)");
         }
-        let v = [
-            c.real(3, "VX", 0.0)?,
-            c.real(4, "VY", 0.0)?,
-            c.real(5, "VZ", 0.0)?,
-        ];
-        for (i, name) in [(6, "IVATN"), (7, "ICID")] {
-            if c.int(i, name, 0)? != 0 {
-                ctx.refuse(&c.loc(), &kw, format!("field {name}"));
-            }
-        }
+        let v = c.vec3(3, ["VX", "VY", "VZ"])?;
+        ctx.refuse_given(&c, &kw, &[(6, "IVATN"), (7, "ICID")], "", true)?;
         cards.next(std, "the card XC YC ZC NX NY NZ PHASE IRIGID")?;
         let grnod = match styp {
             3 => id,
@@ -223,22 +205,11 @@ pub fn velocity_set(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<
         let std = cards.standard();
         let c = cards.next(std.clone(), "the card NSID NSIDEX BOXID IRIGID ICID")?;
         let nsid = c.id(0, "NSID")?;
-        for (i, name) in [(1, "NSIDEX"), (2, "BOXID"), (3, "IRIGID"), (4, "ICID")] {
-            if c.int(i, name, 0)? != 0 {
-                ctx.refuse(&c.loc(), &kw, format!("field {name}"));
-            }
-        }
+        let ignored = [(1, "NSIDEX"), (2, "BOXID"), (3, "IRIGID"), (4, "ICID")];
+        ctx.refuse_given(&c, &kw, &ignored, "", true)?;
         let d = cards.next(std, "the card VX VY VZ VXR VYR VZR")?;
-        let v = [
-            d.real(0, "VX", 0.0)?,
-            d.real(1, "VY", 0.0)?,
-            d.real(2, "VZ", 0.0)?,
-        ];
-        let w = [
-            d.real(3, "VXR", 0.0)?,
-            d.real(4, "VYR", 0.0)?,
-            d.real(5, "VZR", 0.0)?,
-        ];
+        let v = d.vec3(0, ["VX", "VY", "VZ"])?;
+        let w = d.vec3(3, ["VXR", "VYR", "VZR"])?;
         velocity(ctx, &kw, v, false, nsid, &c.loc());
         if w != [0.0; 3] {
             velocity(ctx, &kw, w, true, nsid, &d.loc());
@@ -254,26 +225,12 @@ pub fn velocity_node(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult
         if c.is_blank() {
             continue;
         }
-        let nid = c.id(0, "NID")?;
-        let v = [
-            c.real(1, "VX", 0.0)?,
-            c.real(2, "VY", 0.0)?,
-            c.real(3, "VZ", 0.0)?,
-        ];
-        let w = [
-            c.real(4, "VXR", 0.0)?,
-            c.real(5, "VYR", 0.0)?,
-            c.real(6, "VZR", 0.0)?,
-        ];
+        let g = ctx.card_nodes(&c, false, &kw)?;
+        let v = c.vec3(1, ["VX", "VY", "VZ"])?;
+        let w = c.vec3(4, ["VXR", "VYR", "VZR"])?;
         if c.int(7, "ICID", 0)? != 0 {
             ctx.refuse(&c.loc(), &kw, "field ICID");
         }
-        let g = ctx.own_group(
-            NodeGroupKind::Node,
-            vec![nid as i64],
-            format!("{kw} node {nid}"),
-            &c.loc(),
-        );
         velocity(ctx, &kw, v, false, g, &c.loc());
         if w != [0.0; 3] {
             velocity(ctx, &kw, w, true, g, &c.loc());

@@ -87,19 +87,11 @@ fn contact(b: &Block, cards: &mut Cards, ctx: &mut Ctx, form: Form) -> InputResu
     let msid = c1.id_opt(1, "MSID")?;
     let sstyp = c1.int(2, "SSTYP", 0)?;
     let mstyp = c1.int(3, "MSTYP", 0)?;
-    for (i, name) in [(4, "SBOXID"), (5, "MBOXID")] {
-        if c1.int(i, name, 0)? != 0 {
-            ctx.refuse(&loc, &kw, format!("field {name}"));
-        }
-    }
+    ctx.refuse_given(&c1, &kw, &[(4, "SBOXID"), (5, "MBOXID")], "", true)?;
     let c2 = cards.next(std.clone(), "card 2: FS FD DC VC VDC PENCHK BT DT")?;
     let fs = c2.real(0, "FS", 0.0)?;
     let vdc = c2.real(4, "VDC", 0.0)?;
-    for (i, name) in [(2, "DC"), (3, "VC"), (5, "PENCHK")] {
-        if c2.real(i, name, 0.0)? != 0.0 {
-            ctx.refuse(&c2.loc(), &kw, format!("field {name}"));
-        }
-    }
+    ctx.refuse_given(&c2, &kw, &[(2, "DC"), (3, "VC"), (5, "PENCHK")], "", false)?;
     let bt = c2.real(6, "BT", 0.0)?;
     let dt = c2.real(7, "DT", 0.0)?;
     let c3 = cards.next(std.clone(), "card 3: SFS SFM SST MST SFST SFMT FSF VSF")?;
@@ -188,17 +180,14 @@ fn optional_cards(cards: &mut Cards, ctx: &mut Ctx, kw: &str) -> InputResult<(i6
         }
     }
     if let Some(b) = cards.next_opt(std) {
-        for (i, name) in [
+        let fields = [
             (0, "PENMAX"),
             (1, "THKOPT"),
             (2, "SHLTHK"),
             (6, "SLDTHK"),
             (7, "SLDSTF"),
-        ] {
-            if b.real(i, name, 0.0)? != 0.0 {
-                ctx.refuse(&b.loc(), kw, format!("field {name}"));
-            }
-        }
+        ];
+        ctx.refuse_given(&b, kw, &fields, "", false)?;
     }
     if cards.remaining() > 0 {
         let c = cards.next_opt(cards.standard()).unwrap();

@@ -33,17 +33,14 @@ pub fn termination(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<(
     if tstop <= 0.0 {
         return Err(c.err("ENDTIM", format!("{tstop}: expected the end time > 0")));
     }
-    for (i, name) in [
+    let fields = [
         (1, "ENDCYC"),
         (2, "DTMIN"),
         (3, "ENDENG"),
         (4, "ENDMAS"),
         (5, "NOSOL"),
-    ] {
-        if c.real(i, name, 0.0)? != 0.0 {
-            ctx.refuse(&c.loc(), &kw, format!("field {name}"));
-        }
-    }
+    ];
+    ctx.refuse_given(&c, &kw, &fields, "", false)?;
     let name = ctx
         .deck
         .begin
@@ -78,17 +75,14 @@ pub fn timestep(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> 
             format!("{tssfac}: expected a scale factor from 0 to 1"),
         ));
     }
-    for (i, name) in [
+    let fields = [
         (2, "ISDO"),
         (3, "TSLIMT"),
         (4, "DT2MS"),
         (5, "LCTM"),
         (7, "MS1ST"),
-    ] {
-        if c.real(i, name, 0.0)? != 0.0 {
-            ctx.refuse(&c.loc(), &kw, format!("field {name}"));
-        }
-    }
+    ];
+    ctx.refuse_given(&c, &kw, &fields, "", false)?;
     let e = engine(ctx, b);
     e.dt_scale = if tssfac == 0.0 { 0.9 } else { tssfac };
     if dtinit < 0.0 {

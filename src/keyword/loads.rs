@@ -5,24 +5,7 @@
 use super::card::{Card, Cards};
 use super::source::Block;
 use super::{base_name, Ctx};
-use crate::deck::NodeGroupKind;
 use crate::model::{ConcentratedLoadSpec, Dof, GravitySpec, Id, ImposedMotionSpec, InputResult};
-
-/// The nodes a card names: a node (`set` false: a group of its own) or a
-/// node set.
-fn nodes(ctx: &mut Ctx, c: &Card, set: bool, kw: &str) -> InputResult<Id> {
-    let id = c.id(0, if set { "NSID" } else { "NID" })?;
-    Ok(if set {
-        id
-    } else {
-        ctx.own_group(
-            NodeGroupKind::Node,
-            vec![id as i64],
-            format!("{kw} node {id}"),
-            &c.loc(),
-        )
-    })
-}
 
 /// DOF 1, 2, 3 (x, y, z) and 5, 6, 7 (about x, y, z), or `None`.
 fn dof(code: i64) -> Option<Dof> {
@@ -79,7 +62,7 @@ pub fn prescribed_motion(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputRe
             );
             continue;
         }
-        let grnod = nodes(ctx, &c, set, &kw)?;
+        let grnod = ctx.card_nodes(&c, set, &kw)?;
         let fct = c.id(3, "LCID")?;
         let sf = one(c.real(4, "SF", 1.0)?);
         if c.id_opt(5, "VID")? != 0 {
@@ -143,7 +126,7 @@ pub fn node_load(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()>
         if c.id_opt(4, "CID")? != 0 {
             ctx.refuse(&c.loc(), &kw, "field CID");
         }
-        let grnod = nodes(ctx, &c, set, &kw)?;
+        let grnod = ctx.card_nodes(&c, set, &kw)?;
         ctx.deck.concentrated_loads.push(ConcentratedLoadSpec {
             id: ctx.deck.concentrated_loads.len() as Id + 1,
             unit_id: 0,

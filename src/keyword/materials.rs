@@ -26,11 +26,8 @@ pub fn elastic(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
         let std = cards.standard();
         let c = cards.next(std, "the card MID RO E PR DA DB K")?;
         let (id, rho, e, nu) = common(&c)?;
-        for (i, name) in [(4, "DA"), (5, "DB"), (6, "K")] {
-            if c.real(i, name, 0.0)? != 0.0 {
-                ctx.refuse(&c.loc(), &kw, format!("field {name} (material {id})"));
-            }
-        }
+        let whose = format!(" (material {id})");
+        ctx.refuse_given(&c, &kw, &[(4, "DA"), (5, "DB"), (6, "K")], &whose, false)?;
         ctx.deck.materials.push(material(
             id,
             title,
@@ -173,11 +170,14 @@ pub fn johnson_cook(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<
                 ),
             ));
         }
-        for (i, name) in [(5, "DTF"), (6, "VP"), (7, "RATEOP")] {
-            if c.real(i, name, 0.0)? != 0.0 {
-                ctx.refuse(&c.loc(), &kw, format!("field {name} (material {id})"));
-            }
-        }
+        let whose = format!(" (material {id})");
+        ctx.refuse_given(
+            &c,
+            &kw,
+            &[(5, "DTF"), (6, "VP"), (7, "RATEOP")],
+            &whose,
+            false,
+        )?;
         let c2 = cards.next(std.clone(), "card 2: A B N C M TM TR EPSO")?;
         let (a, bb, n) = (
             c2.real(0, "A", 0.0)?,
@@ -202,7 +202,7 @@ pub fn johnson_cook(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<
         }
         let c3 = cards.next(std.clone(), "card 3: CP PC SPALL IT D1 D2 D3 D4")?;
         let cp = c3.real(0, "CP", 0.0)?;
-        for (i, name) in [
+        let damage = [
             (1, "PC"),
             (2, "SPALL"),
             (3, "IT"),
@@ -210,23 +210,17 @@ pub fn johnson_cook(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<
             (5, "D2"),
             (6, "D3"),
             (7, "D4"),
-        ] {
-            if c3.real(i, name, 0.0)? != 0.0 {
-                ctx.refuse(&c3.loc(), &kw, format!("field {name} (material {id})"));
-            }
-        }
+        ];
+        ctx.refuse_given(&c3, &kw, &damage, &whose, false)?;
         if let Some(c4) = cards.next_opt(std) {
-            for (i, name) in [
+            let more = [
                 (0, "D5"),
                 (1, "C2/P/XNP"),
                 (2, "EROD"),
                 (3, "EFMIN"),
                 (4, "NUMINT"),
-            ] {
-                if c4.real(i, name, 0.0)? != 0.0 {
-                    ctx.refuse(&c4.loc(), &kw, format!("field {name} (material {id})"));
-                }
-            }
+            ];
+            ctx.refuse_given(&c4, &kw, &more, &whose, false)?;
         }
         let thermal = m != 0.0 && tm > 0.0;
         let law = MaterialLaw::JohnsonCook(JohnsonCook {

@@ -164,11 +164,8 @@ pub fn part(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
         let id = c.id(0, "PID")?;
         let prop = c.id(1, "SECID")?;
         let mat = c.id(2, "MID")?;
-        for (i, name) in [(3, "EOSID"), (4, "HGID"), (6, "ADPOPT"), (7, "TMID")] {
-            if c.int(i, name, 0)? != 0 {
-                ctx.refuse(&c.loc(), &kw, format!("field {name} (part {id})"));
-            }
-        }
+        let fields = [(3, "EOSID"), (4, "HGID"), (6, "ADPOPT"), (7, "TMID")];
+        ctx.refuse_given(&c, &kw, &fields, &format!(" (part {id})"), true)?;
         ctx.deck.parts.push(PartCard {
             id,
             title,

@@ -75,6 +75,42 @@ impl Ctx<'_> {
         self.deck.unsupported.push(w);
     }
 
+    /// Refuses by name each of `fields` (index, name) of card `c` that is
+    /// given and not 0 (see [`Card::given`]); `whose` follows the field's
+    /// name in the message (" (material 3)").
+    pub fn refuse_given(
+        &mut self,
+        c: &card::Card,
+        kw: &str,
+        fields: &[(usize, &str)],
+        whose: &str,
+        integer: bool,
+    ) -> InputResult<()> {
+        for &(i, name) in fields {
+            if c.given(i, name, integer)? {
+                self.refuse(&c.loc(), kw, format!("field {name}{whose}"));
+            }
+        }
+        Ok(())
+    }
+
+    /// The nodes a card's first field names: a node (`set` false: a group
+    /// of its own) or a node set.
+    pub fn card_nodes(&mut self, c: &card::Card, set: bool, kw: &str) -> InputResult<Id> {
+        let id = c.id(0, if set { "NSID" } else { "NID" })?;
+        Ok(if set {
+            id
+        } else {
+            let title = format!("{kw} node {id}");
+            self.own_group(
+                crate::deck::NodeGroupKind::Node,
+                vec![id as i64],
+                title,
+                &c.loc(),
+            )
+        })
+    }
+
     /// An id for a group or surface the reader makes itself.
     pub fn own_id(&mut self) -> Id {
         self.next_group += 1;

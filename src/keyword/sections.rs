@@ -85,11 +85,8 @@ pub fn shell(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
                 );
             }
         }
-        for (i, name) in [(4, "NLOC"), (5, "MAREA")] {
-            if d.real(i, name, 0.0)? != 0.0 {
-                ctx.refuse(&d.loc(), &kw, format!("field {name} (section {id})"));
-            }
-        }
+        let whose = format!(" (section {id})");
+        ctx.refuse_given(&d, &kw, &[(4, "NLOC"), (5, "MAREA")], &whose, false)?;
         ctx.deck.properties.push(PropertySpec {
             id,
             unit_id: 0,

@@ -57,10 +57,14 @@ pub struct Source {
 /// Whether the file at `path` looks like a keyword deck: its first line that
 /// is neither blank nor a `$` comment starts with `*KEYWORD`.
 pub fn is_keyword_deck(path: &Path) -> bool {
-    let Ok(text) = std::fs::read(path) else {
+    use std::io::Read;
+    // Only the file's start: a Radioss deck of gigabytes is not read twice.
+    let mut head = Vec::new();
+    let read = std::fs::File::open(path).and_then(|f| f.take(1 << 16).read_to_end(&mut head));
+    if read.is_err() {
         return false;
-    };
-    String::from_utf8_lossy(&text[..text.len().min(1 << 16)])
+    }
+    String::from_utf8_lossy(&head)
         .lines()
         .map(str::trim_end)
         .find(|l| !l.trim().is_empty() && !l.starts_with('$'))

@@ -33,11 +33,13 @@ pub fn planar(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
     )?;
     let nsid = c1.id_opt(0, "NSID")?;
     let nsidex = c1.id_opt(1, "NSIDEX")?;
-    for (i, name) in [(2, "BOXID"), (3, "OFFSET"), (4, "BIRTH")] {
-        if c1.real(i, name, 0.0)? != 0.0 {
-            ctx.refuse(&c1.loc(), &kw, format!("field {name}"));
-        }
-    }
+    ctx.refuse_given(
+        &c1,
+        &kw,
+        &[(2, "BOXID"), (3, "OFFSET"), (4, "BIRTH")],
+        "",
+        false,
+    )?;
     let death = c1.real(5, "DEATH", 0.0)?;
     if death != 0.0 && death < 1e20 {
         ctx.refuse(&c1.loc(), &kw, "field DEATH");
@@ -47,16 +49,8 @@ pub fn planar(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
         ctx.refuse(&c1.loc(), &kw, "field RWKSF");
     }
     let c2 = cards.next(std, "card 2: XT YT ZT XH YH ZH FRIC WVEL")?;
-    let tail = [
-        c2.real(0, "XT", 0.0)?,
-        c2.real(1, "YT", 0.0)?,
-        c2.real(2, "ZT", 0.0)?,
-    ];
-    let head = [
-        c2.real(3, "XH", 0.0)?,
-        c2.real(4, "YH", 0.0)?,
-        c2.real(5, "ZH", 0.0)?,
-    ];
+    let tail = c2.vec3(0, ["XT", "YT", "ZT"])?;
+    let head = c2.vec3(3, ["XH", "YH", "ZH"])?;
     if tail == head {
         return Err(c2.err(
             "XH",
