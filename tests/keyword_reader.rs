@@ -455,15 +455,27 @@ fn more_bad_keyword_decks_exit_2_naming_file_line_keyword_and_field() {
         (inc, "*SET_PART_LIST\n         7\n         2\n*INCLUDE", "117: error: *SET_PART_LIST, field SID: part set 7 is defined twice"),
         (inc, "*SECTION_SOLID\n         0         1\n*INCLUDE", "117: error: *SECTION_SOLID, field SECID: blank or 0"),
         (inc, "*PARAMETER\nR X              1.0\n*INCLUDE", ""),
+        ("*INCLUDE\nkeyword_twin_block.k\n", "*INCLUDE_TRANSFORM\n", "116: error: *INCLUDE_TRANSFORM, field FILENAME: missing"),
+        ("*INCLUDE\nkeyword_twin_block.k", "*INCLUDE_TRANSFORM\nkeyword_twin_block.k\n      1000", "118: error: *INCLUDE_TRANSFORM, field IDNOFF: 1000"),
+        ("*INCLUDE\nkeyword_twin_block.k", "*INCLUDE_TRANSFORM\nkeyword_twin_block.k\n0,0,0,0,0,0,0\n0,,,\n1.,1.,25.4", "120: error: *INCLUDE_TRANSFORM, field FCTLEN: 25.4"),
+        ("*INCLUDE\nkeyword_twin_block.k", "*INCLUDE_TRANSFORM\nkeyword_twin_block.k\n\n\n\n         3", "121: error: *INCLUDE_TRANSFORM, field TRANID: 3"),
+        // Offsets 0, factors 1 and no transformation: a plain *INCLUDE; *CONTROL_UNITS and *CONTROL_ENERGY change nothing.
+        ("*INCLUDE\nkeyword_twin_block.k", "*CONTROL_UNITS\n        mm        ms        kg\n*CONTROL_ENERGY\n         2\n*INCLUDE_TRANSFORM\nkeyword_twin_block.k\n         0         0\n\n         1       1.0         1\n         0", ""),
     ];
     for (i, (from, to, want)) in cases.iter().enumerate() {
         if want.is_empty() {
-            // A second *PARAMETER block is fine.
+            // A second *PARAMETER block is fine; so is an identity
+            // *INCLUDE_TRANSFORM, which runs as the twin does.
             let deck = variant(&format!("kw-bad2-{i}"), from, to);
             common::ok(
                 &common::crashsim(&["check", deck.to_str().unwrap()]),
                 "check",
             );
+            if from.contains("keyword_twin_block") {
+                let (fs, _) = run(0, &deck, &format!("kw-bad2-{i}-run"));
+                let (fs_twin, _) = run(0, &twin_dir().join("keyword_twin.k"), "kw-bad2-twin");
+                assert!(fs == fs_twin, "the identity transform changes the run");
+            }
             continue;
         }
         let err = check_fails(&format!("kw-bad2-{i}"), from, to);
@@ -716,4 +728,134 @@ fn a_segment_set_is_a_contact_surface() {
         ),
         "{err}"
     );
+}
+
+fn soft2_dir() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("decks/keyword_soft2")
+}
+
+/// The listing's (time, step, contact force z) after each cycle that prints
+/// an interface line.
+fn contact_force_rows(listing: &str) -> Vec<(f64, f64, f64)> {
+    let lines: Vec<&str> = listing.lines().collect();
+    let mut out = Vec::new();
+    for w in lines.windows(2) {
+        let f: Vec<&str> = w[1].split_whitespace().collect();
+        if f.first() != Some(&"INTER") {
+            continue;
+        }
+        let c: Vec<&str> = w[0].split_whitespace().collect();
+        out.push((common::num(c[1]), common::num(c[2]), common::num(f[7])));
+    }
+    out
+}
+
+/// SOFT = 2 (decks/keyword_soft2/plates.k, `make_soft2_contact.py`): two
+/// 1 mm shells 0.6 mm apart, 0.4 mm inside their contact thickness from the
+/// start; the upper one pressed down at 1 mm/ms. The initial penetration
+/// is the baseline: no force for it, and at every cycle the force is
+/// k·Δp for the further penetration Δp = 1 mm/ms·t within 1%, with
+/// k = 0.5·SLSFAC·SFS·m1·m2/(m1 + m2)/Δt_c², Δt_c = 1.05·Δt (seed 003).
+#[test]
+fn soft2_takes_the_initial_penetration_as_baseline_and_pushes_k_dp() {
+    let dir = common::scratch("kw-soft2-plates");
+    let out = common::crashsim(&[
+        "run",
+        soft2_dir().join("plates.k").to_str().unwrap(),
+        "--out",
+        dir.to_str().unwrap(),
+    ]);
+    common::ok(&out, "run plates.k");
+    let rows = contact_force_rows(&std::fs::read_to_string(dir.join("plates.out")).unwrap());
+    assert!(rows.len() > 50, "{} contact lines", rows.len());
+    let m = 7.85e-6 * 100.0 * 1.0;
+    let dtc = 1.05 * rows[0].1;
+    let k = 0.5 * 0.1 * 1.0 * (m * m / (2.0 * m)) / (dtc * dtc);
+    // The first cycle's force is k·v·Δt, nowhere near k times the 0.4 mm
+    // initial penetration.
+    assert!(rows[0].2 < 0.01 * k * 0.4, "initial force {}", rows[0].2);
+    for &(t, _, f) in &rows {
+        let want = k * 1.0 * t;
+        assert!(
+            (f - want).abs() <= 0.01 * want,
+            "t = {t}: contact force {f}, k·Δp = {want}"
+        );
+    }
+}
+
+/// SOFT = 2 with DEPTH = 5 (decks/keyword_soft2/edges2.k): a plate falling
+/// edge first across the top edge of a plate at right angles, no node of
+/// either near a segment of the other. The edge-to-edge check holds it and
+/// throws it back (byte-identical on 1, 2 and 4 ranks); SOFT = 0
+/// (edges0.k) and SOFT = 2 with DEPTH = 2 let it fall through.
+#[test]
+fn soft2_with_depth_5_catches_an_edge_crossing_that_soft0_misses() {
+    // The upper plate's nodes are 1-9: their lowest z at the end.
+    let lowest = |fs: &[u8]| -> f64 {
+        String::from_utf8_lossy(fs)
+            .lines()
+            .skip(1)
+            .map(|l| {
+                l.split(',')
+                    .map(|v| v.parse::<f64>().unwrap())
+                    .collect::<Vec<_>>()
+            })
+            .filter(|r| r[0] <= 9.0)
+            .map(|r| r[3])
+            .fold(f64::INFINITY, f64::min)
+    };
+    let deck2 = soft2_dir().join("edges2.k");
+    let (fs2, en2) = run(0, &deck2, "kw-soft2-edges");
+    assert!(lowest(&fs2) > 0.5, "SOFT 2, DEPTH 5: {}", lowest(&fs2));
+    for np in [2, 4] {
+        let (fs, en) = run(np, &deck2, &format!("kw-soft2-edges-np{np}"));
+        assert!(fs == fs2 && en == en2, "edges2.k differs on {np} ranks");
+    }
+    let (fs0, _) = run(0, &soft2_dir().join("edges0.k"), "kw-soft2-edges0");
+    assert!(lowest(&fs0) < -2.0, "SOFT 0: {}", lowest(&fs0));
+    let text = std::fs::read_to_string(&deck2).unwrap();
+    let card_a = "         2       0.1         0         0         2         5";
+    assert!(text.contains(card_a));
+    let scratch = common::scratch("kw-soft2-depth2");
+    let depth2 = scratch.join("d2.k");
+    std::fs::write(
+        &depth2,
+        text.replacen(card_a, &card_a.replace("         5", "         2"), 1),
+    )
+    .unwrap();
+    let (fsd, _) = run(0, &depth2, "kw-soft2-depth2-run");
+    assert!(lowest(&fsd) < -2.0, "SOFT 2, DEPTH 2: {}", lowest(&fsd));
+    // Options it does not compute stop the run by name.
+    for (from, to, what) in [
+        (
+            card_a,
+            "         2       0.1         0         0         3         5",
+            "SBOPT 3",
+        ),
+        (
+            card_a,
+            "         2       0.1         0         0         2         3",
+            "DEPTH 3 on SOFT 2",
+        ),
+        (
+            card_a,
+            "         2       0.1         0         0         2         5         0         2",
+            "FRCFRQ > 1",
+        ),
+    ] {
+        let deck = scratch.join("refused.k");
+        std::fs::write(&deck, text.replacen(from, to, 1)).unwrap();
+        let out = common::crashsim(&[
+            "run",
+            deck.to_str().unwrap(),
+            "--out",
+            scratch.to_str().unwrap(),
+        ]);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{what}: {err}");
+        assert!(
+            err.contains(&format!("*CONTACT_AUTOMATIC_SINGLE_SURFACE, {what}")),
+            "{what}: {err}"
+        );
+    }
 }

@@ -206,9 +206,11 @@ pub struct ContactSystem {
     /// Sort every cycle (benchmark reference).
     pub always_sort: bool,
     pub sums: Vec<InterfaceSums>,
-    /// Total-force types: each interface's memory from cycle to cycle
-    /// (TYPE6 Iform 1/2: the last largest penetration and force), the same
-    /// on every rank (it follows the reduced p_max).
+    /// Each interface's memory from cycle to cycle, the same on every rank:
+    /// total-force types' (TYPE6 Iform 1/2: the last largest penetration
+    /// and force, following the reduced p_max) and the others'
+    /// (`InterfaceType::advance_memory`: LS-DYNA's segment-based contact
+    /// keeps its contact time step there).
     pub(super) total_memory: Vec<[f64; 2]>,
     pub timers: ContactTimers,
     node_ids: Vec<u64>,
@@ -275,10 +277,11 @@ impl ContactSystem {
                     .iter()
                     .map(|p| {
                         // A node's pairs are computed by its owner; an
-                        // edge's by the lowest rank holding both its nodes.
+                        // edge's or segment's by the lowest rank holding
+                        // all its nodes.
                         let mine: Vec<u32> = (0..p.n_sec() as u32)
                             .filter(|&k| {
-                                if p.is_edge_pass() {
+                                if p.is_entity_pass() {
                                     setup.owner_of(&p.sec_side(k as usize)) == Some(sd.rank)
                                 } else {
                                     owned[p.sec[k as usize] as usize]
@@ -394,6 +397,8 @@ impl ContactSystem {
             .collect();
         if p.is_edge_pass() {
             format!("edge {}", ids.join("-"))
+        } else if p.is_segment_pass() {
+            format!("segment {}", ids.join("-"))
         } else {
             format!("node {}", ids[0])
         }
@@ -725,6 +730,8 @@ impl ContactSystem {
                     .collect();
                 let cand = if p.is_edge_pass() {
                     self.edge_candidates(it, p, run, &boxes)
+                } else if p.is_segment_pass() {
+                    self.segment_candidates(it, p, run, &boxes)
                 } else {
                     self.node_candidates(it, p, run, &boxes)
                 };
@@ -820,33 +827,55 @@ impl ContactSystem {
         // within reach; the exact distance then decides, so the lists do
         // not depend on which rank holds the edge.
         let raw = search::candidates(&mids, reach + half_len, boxes, search::choose(boxes));
-        let mut cand = Candidates {
-            ptr: vec![0],
-            segs: Vec::with_capacity(raw.segs.len()),
-        };
-        for (j, &k) in run.mine.iter().enumerate() {
+        filter_candidates(run, &raw, |k, m| {
             let se = p.sec_edges[k as usize];
-            let [s1, s2] = ends(k);
-            if !run.sec_off(k) {
-                for &m in &raw.segs[raw.ptr[j]..raw.ptr[j + 1]] {
-                    let me = &p.segs[m as usize];
-                    if me[..2].iter().any(|c| se.contains(c)) {
-                        continue;
-                    }
-                    if p.self_contact
-                        && self.node_ids[me[0] as usize] < self.node_ids[se[0] as usize]
-                    {
-                        continue;
-                    }
-                    let (m1, m2) = (self.cx[me[0] as usize], self.cx[me[1] as usize]);
-                    if edge_geometry::closest_points_of_edges(s1, s2, m1, m2).dist <= reach {
-                        cand.segs.push(m);
-                    }
-                }
+            let me = &p.segs[m as usize];
+            if me[..2].iter().any(|c| se.contains(c))
+                || (p.self_contact && self.node_ids[me[0] as usize] < self.node_ids[se[0] as usize])
+            {
+                return false;
             }
-            cand.ptr.push(cand.segs.len());
-        }
-        cand
+            let [s1, s2] = ends(k);
+            let (m1, m2) = (self.cx[me[0] as usize], self.cx[me[1] as usize]);
+            edge_geometry::closest_points_of_edges(s1, s2, m1, m2).dist <= reach
+        })
+    }
+
+    /// The candidates of a segment pass: the main segments whose box comes
+    /// within gap + margin of each owned secondary segment's box, less
+    /// those that share a node with it; in self-contact (both sides the same
+    /// segments) one orientation of each pair, main index above secondary.
+    fn segment_candidates(
+        &self,
+        it: &setup::Interface,
+        p: &setup::Pass,
+        run: &PassRun,
+        boxes: &[Aabb],
+    ) -> Candidates {
+        let reach = it.max_gap + it.margin;
+        let sec_box =
+            |k: u32| Aabb::of_points(&p.sec_segs[k as usize].map(|c| self.cx[c as usize]));
+        let mut half_diag = 0.0f64;
+        let centres: Vec<V3> = run
+            .mine
+            .iter()
+            .map(|&k| {
+                let b = sec_box(k);
+                half_diag = half_diag.max(0.5 * b.diagonal());
+                b.centre()
+            })
+            .collect();
+        // Centres within reach + half the largest diagonal hold every pair
+        // whose boxes come within reach; the boxes then decide, so the
+        // lists do not depend on which rank holds the segment.
+        let raw = search::candidates(&centres, reach + half_diag, boxes, search::choose(boxes));
+        filter_candidates(run, &raw, |k, m| {
+            let ss = &p.sec_segs[k as usize];
+            let ms = &p.segs[m as usize];
+            !ms.iter().any(|c| ss.contains(c))
+                && !(p.self_contact && m <= k)
+                && sec_box(k).grown(reach).overlaps(&boxes[m as usize])
+        })
     }
 
     /// Inacti / Fpenmax at the first sort: decide for every pair found inside its gap.
@@ -855,6 +884,11 @@ impl ContactSystem {
             for (pi, p) in it.passes.iter().enumerate() {
                 if p.is_edge_pass() {
                     edge_initial_penetrations(it, p, &mut self.runs[ii][pi], &self.cx);
+                    continue;
+                }
+                if p.is_segment_pass() {
+                    // Segment pairs keep their initial penetration as a
+                    // baseline in the pair memory: nothing to decide here.
                     continue;
                 }
                 let run = &mut self.runs[ii][pi];
@@ -902,6 +936,29 @@ impl ContactSystem {
             }
         }
     }
+}
+
+/// The raw candidates of each owned secondary entity (`raw`, in the order
+/// of `run.mine`) that `keep(entity, main entity)` accepts; none for an
+/// entity removed by Idel.
+fn filter_candidates(
+    run: &PassRun,
+    raw: &Candidates,
+    keep: impl Fn(u32, u32) -> bool,
+) -> Candidates {
+    let mut cand = Candidates {
+        ptr: vec![0],
+        segs: Vec::with_capacity(raw.segs.len()),
+    };
+    for (j, &k) in run.mine.iter().enumerate() {
+        if !run.sec_off(k) {
+            let mine = &raw.segs[raw.ptr[j]..raw.ptr[j + 1]];
+            cand.segs
+                .extend(mine.iter().copied().filter(|&m| keep(k, m)));
+        }
+        cand.ptr.push(cand.segs.len());
+    }
+    cand
 }
 
 /// The sort's exclusions of node `s` against segment `seg`: the node is one

@@ -54,6 +54,8 @@ struct PassView<'a> {
     bodies: &'a [RigidBodyState],
     /// Total-force types: see `PairContext::scale`.
     scale: Option<f64>,
+    /// The interface's memory this cycle (`PairContext::memory`).
+    memory: [f64; 2],
 }
 
 /// One owned secondary node's memory.
@@ -90,6 +92,9 @@ impl ContactSystem {
                 continue;
             }
             let mut scale = None;
+            if !it.ty().is_total_force() {
+                it.ty().advance_memory(&mut self.total_memory[ii], dt);
+            }
             if it.ty().is_total_force() {
                 let (fac, step) = self.total_scale(world, ii, mass, dt, bodies);
                 scale = Some(fac);
@@ -149,6 +154,7 @@ impl ContactSystem {
             dt,
             bodies,
             scale,
+            memory: self.total_memory[ii],
         };
         it.options.visit(PassPairs {
             v: &view,
@@ -381,6 +387,7 @@ fn context<'a>(v: &'a PassView, k: usize, m: u32, pv: &'a PairValues) -> PairCon
         dt: v.dt,
         bodies: v.bodies,
         scale: v.scale,
+        memory: v.memory,
     }
 }
 

@@ -63,7 +63,8 @@ pub struct ContactScalars {
     energy: Vec<f64>,
     /// The run's contact energy (solver::run), summed over ranks.
     pub e_contact: f64,
-    /// Total-force types' memory per interface (layout 3), alike on every rank.
+    /// Each interface's memory (total-force types', the segment-based
+    /// contact's time step; layout 3), alike on every rank.
     total_memory: Vec<[f64; 2]>,
 }
 

@@ -122,7 +122,7 @@ fn node_data(m: &Model, nodes: &[u32], ty: &dyn InterfaceType) -> HashMap<u32, (
                 continue;
             };
             let (stiff, g) = if shell {
-                let size = shell_size(mat, &face_points(m, n), n.len() == 3);
+                let size = shell_size(mat, &face_points(m, n), n.len() == 3, set.thick[e]);
                 let k = ty.element_stiffness(&size, false);
                 (
                     k.unwrap_or_else(|| stiffness::shell(mat.e, set.thick[e])),
@@ -165,19 +165,21 @@ fn face_points(m: &Model, n: &[u32]) -> [V3; 4] {
 
 /// A shell face of material `mat` for a type's own stiffness rule: its
 /// area and longest diagonal (a triangle: its longest edge).
-fn shell_size(mat: &MaterialSpec, x: &[V3; 4], tri: bool) -> ElementSize {
+fn shell_size(mat: &MaterialSpec, x: &[V3; 4], tri: bool, thick: f64) -> ElementSize {
     let d = |a: usize, b: usize| geo::norm(geo::sub(x[a], x[b]));
     let dmax = if tri {
         d(0, 1).max(d(1, 2)).max(d(2, 0))
     } else {
         d(0, 2).max(d(1, 3))
     };
+    let area = geo::segment_area(x, tri);
     ElementSize {
         bulk: bulk(mat),
         shell: true,
-        area: geo::segment_area(x, tri),
+        area,
         dmax,
         volume: 0.0,
+        mass: mat.rho * area * thick,
     }
 }
 
@@ -189,6 +191,7 @@ fn solid_size(mat: &MaterialSpec, area: f64, volume: f64) -> ElementSize {
         area,
         dmax: 0.0,
         volume,
+        mass: mat.rho * volume,
     }
 }
 
@@ -223,7 +226,7 @@ fn segment_data(
     let tri = seg[3] == seg[2];
     if matches!(set.kind, ElementKind::Shell4 | ElementKind::Shell3) {
         let t = set.thick[e as usize];
-        let size = shell_size(mat, &xs, tri);
+        let size = shell_size(mat, &xs, tri, t);
         return Ok(SegData {
             k: ty
                 .element_stiffness(&size, true)
@@ -368,28 +371,27 @@ fn build_interface(
     };
     let mut passes = Vec::new();
     for sides in ty.passes(i) {
-        passes.push(
-            if sides.sec_edges.is_empty() && sides.main_edges.is_empty() {
-                build_pass(m, surfaces, ty, &common, &sides, &mut sizes, &kw)?
-            } else {
-                let cnode = |g: u32| surfaces.cn(g);
-                let (pass, e) = super::edge_setup::build_edge_pass(
-                    m,
-                    &cnode,
-                    ty.igap(),
-                    common.idel,
-                    &sides,
-                    &kw,
-                )?;
-                sizes.l_sum += e.l_sum;
-                sizes.n_edges += e.n_edges;
-                sizes.l_min = sizes.l_min.min(e.l_min);
-                sizes.gs_max = sizes.gs_max.max(e.gs_max);
-                sizes.gm_max = sizes.gm_max.max(e.gm_max);
-                sizes.edge_gapmin = e.gapmin;
-                pass
-            },
-        );
+        passes.push(if !sides.sec_segs.is_empty() {
+            let mut pass = build_pass(m, surfaces, ty, &common, &sides, &mut sizes, &kw)?;
+            add_secondary_segments(m, surfaces, ty, &sides, &mut pass, &kw)?;
+            sizes.gs_max = sizes
+                .gs_max
+                .max(pass.sec_gap.iter().fold(0.0, |a, &b| a.max(b)));
+            pass
+        } else if sides.sec_edges.is_empty() && sides.main_edges.is_empty() {
+            build_pass(m, surfaces, ty, &common, &sides, &mut sizes, &kw)?
+        } else {
+            let cnode = |g: u32| surfaces.cn(g);
+            let (pass, e) =
+                super::edge_setup::build_edge_pass(m, &cnode, ty.igap(), common.idel, &sides, &kw)?;
+            sizes.l_sum += e.l_sum;
+            sizes.n_edges += e.n_edges;
+            sizes.l_min = sizes.l_min.min(e.l_min);
+            sizes.gs_max = sizes.gs_max.max(e.gs_max);
+            sizes.gm_max = sizes.gm_max.max(e.gm_max);
+            sizes.edge_gapmin = e.gapmin;
+            pass
+        });
     }
     let l_min = if sizes.l_min.is_finite() {
         sizes.l_min
@@ -541,6 +543,7 @@ fn build_pass(
         seg_elem,
         sec: sec_c,
         sec_edges: Vec::new(),
+        sec_segs: Vec::new(),
         self_contact: false,
         sec_k,
         sec_gap,
@@ -555,6 +558,32 @@ fn build_pass(
         pass.sec_start_seg = starter_closest_segments(m, surfaces.all, &pass);
     }
     Ok(pass)
+}
+
+/// A segment-to-segment pass's secondary side: its segments as cnodes,
+/// each with its element's data as a main segment has it (`sec_k`,
+/// `sec_gap`, `sec_lmin` by segment), the largest diagonal among them too.
+fn add_secondary_segments(
+    m: &Model,
+    surfaces: &Surfaces,
+    ty: &dyn InterfaceType,
+    sides: &PassSides,
+    pass: &mut Pass,
+    kw: &str,
+) -> Result<(), String> {
+    pass.self_contact = sides.self_contact;
+    for s in sides.sec_segs {
+        let d = segment_data(m, &surfaces.faces, s, ty, None).map_err(|e| format!("{kw}: {e}"))?;
+        let x = s.map(|n| m.nodes.x[n as usize]);
+        pass.sec_segs.push(s.map(|g| surfaces.cn(g)));
+        pass.sec_k.push(d.k);
+        pass.sec_gap.push(d.gap);
+        pass.sec_lmin.push(geo::min_edge(&x, s[3] == s[2]));
+        pass.max_diag = pass
+            .max_diag
+            .max(super::search::Aabb::of_points(&x).diagonal());
+    }
+    Ok(())
 }
 
 /// The segments around each main node, CSR over the nodes of `segs`

@@ -80,6 +80,8 @@ pub struct ElementSize {
     pub dmax: f64,
     /// The solid's volume.
     pub volume: f64,
+    /// The element's mass (a shell's ρ·A·t, a solid's ρ·V).
+    pub mass: f64,
 }
 
 /// LS-DYNA's SOFT = 0 penalty stiffness (`model::contact::DynaPenalty`):
@@ -136,6 +138,7 @@ mod tests {
             area: 25.0,
             dmax: 50f64.sqrt(),
             volume: 0.0,
+            mass: 0.0,
         };
         assert!((dyna_soft0(0.1, &shell) - 0.1 * 175.0 * 25.0 / 50f64.sqrt()).abs() < 1e-12);
         let solid = ElementSize {

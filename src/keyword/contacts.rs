@@ -16,8 +16,18 @@
 //! - contact thickness half the shell thickness on each side (TYPE7's
 //!   variable gap, Igap 1); Coulomb friction FS (DC 0).
 //!
-//! Other SOFT values, SST/MST, SFST/SFMT, DC, VC, box and set types not read
-//! are refused by name.
+//! SOFT = 2 on `*CONTACT_AUTOMATIC_SINGLE_SURFACE` and
+//! `*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE` is LS-DYNA's segment-based
+//! contact (`contact::interfaces::dyna_segment`: segment pairs, the
+//! initial penetration as baseline, k from the segment masses and the
+//! time step, DEPTH 5 edge-to-edge); the keyword gives it as a TYPE7 card
+//! (with the surface-to-surface form's SSID surface as its secondary
+//! surface) whose `DynaPenalty` says SOFT 2, and that type takes it.
+//!
+//! Other SOFT values (and SOFT 2 nodes to surface, SOFT 0/1 surface to
+//! surface), SBOPT other than 2, DEPTH other than 2 or 5 on SOFT 2,
+//! FRCFRQ > 1, SST/MST, SFST/SFMT, DC, VC, box and set types not read are
+//! refused by name.
 
 use super::card::Cards;
 use super::source::Block;
@@ -58,6 +68,7 @@ pub fn control(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
 enum Form {
     SingleSurface,
     NodesToSurface,
+    SurfaceToSurface,
 }
 
 pub fn single_surface(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
@@ -66,6 +77,10 @@ pub fn single_surface(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResul
 
 pub fn nodes_to_surface(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
     contact(b, cards, ctx, Form::NodesToSurface)
+}
+
+pub fn surface_to_surface(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
+    contact(b, cards, ctx, Form::SurfaceToSurface)
 }
 
 fn contact(b: &Block, cards: &mut Cards, ctx: &mut Ctx, form: Form) -> InputResult<()> {
@@ -111,19 +126,35 @@ fn contact(b: &Block, cards: &mut Cards, ctx: &mut Ctx, form: Form) -> InputResu
             ctx.refuse(&c3.loc(), &kw, format!("field {name}"));
         }
     }
-    let (soft, sofscl) = optional_cards(cards, ctx, &kw)?;
+    let (soft, sofscl, depth) = optional_cards(cards, ctx, &kw)?;
+    match (form, soft) {
+        (Form::NodesToSurface, 2) => ctx.refuse(
+            &loc,
+            &kw,
+            "SOFT 2 on a nodes-to-surface contact (segment-based contact pairs segments)",
+        ),
+        (Form::SurfaceToSurface, 0 | 1) => ctx.refuse(
+            &loc,
+            &kw,
+            format!("SOFT {soft} on a surface-to-surface contact (SOFT 2 is computed)"),
+        ),
+        _ => {}
+    }
     let surf = match form {
         Form::SingleSurface => parts_surface(ctx, ssid, sstyp, &loc, &kw, "SSID")?,
-        Form::NodesToSurface => parts_surface(ctx, msid, mstyp, &loc, &kw, "MSID")?,
+        Form::NodesToSurface | Form::SurfaceToSurface => {
+            parts_surface(ctx, msid, mstyp, &loc, &kw, "MSID")?
+        }
     };
     let grnod = match form {
         Form::SingleSurface => 0,
         Form::NodesToSurface => secondary_nodes(ctx, ssid, sstyp, &loc, &kw)?,
+        Form::SurfaceToSurface => parts_surface(ctx, ssid, sstyp, &loc, &kw, "SSID")?,
     };
     if id == 0 {
         id = ctx.deck.interfaces.len() as Id + 1;
     }
-    let t = type7(
+    let mut t = type7(
         grnod,
         surf,
         fs,
@@ -136,8 +167,13 @@ fn contact(b: &Block, cards: &mut Cards, ctx: &mut Ctx, form: Form) -> InputResu
             sfm,
             soft,
             sofscl,
+            depth,
         },
     );
+    if form == Form::SurfaceToSurface {
+        // The secondary side is a surface (its segments, for SOFT 2).
+        t.ists = 1;
+    }
     ctx.deck.interfaces.push(InterfaceSpec {
         id,
         unit_id: 0,
@@ -151,20 +187,22 @@ fn contact(b: &Block, cards: &mut Cards, ctx: &mut Ctx, form: Form) -> InputResu
 }
 
 /// Optional cards A (SOFT SOFSCL LCIDAB MAXPAR SBOPT DEPTH BSORT FRCFRQ)
-/// and B (PENMAX THKOPT SHLTHK SNLOG ISYM I2D3D SLDTHK SLDSTF): SOFT 0 is
-/// computed; the options that change SOFT 0's answer are refused.
-fn optional_cards(cards: &mut Cards, ctx: &mut Ctx, kw: &str) -> InputResult<(i64, f64)> {
+/// and B (PENMAX THKOPT SHLTHK SNLOG ISYM I2D3D SLDTHK SLDSTF): SOFT 0, 1
+/// and 2 are computed; the options that change their answer are refused.
+/// (SOFT, SOFSCL, DEPTH).
+fn optional_cards(cards: &mut Cards, ctx: &mut Ctx, kw: &str) -> InputResult<(i64, f64, i64)> {
     let std = cards.standard();
-    let mut soft = (0, 0.1);
+    let mut soft = (0, 0.1, 2);
     if let Some(a) = cards.next_opt(std.clone()) {
         soft.0 = a.int(0, "SOFT", 0)?;
-        if !(0..=1).contains(&soft.0) {
+        if !(0..=2).contains(&soft.0) {
             ctx.refuse(
                 &a.loc(),
                 kw,
-                format!("SOFT {} (SOFT 0 and 1 are computed)", soft.0),
+                format!("SOFT {} (SOFT 0, 1 and 2 are computed)", soft.0),
             );
         }
+        segment_options(&a, ctx, kw, soft.0, &mut soft.2)?;
         let s = a.real(1, "SOFSCL", 0.0)?;
         if s < 0.0 {
             return Err(a.err(
@@ -194,6 +232,45 @@ fn optional_cards(cards: &mut Cards, ctx: &mut Ctx, kw: &str) -> InputResult<(i6
         ctx.refuse(&c.loc(), kw, "optional cards C and beyond");
     }
     Ok(soft)
+}
+
+/// Optional card A's SBOPT (0 → 2: planar segments), DEPTH (0 → 2: surface
+/// penetration; 5: and edge-to-edge crossings) for SOFT 2, and FRCFRQ
+/// (0, 1: forces every cycle) for any SOFT.
+fn segment_options(
+    a: &super::card::Card,
+    ctx: &mut Ctx,
+    kw: &str,
+    soft: i64,
+    depth: &mut i64,
+) -> InputResult<()> {
+    if a.int(7, "FRCFRQ", 0)? > 1 {
+        ctx.refuse(&a.loc(), kw, "FRCFRQ > 1 (forces updated every cycle)");
+    }
+    if soft != 2 {
+        return Ok(());
+    }
+    let sbopt = a.int(4, "SBOPT", 0)?;
+    if !matches!(sbopt, 0 | 2) {
+        ctx.refuse(
+            &a.loc(),
+            kw,
+            format!("SBOPT {sbopt} (SBOPT 2, planar segments, is computed)"),
+        );
+    }
+    *depth = match a.int(5, "DEPTH", 0)? {
+        0 | 2 => 2,
+        5 => 5,
+        d => {
+            ctx.refuse(
+                &a.loc(),
+                kw,
+                format!("DEPTH {d} on SOFT 2 (2 surface, 5 surface and edge to edge are computed)"),
+            );
+            2
+        }
+    };
+    Ok(())
 }
 
 /// The TYPE7 options of a SOFT = 0 contact: variable gap (half thicknesses),

@@ -188,6 +188,10 @@ const TRANSLATORS: &[(&str, Translate)] = &[
         "CONTACT_AUTOMATIC_NODES_TO_SURFACE",
         contacts::nodes_to_surface,
     ),
+    (
+        "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE",
+        contacts::surface_to_surface,
+    ),
     ("CONTROL_CONTACT", contacts::control),
     ("RIGIDWALL_PLANAR", walls_masses::planar),
     ("RIGIDWALL_PLANAR_ORTHO", walls_masses::planar),
@@ -217,6 +221,14 @@ const SAFE_TO_SKIP: &[(&str, &str)] = &[
     (
         "CONTROL_OUTPUT",
         "listing options: they change nothing in the solution",
+    ),
+    (
+        "CONTROL_UNITS",
+        "the units' names for output only: LS-DYNA converts no value of the deck with it, nor do we",
+    ),
+    (
+        "CONTROL_ENERGY",
+        "which energies are computed for output: it changes nothing in the solution",
     ),
 ];
 

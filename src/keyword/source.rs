@@ -12,6 +12,8 @@
 //! - `*INCLUDE` is replaced by the lines of the files it names, relative
 //!   to the including file's folder or to a folder of `*INCLUDE_PATH`
 //!   (`*INCLUDE_PATH_RELATIVE` too); `*END` ends the file it is in;
+//!   `*INCLUDE_TRANSFORM` too when its offsets, unit factors and
+//!   transformation change nothing (else an error naming the field);
 //! - `*PARAMETER` defines names that a field of any later card may give as
 //!   `&NAME` (or `-&NAME`);
 //! - every other line belongs to the keyword above it.
@@ -168,6 +170,21 @@ impl Reader {
                     }
                     continue;
                 }
+                "INCLUDE_TRANSFORM" => {
+                    let data = take_data(&mut lines);
+                    let Some((j, name)) = data.first() else {
+                        return Err(InputError::new(
+                            here,
+                            "*INCLUDE_TRANSFORM",
+                            "FILENAME",
+                            "missing: expected the card FILENAME",
+                        ));
+                    };
+                    identity_transform(path, &data[1..])?;
+                    let target = self.locate(&dir, name.trim());
+                    self.file(&target, Some(&loc(path, j + 1)))?;
+                    continue;
+                }
                 "INCLUDE" => {
                     for (j, l) in take_data(&mut lines) {
                         let name = l.trim();
@@ -233,6 +250,58 @@ where
         }
     }
     out
+}
+
+/// `*INCLUDE_TRANSFORM`'s cards 2-5 (IDNOFF IDEOFF IDPOFF IDMOFF IDSOFF
+/// IDFOFF IDDOFF; IDROFF, PREFIX, SUFFIX; FCTMAS FCTTIM FCTLEN FCTTEM
+/// INCOUT1; TRANID) read as a plain `*INCLUDE` when they change nothing: no
+/// id offset, unit factors 1 (0 or blank read as 1), no transformation.
+/// Anything else is an error naming the field: ids and values of the file
+/// are not offset, scaled or transformed yet.
+fn identity_transform(path: &Path, cards: &[(usize, String)]) -> InputResult<()> {
+    const NAMES: [&[&str]; 4] = [
+        &[
+            "IDNOFF", "IDEOFF", "IDPOFF", "IDMOFF", "IDSOFF", "IDFOFF", "IDDOFF",
+        ],
+        &["IDROFF", "", "PREFIX", "SUFFIX"],
+        &["FCTMAS", "FCTTIM", "FCTLEN", "FCTTEM", "INCOUT1"],
+        &["TRANID"],
+    ];
+    for (card, (j, text)) in cards.iter().enumerate().take(NAMES.len()) {
+        let fields: Vec<String> = if text.contains(',') {
+            text.split(',').map(|f| f.trim().to_string()).collect()
+        } else {
+            let b = text.as_bytes();
+            (0..b.len().div_ceil(10))
+                .map(|i| {
+                    String::from_utf8_lossy(&b[10 * i..(10 * i + 10).min(b.len())])
+                        .trim()
+                        .to_string()
+                })
+                .collect()
+        };
+        for (f, name) in fields.iter().zip(NAMES[card]) {
+            let neutral = match (card, *name) {
+                (_, "") | (2, "INCOUT1") => true,
+                (2, "FCTTEM") => f.is_empty(),
+                (2, _) => f.is_empty() || matches!(f.parse::<f64>(), Ok(v) if v == 0.0 || v == 1.0),
+                (1, "PREFIX" | "SUFFIX") => f.is_empty(),
+                _ => f.is_empty() || matches!(f.parse::<f64>(), Ok(v) if v == 0.0),
+            };
+            if !neutral {
+                return Err(InputError::new(
+                    loc(path, j + 1),
+                    "*INCLUDE_TRANSFORM",
+                    name,
+                    format!(
+                        "{f}: the included file's ids and values are not offset, scaled or transformed yet (expected {})",
+                        if card == 2 { "1" } else { "0 or blank" }
+                    ),
+                ));
+            }
+        }
+    }
+    Ok(())
 }
 
 fn loc(path: &Path, line: usize) -> Loc {

@@ -36,6 +36,11 @@ pub struct Pass {
     /// `sec_gap` and `sec_lmin` are indexed by edge).
     #[serde(default)]
     pub sec_edges: Vec<[u32; 2]>,
+    /// Segment-to-segment passes: the secondary segments as cnodes (a
+    /// triangle repeats its third node; `sec_k`, `sec_gap` and `sec_lmin`
+    /// are indexed by segment).
+    #[serde(default)]
+    pub sec_segs: Vec<[u32; 4]>,
     /// Both sides hold the same edges (self-contact): of the two
     /// orientations of a pair only the one whose main edge's first node has
     /// the larger node id is a candidate.
@@ -76,34 +81,47 @@ pub struct Pass {
 }
 
 impl Pass {
-    /// Number of secondary entities (nodes or edges).
+    /// Number of secondary entities (nodes, edges or segments).
     pub fn n_sec(&self) -> usize {
-        if self.sec_edges.is_empty() {
-            self.sec.len()
-        } else {
+        if self.is_edge_pass() {
             self.sec_edges.len()
+        } else if self.is_segment_pass() {
+            self.sec_segs.len()
+        } else {
+            self.sec.len()
         }
     }
     /// The pass pairs edges with edges.
     pub fn is_edge_pass(&self) -> bool {
         !self.sec_edges.is_empty()
     }
+    /// The pass pairs segments with segments.
+    pub fn is_segment_pass(&self) -> bool {
+        !self.sec_segs.is_empty()
+    }
+    /// The secondary entities are edges or segments, not nodes: each is
+    /// computed by the lowest rank holding all its nodes.
+    pub fn is_entity_pass(&self) -> bool {
+        self.is_edge_pass() || self.is_segment_pass()
+    }
     /// Secondary entity k's nodes.
     pub fn sec_side(&self, k: usize) -> Side {
-        if self.sec_edges.is_empty() {
-            Side::node(self.sec[k])
-        } else {
+        if self.is_edge_pass() {
             Side::edge(self.sec_edges[k])
+        } else if self.is_segment_pass() {
+            Side::segment(&self.sec_segs[k])
+        } else {
+            Side::node(self.sec[k])
         }
     }
     /// Secondary entity k as its pairs' sum key and restart record name it:
-    /// a node's global node index, an edge's index in the pass (both the
-    /// same on every rank).
+    /// a node's global node index, an edge's or segment's index in the pass
+    /// (both the same on every rank).
     pub fn sec_key(&self, k: usize, nodes_g: &[u32]) -> u32 {
-        if self.sec_edges.is_empty() {
-            nodes_g[self.sec[k] as usize]
-        } else {
+        if self.is_entity_pass() {
             k as u32
+        } else {
+            nodes_g[self.sec[k] as usize]
         }
     }
     /// Segments around main cnode `c` (empty when `c` is on no segment).

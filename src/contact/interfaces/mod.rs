@@ -52,7 +52,7 @@ pub enum CandidateKind {
     NodeToSegment,
     /// An edge against an edge (TYPE11, TYPE25 edges).
     EdgeToEdge,
-    /// A segment against a segment (TYPE24, 25).
+    /// A segment against a segment (LS-DYNA's SOFT = 2).
     SegmentToSegment,
     /// A node against an ellipsoid (TYPE14, 15).
     NodeToEllipsoid,
@@ -220,6 +220,9 @@ pub struct PassSides<'a> {
     /// Edge-to-edge passes (empty otherwise): global node indices.
     pub sec_edges: &'a [[u32; 2]],
     pub main_edges: &'a [[u32; 2]],
+    /// Segment-to-segment passes (empty otherwise): the secondary segments
+    /// (global node indices) against `main`.
+    pub sec_segs: &'a [[u32; 4]],
     /// Both sides are the same edges (self-contact): each pair of edges is
     /// computed once.
     pub self_contact: bool,
@@ -259,6 +262,9 @@ pub struct PairContext<'a> {
     /// `Some(fac)` when it computes the forces, fac being the interface's
     /// normal force per unit penetration this cycle. `None` for other types.
     pub scale: Option<f64>,
+    /// The interface's memory this cycle ([`InterfaceType::advance_memory`]),
+    /// the same on every rank.
+    pub memory: [f64; 2],
 }
 
 /// What a kernel decides for one pair.
@@ -305,6 +311,7 @@ pub trait InterfaceType: Sync {
             main: &i.main_segments,
             sec_edges: &[],
             main_edges: &[],
+            sec_segs: &[],
             self_contact: false,
         }]
     }
@@ -429,6 +436,12 @@ pub trait InterfaceType: Sync {
     fn total_force(&self, _p_max: f64, _memory: &mut [f64; 2]) -> (f64, f64) {
         (0.0, f64::INFINITY)
     }
+
+    /// Types that are not total-force ones: the interface's memory from
+    /// cycle to cycle (zeros at the start, the same on every rank), advanced
+    /// once per cycle before the pairs with this cycle's step `dt` (0 before
+    /// the first step); the kernels read it as `PairContext::memory`.
+    fn advance_memory(&self, _memory: &mut [f64; 2], _dt: f64) {}
 
     /// Analytic main surfaces on a rigid body: the body (index into the
     /// model's rigid bodies) that takes each pair's reaction, −F at the
@@ -562,6 +575,9 @@ registry! {
     14 => type14::Type14,
     24 => type24::Type24,
     25 => type25::Type25,
+    // LS-DYNA's segment-based contact (SOFT = 2): keyword decks only, no
+    // Radioss number (`dyna_segment::DYNA_SEGMENT`).
+    1002 => dyna_segment::DynaSegment,
 }
 
 #[cfg(test)]
@@ -605,7 +621,7 @@ mod tests {
 
     #[test]
     fn every_registered_number_resolves_to_its_type_and_candidate_kind() {
-        assert_eq!(TypeOptions::NUMBERS, &[3, 5, 6, 7, 11, 14, 24, 25]);
+        assert_eq!(TypeOptions::NUMBERS, &[3, 5, 6, 7, 11, 14, 24, 25, 1002]);
         let expect = [
             (3, CandidateKind::NodeToSegment, CandidateSearch::Walk),
             (5, CandidateKind::NodeToSegment, CandidateSearch::Walk),
@@ -619,6 +635,7 @@ mod tests {
             ),
             (24, CandidateKind::NodeToSegment, CandidateSearch::Sort),
             (25, CandidateKind::NodeToSegment, CandidateSearch::Sort),
+            (1002, CandidateKind::SegmentToSegment, CandidateSearch::Sort),
         ];
         for (n, kind, search) in expect {
             let t = TypeOptions::by_number(n).unwrap_or_else(|| panic!("TYPE{n} registered"));

@@ -139,6 +139,7 @@ impl InterfaceType for Type11 {
             main: &[],
             sec_edges: &i.secondary_edges,
             main_edges: &i.main_edges,
+            sec_segs: &[],
             self_contact,
         }]
     }

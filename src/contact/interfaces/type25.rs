@@ -153,6 +153,7 @@ impl InterfaceType for Type25 {
             main,
             sec_edges: &[],
             main_edges: &[],
+            sec_segs: &[],
             self_contact: false,
         };
         if i.secondary_segments.is_empty() {

@@ -72,6 +72,7 @@ impl InterfaceType for Type3 {
                 main: &i.main_segments,
                 sec_edges: &[],
                 main_edges: &[],
+                sec_segs: &[],
                 self_contact: false,
             },
             PassSides {
@@ -80,6 +81,7 @@ impl InterfaceType for Type3 {
                 main: &i.secondary_segments,
                 sec_edges: &[],
                 main_edges: &[],
+                sec_segs: &[],
                 self_contact: false,
             },
         ]

@@ -118,6 +118,10 @@ impl InterfaceType for Type7 {
         let InterfaceKind::Type7(t) = kind else {
             return None;
         };
+        if t.dyna.is_some_and(|d| d.soft == 2) {
+            // LS-DYNA's segment-based contact (`dyna_segment`).
+            return None;
+        }
         let common = CardCommon {
             stfac: t.stfac,
             friction: FrictionLaw {
@@ -688,6 +692,7 @@ mod tests {
             dt: 1e-3,
             bodies: &[],
             scale: None,
+            memory: [0.0; 2],
         };
         let mut ns = NodeState::default();
         let mut st = PairState::default();

@@ -57,6 +57,10 @@ impl Aabb {
     pub fn is_empty(&self) -> bool {
         (0..3).any(|k| self.min[k] > self.max[k])
     }
+    /// The box's centre (NaN-free only for a non-empty box).
+    pub fn centre(&self) -> V3 {
+        [0, 1, 2].map(|k| 0.5 * (self.min[k] + self.max[k]))
+    }
     pub fn diagonal(&self) -> f64 {
         if self.is_empty() {
             return 0.0;

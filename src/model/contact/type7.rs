@@ -153,7 +153,7 @@ pub struct DynaPenalty {
     /// SFS, SFM (*CONTACT card 3, default 1).
     pub sfs: f64,
     pub sfm: f64,
-    /// SOFT (0 or 1) and SOFSCL (optional card A, default 0.1): SOFT = 1
+    /// SOFT (0, 1 or 2: segment-based, `contact::interfaces::dyna_segment`) and SOFSCL (optional card A, default 0.1): SOFT = 1
     /// takes the larger of the SOFT = 0 stiffness and the soft constraint
     /// SOFSCL·0.5·m*/Δt² (m* the smaller of the secondary node's and the
     /// main nodes' masses, Δt the solution step).
@@ -161,6 +161,9 @@ pub struct DynaPenalty {
     pub soft: i64,
     #[serde(default)]
     pub sofscl: f64,
+    /// DEPTH (optional card A): 5 adds edge-to-edge crossings to SOFT = 2.
+    #[serde(default)]
+    pub depth: i64,
 }
 
 /// TYPE7 adaptive-meshing card (Iadm = 2).
