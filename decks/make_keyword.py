@@ -134,7 +134,7 @@ R = ["#RADIOSS STARTER", f"# {name}: Radioss twin of {name}.k, written by decks/
      "/MAT/LAW1/2", "block steel", r20(rho), r20(e) + r20(nu),
      "/PROP/SHELL/1", "plate section", i10(1) + i10(0) * 3, r20(0) * 5,
      i10(3) + i10(1) + r20(t) + r20(1.0),
-     "/PROP/SOLID/2", "", i10(1) + i10(0) * 7, r20(1.5) + r20(0.06) + r20(0.1),
+     "/PROP/SOLID/2", "", i10(2) + i10(0) * 7, r20(1.5) + r20(0.06) + r20(0.1),
      "/PART/1", "plate", i10(1) + i10(1), "/PART/2", "block", i10(2) + i10(2),
      "/NODE"]
 R += [i10(n) + r20(x) + r20(y) + r20(z) for (n, x, y, z) in list(plate.values()) + list(block.values())]

@@ -194,13 +194,13 @@ fn a_keyword_nothing_computes_stops_run_by_name_and_check_lists_it() {
     let deck = variant(
         "kw-unsupported",
         "*PART\nblock",
-        "*MAT_RIGID\n         9   7.8e-06       210       0.3\n*PART\nblock",
+        "*HOURGLASS\n         9         1\n*PART\nblock",
     );
     let check = common::crashsim(&["check", deck.to_str().unwrap()]);
     common::ok(&check, "check");
     let listed = String::from_utf8_lossy(&check.stdout);
     assert!(
-        listed.contains("*MAT_RIGID: keyword not supported"),
+        listed.contains("*HOURGLASS: keyword not supported"),
         "{listed}"
     );
     let dir = common::scratch("kw-unsupported-run");
@@ -212,7 +212,7 @@ fn a_keyword_nothing_computes_stops_run_by_name_and_check_lists_it() {
     ]);
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(2), "{err}");
-    assert!(err.contains("*MAT_RIGID"), "{err}");
+    assert!(err.contains("*HOURGLASS"), "{err}");
     // An option of a computed keyword that nothing computes, by field.
     let deck = variant(
         "kw-unsupported-field",
@@ -459,6 +459,9 @@ fn more_bad_keyword_decks_exit_2_naming_file_line_keyword_and_field() {
         ("*INCLUDE\nkeyword_twin_block.k", "*INCLUDE_TRANSFORM\nkeyword_twin_block.k\n      1000", "118: error: *INCLUDE_TRANSFORM, field IDNOFF: 1000"),
         ("*INCLUDE\nkeyword_twin_block.k", "*INCLUDE_TRANSFORM\nkeyword_twin_block.k\n0,0,0,0,0,0,0\n0,,,\n1.,1.,25.4", "120: error: *INCLUDE_TRANSFORM, field FCTLEN: 25.4"),
         ("*INCLUDE\nkeyword_twin_block.k", "*INCLUDE_TRANSFORM\nkeyword_twin_block.k\n\n\n\n         3", "121: error: *INCLUDE_TRANSFORM, field TRANID: 3"),
+        (inc, "*MAT_RIGID\n         9   7.8e-06       210       0.3\n*INCLUDE", "117: error: *MAT_RIGID: the keyword ends early: expected card 2"),
+        (inc, "*MAT_RIGID\n         9   7.8e-06       210       0.3\n       1.0         9\n\n*INCLUDE", "118: error: *MAT_RIGID, field CON1: 9"),
+        (inc, "*CONSTRAINED_NODAL_RIGID_BODY\n         5         0        88\n*INCLUDE", "117: error: *CONSTRAINED_NODAL_RIGID_BODY, field NSID: node set 88 is not defined"),
         // Offsets 0, factors 1 and no transformation: a plain *INCLUDE; *CONTROL_UNITS and *CONTROL_ENERGY change nothing.
         ("*INCLUDE\nkeyword_twin_block.k", "*CONTROL_UNITS\n        mm        ms        kg\n*CONTROL_ENERGY\n         2\n*INCLUDE_TRANSFORM\nkeyword_twin_block.k\n         0         0\n\n         1       1.0         1\n         0", ""),
     ];
@@ -792,14 +795,8 @@ fn soft2_takes_the_initial_penetration_as_baseline_and_pushes_k_dp() {
 fn soft2_with_depth_5_catches_an_edge_crossing_that_soft0_misses() {
     // The upper plate's nodes are 1-9: their lowest z at the end.
     let lowest = |fs: &[u8]| -> f64 {
-        String::from_utf8_lossy(fs)
-            .lines()
-            .skip(1)
-            .map(|l| {
-                l.split(',')
-                    .map(|v| v.parse::<f64>().unwrap())
-                    .collect::<Vec<_>>()
-            })
+        rows_from(fs, 1.0)
+            .iter()
             .filter(|r| r[0] <= 9.0)
             .map(|r| r[3])
             .fold(f64::INFINITY, f64::min)
@@ -858,4 +855,199 @@ fn soft2_with_depth_5_catches_an_edge_crossing_that_soft0_misses() {
             "{what}: {err}"
         );
     }
+}
+
+/// The final state's rows (id, x, y, z, vx, vy, vz, …) of the nodes with
+/// ids from `lo` up.
+fn rows_from(fs: &[u8], lo: f64) -> Vec<Vec<f64>> {
+    String::from_utf8_lossy(fs)
+        .lines()
+        .skip(1)
+        .map(|l| {
+            l.split(',')
+                .map(|v| v.parse::<f64>().unwrap())
+                .collect::<Vec<f64>>()
+        })
+        .filter(|r| r[0] >= lo)
+        .collect()
+}
+
+/// The twin's block nodes (ids from 1001) and their positions, from its
+/// included mesh.
+fn block_positions() -> std::collections::BTreeMap<u64, Vec<f64>> {
+    let text = std::fs::read_to_string(twin_dir().join("keyword_twin_block.k")).unwrap();
+    text.lines()
+        .filter(|l| !l.starts_with(['*', '$']))
+        .filter_map(|l| {
+            let f: Vec<&str> = l.split_whitespace().collect();
+            (f.len() == 4).then(|| {
+                (
+                    f[0].parse().unwrap(),
+                    f[1..].iter().map(|v| v.parse().unwrap()).collect(),
+                )
+            })
+        })
+        .collect()
+}
+
+/// A *SET_NODE_LIST `sid` of the twin's block nodes.
+fn block_node_set(sid: u64) -> String {
+    let ids: Vec<u64> = block_positions().keys().copied().collect();
+    let mut set = format!("*SET_NODE_LIST\n{sid:>10}\n");
+    for c in ids.chunks(8) {
+        set += &c.iter().map(|n| format!("{n:>10}")).collect::<String>();
+        set.push('\n');
+    }
+    set
+}
+
+/// *MAT_RIGID and *CONSTRAINED_NODAL_RIGID_BODY (issue 17): the twin's
+/// free block (nodes 1001 on) made rigid flies on at its initial −2 m/s as
+/// one body, its nodes' distances kept, its elements out of the time step;
+/// a nodal rigid body over the same nodes runs the same bits; CMO 1 with
+/// CON1 = CON2 = 7 holds it where it is.
+#[test]
+fn a_rigid_material_and_a_nodal_rigid_body_move_the_block_as_one() {
+    let elastic = "*MAT_ELASTIC_TITLE\nblock steel\n2,7.85e-6,210.,0.3";
+    let rigid = variant(
+        "kw-rigid",
+        elastic,
+        "*MAT_RIGID_TITLE\nblock steel\n2,7.85e-6,210.,0.3\n0\n",
+    );
+    let (fs_r, en_r) = run(0, &rigid, "kw-rigid-run");
+    let t_end = rows(&en_r).last().unwrap()[0];
+    let block = rows_from(&fs_r, 1001.0);
+    // Rigid: every node moved by the same −2 mm/ms · t along x.
+    let x0 = block_positions();
+    assert!(block.len() >= 45, "{} block nodes", block.len());
+    for r in &block {
+        let Some(p) = x0.get(&(r[0] as u64)) else {
+            continue; // the body's main node
+        };
+        assert!(
+            (r[1] - p[0] + 2.0 * t_end).abs() < 1e-9
+                && (r[2] - p[1]).abs() < 1e-9
+                && (r[3] - p[2]).abs() < 1e-9,
+            "node {}: {:?} from {p:?}",
+            r[0],
+            &r[1..4]
+        );
+        assert!(
+            (r[4] + 2.0).abs() < 1e-9 && r[5].abs() < 1e-9 && r[6].abs() < 1e-9,
+            "node {}: v = {:?}",
+            r[0],
+            &r[4..7]
+        );
+    }
+    let set = block_node_set(77);
+    let nodal = variant(
+        "kw-nodal-rigid",
+        "*INCLUDE",
+        &format!("{set}*CONSTRAINED_NODAL_RIGID_BODY\n        50         0        77\n*INCLUDE"),
+    );
+    let (fs_n, _) = run(0, &nodal, "kw-nodal-rigid-run");
+    assert!(
+        fs_n == fs_r,
+        "the nodal rigid body differs from the rigid material"
+    );
+    let fixed = variant(
+        "kw-rigid-fixed",
+        elastic,
+        "*MAT_RIGID_TITLE\nblock steel\n2,7.85e-6,210.,0.3\n1.0,7,7\n",
+    );
+    let (fs_f, _) = run(0, &fixed, "kw-rigid-fixed-run");
+    for r in rows_from(&fs_f, 1001.0) {
+        assert!(r[4..7].iter().all(|v| *v == 0.0), "node {} moves", r[0]);
+    }
+}
+
+/// *RIGIDWALL_PLANAR_MOVING (issue 17): a 0.01 kg wall at x = 59.5 (normal
+/// +x) thrown at +1 mm/ms against the twin's free block (15.7 g at
+/// −2 mm/ms, its face at x = 60): the wall's node takes the block's impact
+/// (it turns back) and the x-momentum of wall and block is conserved
+/// within 0.1 % (the block's nodal masses lumped from its bricks).
+#[test]
+fn a_moving_rigid_wall_meets_the_block_and_conserves_momentum() {
+    let set = block_node_set(77);
+    let wall = format!(
+        "{set}*RIGIDWALL_PLANAR_MOVING\n        77\n      59.5         0         0      60.5         0         0\n      0.01       1.0\n*INCLUDE"
+    );
+    let deck = variant("kw-moving-wall", "*INCLUDE", &wall);
+    let (fs, _) = run(0, &deck, "kw-moving-wall-run");
+    // Lumped masses: an eighth of each brick's mass on each of its nodes.
+    let x0 = block_positions();
+    let text = std::fs::read_to_string(twin_dir().join("keyword_twin_block.k")).unwrap();
+    let mut mass: std::collections::HashMap<u64, f64> = Default::default();
+    let bricks = text.split("*ELEMENT_SOLID").nth(1).unwrap();
+    for l in bricks.lines().skip(1).take_while(|l| !l.starts_with('*')) {
+        let f: Vec<u64> = l.split_whitespace().map(|v| v.parse().unwrap()).collect();
+        let n = &f[2..10];
+        let lo = |k: usize| n.iter().map(|i| x0[i][k]).fold(f64::INFINITY, f64::min);
+        let hi = |k: usize| n.iter().map(|i| x0[i][k]).fold(f64::NEG_INFINITY, f64::max);
+        let m = 7.85e-6 * (hi(0) - lo(0)) * (hi(1) - lo(1)) * (hi(2) - lo(2));
+        for i in n {
+            *mass.entry(*i).or_default() += m / 8.0;
+        }
+    }
+    let m_b: f64 = mass.values().sum();
+    let (m_w, p0) = (0.01, 0.01 * 1.0 - 2.0 * m_b);
+    let rows = rows_from(&fs, 1001.0);
+    let p_b: f64 = rows
+        .iter()
+        .filter_map(|r| Some(mass.get(&(r[0] as u64))? * r[4]))
+        .sum();
+    // The block's nodes, then the wall's node (the next free id).
+    let wall_v = rows.last().unwrap()[4];
+    assert!(wall_v < 0.0, "the wall turns back: {wall_v}");
+    let p1 = p_b + m_w * wall_v;
+    assert!((p1 - p0).abs() < 1e-3 * p0.abs(), "momentum {p0} -> {p1}");
+}
+
+/// A published LS-DYNA example (issue 17): Ansys pydyna's "ball_plate"
+/// (decks/published/ball_plate, MIT, unchanged): a rigid ball
+/// (*MAT_RIGID bricks) thrown onto a bilinear-plastic shell plate
+/// (*MAT_PIECEWISE_LINEAR_PLASTICITY, ELFORM 2, NIP 5) held at its edges,
+/// *CONTACT_AUTOMATIC_SINGLE_SURFACE over both with *CONTROL_CONTACT
+/// IGNORE 1, keywords in LS-DYNA's free order (the part set after the
+/// contact). It reads with `check`, runs its 10 ms: the plate takes most
+/// of the energy as plastic work and bulges down, the ball bounces back,
+/// the energy with the contact's closes within 3 %, and 2 ranks give the
+/// same bits.
+#[test]
+fn the_published_ball_plate_deck_reads_and_runs() {
+    let deck =
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("decks/published/ball_plate/ball_plate.k");
+    let check = common::crashsim(&["check", deck.to_str().unwrap()]);
+    common::ok(&check, "check ball_plate.k");
+    let listed = String::from_utf8_lossy(&check.stdout);
+    assert!(
+        listed.contains("rigid bodies               1") && !listed.contains("not computed"),
+        "{listed}"
+    );
+    let (fs, en) = run(0, &deck, "kw-ball-plate");
+    let e = rows(&en);
+    let total = |r: &Vec<f64>| r[3] + r[4] + r[5] + r[7] + r[8] - r[6];
+    let (first, last) = (&e[0], e.last().unwrap());
+    assert!(last[0] >= 10.0, "ends at {}", last[0]);
+    let drift = (total(last) - total(first)) / total(first);
+    assert!(drift.abs() < 0.03, "energy drifts by {drift}");
+    assert!(
+        last[3] > 0.5 * (first[4] + first[5]),
+        "internal {}",
+        last[3]
+    );
+    let nodes = rows_from(&fs, 1.0);
+    let plate_z = nodes
+        .iter()
+        .filter(|r| r[0] <= 289.0)
+        .map(|r| r[3])
+        .fold(0.0f64, f64::min);
+    assert!(plate_z < -10.0, "the plate bulges down: {plate_z}");
+    let ball: Vec<&Vec<f64>> = nodes
+        .iter()
+        .filter(|r| (290.0..=1940.0).contains(&r[0]))
+        .collect();
+    assert!(ball.iter().all(|r| r[6] > 0.0), "the ball bounces back");
+    let (fs2, en2) = run(2, &deck, "kw-ball-plate-np2");
+    assert!(fs2 == fs && en2 == en, "ball_plate differs on 2 ranks");
 }

@@ -169,22 +169,7 @@ pub fn velocity_generation(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> Input
                 format!("{kw} part {id}"),
                 &c.loc(),
             ),
-            1 => {
-                let parts = ctx.part_set(id).ok_or_else(|| {
-                    c.err(
-                        "ID",
-                        format!(
-                            "part set {id} is not defined (expected a *SET_PART before this card)"
-                        ),
-                    )
-                })?;
-                ctx.own_group(
-                    NodeGroupKind::Part,
-                    parts,
-                    format!("{kw} part set {id}"),
-                    &c.loc(),
-                )
-            }
+            1 => ctx.part_set_group(id, format!("{kw} part set {id}"), &c.loc(), &kw, "ID"),
             _ => {
                 return Err(c.err(
                     "STYP",

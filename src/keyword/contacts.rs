@@ -60,6 +60,89 @@ pub fn control(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
             ctx.refuse(&c.loc(), &kw, format!("field {name}"));
         }
     }
+    ctx.refuse_given(&c, &kw, &[(7, "ENMASS")], "", true)?;
+    // RWPNAL > 0 or < 0 treats rigid-wall nodes by penalty; ours are the
+    // constraint method (0): refused once the deck is read if it has a wall.
+    ctx.rwpnal = Some((c.real(1, "RWPNAL", 0.0)?, c.loc()));
+    optional_controls(cards, ctx, &kw)
+}
+
+/// `*CONTROL_CONTACT` cards 2-6 (each optional). What runs: card 2's NSBCS
+/// and INTERM (how often LS-DYNA searches: ours sorts whenever the motion
+/// since the last sort passes half the margin, every pair in reach found)
+/// and XPENE 0 or 4 (its default); card 4's IGNORE (0; 1 and 2: initial
+/// penetrations kept as the gap's baseline, TYPE7 Inacti 5), FRCENG,
+/// SKIPRWG, OUTSEG (output only). Every other field given and not 0 is
+/// refused by name (card 3's default friction and scale factors, card 5's
+/// symmetry and rigid-wall gaps, card 6's edge shape and stiffness option).
+fn optional_controls(cards: &mut Cards, ctx: &mut Ctx, kw: &str) -> InputResult<()> {
+    const REFUSED: [&[(usize, &str)]; 5] = [
+        &[
+            (0, "USRSTR"),
+            (1, "USRFRC"),
+            (5, "SSTHK"),
+            (6, "ECDT"),
+            (7, "TIEDPRJ"),
+        ],
+        &[
+            (0, "SFRIC"),
+            (1, "DFRIC"),
+            (2, "EDC"),
+            (3, "VFC"),
+            (4, "TH"),
+            (5, "TH_SF"),
+            (6, "PEN_SF"),
+            (7, "PTSCL"),
+        ],
+        &[
+            (4, "SPOTSTP"),
+            (5, "SPOTDEL"),
+            (6, "SPOTHIN"),
+            (7, "DIR_TIE"),
+        ],
+        &[
+            (0, "ISYM"),
+            (1, "NSEROD"),
+            (2, "RWGAPS"),
+            (3, "RWGDTH"),
+            (4, "RWKSF"),
+            (5, "ICOV"),
+            (6, "SWRADF"),
+            (7, "ITHOFF"),
+        ],
+        &[
+            (0, "SHLEDG"),
+            (1, "PSTIFF"),
+            (2, "ITHCNT"),
+            (3, "TDCNOF"),
+            (4, "FTALL"),
+            (6, "SHLTRW"),
+            (7, "IGACTC"),
+        ],
+    ];
+    for (n, fields) in REFUSED.iter().enumerate() {
+        let std = cards.standard();
+        let Some(c) = cards.next_opt(std) else {
+            return Ok(());
+        };
+        ctx.refuse_given(&c, kw, fields, "", false)?;
+        match n {
+            0 => {
+                let xpene = c.real(4, "XPENE", 0.0)?;
+                if xpene != 0.0 && xpene != 4.0 {
+                    ctx.refuse(&c.loc(), kw, "field XPENE (0 or 4 runs)");
+                }
+            }
+            2 => {
+                let ignore = c.int(0, "IGNORE", 0)?;
+                if !(0..=2).contains(&ignore) {
+                    return Err(c.err("IGNORE", format!("{ignore}: expected 0, 1 or 2")));
+                }
+                ctx.ignore_penetrations = ignore > 0;
+            }
+            _ => {}
+        }
+    }
     Ok(())
 }
 
@@ -341,15 +424,8 @@ fn parts_surface(
     }
     let parts: Vec<i64> = match styp {
         3 => vec![sid as i64],
-        2 => ctx.part_set(sid).ok_or_else(|| {
-            crate::model::InputError::new(
-                loc.clone(),
-                kw,
-                field,
-                format!("part set {sid} is not defined (expected a *SET_PART before this contact)"),
-            )
-        })?,
-        5 => Vec::new(),
+        // Filled once the deck is read (`Ctx::resolve_part_sets`).
+        2 | 5 => Vec::new(),
         _ => {
             ctx.refuse(
                 loc,
@@ -362,6 +438,11 @@ fn parts_surface(
     let id = ctx.own_id();
     if styp == 5 {
         ctx.all_parts_surfaces.push(ctx.deck.surfaces.len());
+    }
+    if styp == 2 {
+        let target = super::PartSetTarget::Surface(ctx.deck.surfaces.len());
+        ctx.part_sets_used
+            .push((sid, target, loc.clone(), kw.into(), field.into()));
     }
     ctx.deck.surfaces.push(SurfaceCard {
         id,
@@ -394,24 +475,7 @@ fn secondary_nodes(ctx: &mut Ctx, sid: Id, styp: i64, loc: &Loc, kw: &str) -> In
             format!("{kw} part {sid}"),
             loc,
         )),
-        2 => {
-            let parts = ctx.part_set(sid).ok_or_else(|| {
-                crate::model::InputError::new(
-                    loc.clone(),
-                    kw,
-                    "SSID",
-                    format!(
-                        "part set {sid} is not defined (expected a *SET_PART before this contact)"
-                    ),
-                )
-            })?;
-            Ok(ctx.own_group(
-                NodeGroupKind::Part,
-                parts,
-                format!("{kw} part set {sid}"),
-                loc,
-            ))
-        }
+        2 => Ok(ctx.part_set_group(sid, format!("{kw} part set {sid}"), loc, kw, "SSID")),
         _ => {
             ctx.refuse(
                 loc,
@@ -439,6 +503,20 @@ pub fn finish(ctx: &mut Ctx) {
             if let Some(d) = &mut t.dyna {
                 d.slsfac = ctx.slsfac;
             }
+            if ctx.ignore_penetrations {
+                // IGNORE 1/2: initial penetrations kept, the gap reduced
+                // to them and following the node back out (Inacti 5).
+                t.inacti = 5;
+            }
+        }
+    }
+    if let Some((rwpnal, loc)) = ctx.rwpnal.clone() {
+        if rwpnal != 0.0 && !ctx.deck.rigid_walls.is_empty() {
+            ctx.refuse(
+                &loc,
+                "*CONTROL_CONTACT",
+                "field RWPNAL with a *RIGIDWALL (0, the constraint method, is computed)",
+            );
         }
     }
 }

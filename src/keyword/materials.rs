@@ -100,7 +100,7 @@ pub fn plastic_kinematic(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputRe
 }
 
 /// MID RO E PR, checked.
-fn common(c: &super::card::Card) -> InputResult<(u64, f64, f64, f64)> {
+pub(super) fn common(c: &super::card::Card) -> InputResult<(u64, f64, f64, f64)> {
     let id = c.id(0, "MID")?;
     let rho = c.real(1, "RO", 0.0)?;
     if rho <= 0.0 {
@@ -117,7 +117,7 @@ fn common(c: &super::card::Card) -> InputResult<(u64, f64, f64, f64)> {
     Ok((id, rho, e, nu))
 }
 
-fn material(
+pub(super) fn material(
     id: u64,
     title: String,
     rho: f64,

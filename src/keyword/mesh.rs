@@ -56,7 +56,7 @@ pub fn node(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
 }
 
 /// TC/RC code → fixed x, y, z.
-fn constraint(code: i64) -> Option<[bool; 3]> {
+pub(super) fn constraint(code: i64) -> Option<[bool; 3]> {
     Some(match code {
         0 => [false; 3],
         1 => [true, false, false],

@@ -15,6 +15,13 @@
 //! or unsupported: recorded by name so that `run` refuses the deck. An
 //! option of a computed keyword that nothing computes (a non-zero EOSID,
 //! a mass-scaling DT2MS) is refused the same way, by keyword and field.
+//!
+//! Keywords come in any order, as LS-DYNA reads them: what depends on
+//! keywords read later is completed once the whole deck is read — the
+//! groups and surfaces of part sets (`Ctx::resolve_part_sets`), every-part
+//! surfaces and SLSFAC (`contacts::finish`), rigid bodies and their new
+//! main nodes (`rigid::finish`), moving walls' nodes (`walls_masses::finish`)
+//! — before the references are checked (`references::check`).
 
 mod card;
 mod conditions;
@@ -24,6 +31,7 @@ mod loads;
 mod materials;
 mod mesh;
 mod references;
+mod rigid;
 mod sections;
 pub mod source;
 mod walls_masses;
@@ -43,8 +51,11 @@ pub(crate) struct Ctx<'a> {
     pub params: &'a Parameters,
     /// `*SET_PART_LIST` parts by set id.
     pub part_sets: Vec<(Id, Vec<i64>)>,
-    /// SLSFAC of `*CONTROL_CONTACT` (0.1 without it).
+    /// SLSFAC of `*CONTROL_CONTACT` (0.1 without it), its RWPNAL (checked
+    /// against the rigid walls once the deck is read) and IGNORE ≥ 1.
     pub slsfac: f64,
+    pub rwpnal: Option<(f64, Loc)>,
+    pub ignore_penetrations: bool,
     /// The interfaces the contact keywords made, and the surfaces that take
     /// every part (SSTYP 5), completed once the deck is read.
     pub contacts: Vec<usize>,
@@ -54,9 +65,26 @@ pub(crate) struct Ctx<'a> {
     /// Segment sets contacts name (id, where, keyword, field), checked once
     /// the deck is read.
     pub segment_sets_used: Vec<(Id, Loc, String, String)>,
+    /// Node sets keywords name (id, where, keyword, field) where the
+    /// reader makes its own group of them, checked once the deck is read.
+    pub node_sets_used: Vec<(Id, Loc, String, String)>,
+    /// Groups and surfaces made of a part set (set, which, where, keyword,
+    /// field), filled once the deck is read.
+    pub part_sets_used: Vec<(Id, PartSetTarget, Loc, String, String)>,
+    /// Rigid bodies made once the deck is read (`rigid::finish`), and the
+    /// moving walls (indices) whose node is made then.
+    pub rigid: Vec<rigid::PendingBody>,
+    pub moving_walls: Vec<usize>,
     /// Next id of a node group made for a keyword that names nodes or
     /// parts directly (above every id a deck writes).
     next_group: Id,
+}
+
+/// What a part set fills once the deck is read: a node group or a
+/// surface (indices in the deck's records).
+pub(crate) enum PartSetTarget {
+    Group(usize),
+    Surface(usize),
 }
 
 /// First id of the node groups the reader makes itself.
@@ -111,10 +139,61 @@ impl Ctx<'_> {
         })
     }
 
+    /// A new node at `x` (the next free node id), for a body or a wall the
+    /// reader makes once the deck is read.
+    pub fn add_node(&mut self, x: [f64; 3], loc: &Loc) -> Id {
+        let id = self.deck.nodes.iter().map(|n| n.id).max().unwrap_or(0) + 1;
+        self.deck.nodes.push(crate::deck::NodeCard {
+            id,
+            x,
+            loc: loc.clone(),
+        });
+        id
+    }
+
     /// An id for a group or surface the reader makes itself.
     pub fn own_id(&mut self) -> Id {
         self.next_group += 1;
         self.next_group - 1
+    }
+
+    /// A node group of the parts of `*SET_PART` `sid`, filled once the deck
+    /// is read (keywords come in any order; [`Self::resolve_part_sets`]).
+    pub fn part_set_group(
+        &mut self,
+        sid: Id,
+        title: String,
+        loc: &Loc,
+        kw: &str,
+        field: &str,
+    ) -> Id {
+        let g = self.own_group(crate::deck::NodeGroupKind::Part, Vec::new(), title, loc);
+        let target = PartSetTarget::Group(self.deck.node_groups.len() - 1);
+        self.part_sets_used
+            .push((sid, target, loc.clone(), kw.into(), field.into()));
+        g
+    }
+
+    /// Fills every group and surface made of a part set; an undefined set is
+    /// an error naming the keyword and field that name it.
+    pub fn resolve_part_sets(&mut self) -> InputResult<()> {
+        for (sid, target, loc, kw, field) in std::mem::take(&mut self.part_sets_used) {
+            let parts = self.part_set(sid).ok_or_else(|| {
+                InputError::new(
+                    loc,
+                    &kw,
+                    &field,
+                    format!("part set {sid} is not defined (expected a *SET_PART)"),
+                )
+            })?;
+            match target {
+                PartSetTarget::Group(i) => self.deck.node_groups[i].items = parts,
+                PartSetTarget::Surface(i) => {
+                    self.deck.surfaces[i].def = crate::deck::SurfaceDef::Parts(parts)
+                }
+            }
+        }
+        Ok(())
     }
 
     /// The parts of `*SET_PART` `id`.
@@ -169,6 +248,10 @@ const TRANSLATORS: &[(&str, Translate)] = &[
         materials::piecewise_linear,
     ),
     ("MAT_024", materials::piecewise_linear),
+    ("MAT_RIGID", rigid::material),
+    ("MAT_020", rigid::material),
+    ("CONSTRAINED_NODAL_RIGID_BODY", rigid::nodal_body),
+    ("CONSTRAINED_NODAL_RIGID_BODY_SPC", rigid::nodal_body),
     ("SET_NODE_LIST", conditions::node_set),
     ("SET_NODE", conditions::node_set),
     ("SET_PART_LIST", conditions::part_set),
@@ -196,6 +279,7 @@ const TRANSLATORS: &[(&str, Translate)] = &[
     ("RIGIDWALL_PLANAR", walls_masses::planar),
     ("RIGIDWALL_PLANAR_ORTHO", walls_masses::planar),
     ("RIGIDWALL_PLANAR_MOVING", walls_masses::planar),
+    ("RIGIDWALL_PLANAR_MOVING_ID", walls_masses::planar),
     ("RIGIDWALL_PLANAR_FINITE", walls_masses::planar),
     ("ELEMENT_MASS", walls_masses::mass),
     ("BOUNDARY_PRESCRIBED_MOTION_NODE", loads::prescribed_motion),
@@ -269,16 +353,25 @@ pub fn read(path: &Path) -> InputResult<Deck> {
         params: &params,
         part_sets: Vec::new(),
         slsfac: 0.1,
+        rwpnal: None,
+        ignore_penetrations: false,
         contacts: Vec::new(),
         all_parts_surfaces: Vec::new(),
         all_parts_groups: Vec::new(),
         segment_sets_used: Vec::new(),
+        node_sets_used: Vec::new(),
+        part_sets_used: Vec::new(),
+        rigid: Vec::new(),
+        moving_walls: Vec::new(),
         next_group: OWN_GROUPS,
     };
     for b in &src.blocks {
         translate(b, &mut ctx)?;
     }
+    ctx.resolve_part_sets()?;
     contacts::finish(&mut ctx);
+    rigid::finish(&mut ctx);
+    walls_masses::finish(&mut ctx);
     references::check(&ctx)?;
     Ok(ctx.deck)
 }

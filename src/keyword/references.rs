@@ -73,6 +73,11 @@ pub fn check(ctx: &Ctx) -> InputResult<()> {
             ));
         }
     }
+    for (id, loc, kw, field) in &ctx.node_sets_used {
+        if !groups.contains(id) {
+            return Err(e(loc, kw, field, format!("node set {id} is not defined")));
+        }
+    }
     for b in &d.bcs {
         if !groups.contains(&b.grnod) {
             return Err(e(

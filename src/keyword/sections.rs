@@ -7,8 +7,12 @@
 //!   hourglass); ELFORM 16 (fully integrated) → Ishell 12 (QBAT); every
 //!   other ELFORM is refused by name;
 //! - solids: ELFORM 1 (constant stress, one point, hourglass control) →
-//!   Isolid 1; ELFORM 2 (fully integrated, selectively reduced) → Isolid
-//!   14 (HA8); others refused.
+//!   Isolid 2: LS-DYNA's default hourglass form IHQ = 1 (*CONTROL_HOURGLASS)
+//!   is the standard viscous form on Hallquist's base vectors, the
+//!   reference guide's Isolid 2 ("viscous hourglass formulation without
+//!   orthogonality"; Isolid 1 is Flanagan-Belytschko's, IHQ 2/3); ELFORM 2
+//!   (fully integrated, selectively reduced) → Isolid 14 (HA8); others
+//!   refused.
 //!
 //! LS-DYNA's defaults are kept where ours differ: NIP 2 through the
 //! thickness (0 → 2), the shear factor SHRF 1 (0 → 1), the solid bulk
@@ -125,7 +129,8 @@ pub fn solid(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
         let id = c.id(0, "SECID")?;
         let elform = c.int(1, "ELFORM", 1)?;
         let isolid = match elform {
-            0 | 1 => 1,
+            // IHQ 1, the default: Hallquist's viscous form (module comment).
+            0 | 1 => 2,
             2 => 14,
             _ => {
                 ctx.refuse(

@@ -1,9 +1,13 @@
-//! `*RIGIDWALL_PLANAR` and `*ELEMENT_MASS` (keyword manual volume I,
-//! "*RIGIDWALL_PLANAR", "*ELEMENT_MASS") → /RWALL/PLANE and /ADMAS.
+//! `*RIGIDWALL_PLANAR` (and `_MOVING`) and `*ELEMENT_MASS` (keyword manual
+//! volume I, "*RIGIDWALL_PLANAR", "*ELEMENT_MASS") → /RWALL/PLANE and
+//! /ADMAS. A moving wall (card 3: MASS V0) is /RWALL/PLANE's moving wall: a
+//! new node at the tail point (made once the deck is read) carrying MASS,
+//! starting at V0 along the normal; frictionless only (LS-DYNA's moving
+//! wall moves along its normal; ours is a free node).
 
 use super::card::Cards;
 use super::source::Block;
-use super::Ctx;
+use super::{base_name, Ctx};
 use crate::deck::{AddedMassCard, NodeGroupKind};
 use crate::model::{InputResult, RigidWallSpec};
 
@@ -14,8 +18,12 @@ use crate::model::{InputResult, RigidWallSpec};
 /// is refused by name).
 pub fn planar(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
     let kw = format!("*{}", b.name);
-    if b.name != "RIGIDWALL_PLANAR" && b.name != "RIGIDWALL_PLANAR_ID" {
-        // _ORTHO, _MOVING, _FINITE, _FORCES: not read.
+    let moving = b.name.starts_with("RIGIDWALL_PLANAR_MOVING");
+    if !matches!(
+        base_name(&b.name).0,
+        "RIGIDWALL_PLANAR" | "RIGIDWALL_PLANAR_MOVING"
+    ) {
+        // _ORTHO, _FINITE, _FORCES: not read.
         ctx.refuse(&b.loc, &kw, "this variant of *RIGIDWALL_PLANAR");
         return Ok(());
     }
@@ -83,6 +91,23 @@ pub fn planar(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
         ctx.refuse(&c2.loc(), &kw, "FRIC 1 (no sliding after contact)");
     }
     let (slide, f) = if fric == 0.0 { (0, 0.0) } else { (2, fric) };
+    let (mass, v0) = if moving {
+        if fric != 0.0 {
+            // LS-DYNA's wall moves along its normal only; ours is a free
+            // node, which friction would push sideways.
+            ctx.refuse(
+                &c2.loc(),
+                &kw,
+                "FRIC on a moving wall (frictionless is computed)",
+            );
+        }
+        moving_wall(cards, tail, head)?
+    } else {
+        (0.0, [0.0; 3])
+    };
+    if moving {
+        ctx.moving_walls.push(ctx.deck.rigid_walls.len());
+    }
     ctx.deck.rigid_walls.push(RigidWallSpec {
         id,
         title,
@@ -96,12 +121,38 @@ pub fn planar(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
         ffac: 0.0,
         ifq: 0,
         m: tail,
-        mass: 0.0,
-        v0: [0.0; 3],
+        mass,
+        v0,
         m1: head,
         loc: c1.loc(),
     });
     Ok(())
+}
+
+/// `_MOVING`'s card 3: MASS (> 0) and V0, the initial speed along the
+/// normal tail → head.
+fn moving_wall(cards: &mut Cards, tail: [f64; 3], head: [f64; 3]) -> InputResult<(f64, [f64; 3])> {
+    let std = cards.standard();
+    let c = cards.next(std, "card 3 (_MOVING): MASS V0")?;
+    let mass = c.real(0, "MASS", 0.0)?;
+    if mass <= 0.0 {
+        return Err(c.err("MASS", format!("{mass}: expected the wall's mass > 0")));
+    }
+    let v0 = c.real(1, "V0", 0.0)?;
+    let n = crate::vec3::sub(head, tail);
+    let n = crate::vec3::scale(n, v0 / crate::vec3::norm(n));
+    Ok((mass, n))
+}
+
+/// Once the deck is read: each moving wall's node, at its tail point.
+pub fn finish(ctx: &mut Ctx) {
+    for i in std::mem::take(&mut ctx.moving_walls) {
+        let (m, loc) = (
+            ctx.deck.rigid_walls[i].m,
+            ctx.deck.rigid_walls[i].loc.clone(),
+        );
+        ctx.deck.rigid_walls[i].node_id = ctx.add_node(m, &loc);
+    }
 }
 
 /// `*ELEMENT_MASS`: EID NID MASS PID (8, 8, 16, 8 columns), a lumped mass
