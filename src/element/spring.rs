@@ -207,12 +207,17 @@ impl AxialSpring {
 }
 
 /// Two nodal masses on a spring: ω² = k(1/m₁ + 1/m₂),
-/// Δt = (2/ω)(√(1+ξ²) − ξ), ξ = c/(2√(k μ)).
+/// Δt = (2/ω)(√(1+ξ²) − ξ), ξ = c/(2√(k μ)); a damper alone (k = 0):
+/// that bound's limit 2μ/c (the explicit update of μ·v̇ = −c·v is stable
+/// for Δt < 2μ/c).
 fn two_mass_dt([m1, m2]: [f64; 2], k: f64, c: f64) -> f64 {
-    if k <= 0.0 || m1 <= 0.0 || m2 <= 0.0 {
+    if m1 <= 0.0 || m2 <= 0.0 {
         return f64::INFINITY;
     }
     let mu = m1 * m2 / (m1 + m2);
+    if k <= 0.0 {
+        return if c > 0.0 { 2.0 * mu / c } else { f64::INFINITY };
+    }
     let w = (k / mu).sqrt();
     let xi = c / (2.0 * (k * mu).sqrt());
     (2.0 / w) * ((1.0 + xi * xi).sqrt() - xi)

@@ -293,3 +293,11 @@ fn options_not_computed_are_refused_by_name() {
         .unwrap_err()
         .contains("fct_ID1 = 9"));
 }
+
+#[test]
+fn a_damper_alone_bounds_the_step_by_2_mu_over_c() {
+    // μ = 0.5: the bound 2μ/c, the limit of the spring's bound as k → 0.
+    assert_eq!(two_mass_dt([1.0, 1.0], 0.0, 0.5), 2.0);
+    assert!((two_mass_dt([1.0, 1.0], 1e-12, 0.5) - 2.0).abs() < 1e-6);
+    assert_eq!(two_mass_dt([1.0, 1.0], 0.0, 0.0), f64::INFINITY);
+}

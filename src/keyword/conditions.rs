@@ -311,3 +311,34 @@ pub fn segment_set(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<(
     });
     Ok(())
 }
+
+/// `*SET_SHELL(_LIST)`: SID DA1 DA2 DA3 DA4 SOLVER, then shell ids, 8 a
+/// line. A contact's set type 1: its shells' faces, made into a surface
+/// once the deck is read (`Ctx::resolve_shell_sets`). (The attributes DA1-DA4
+/// only filter `_ADVANCED` sets, which are not read.)
+pub fn shell_set(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
+    title(b, cards)?;
+    let std = cards.standard();
+    let c = cards.next(std.clone(), "the card SID DA1 DA2 DA3 DA4 SOLVER")?;
+    let id = c.id(0, "SID")?;
+    if ctx.shell_sets.iter().any(|s| s.0 == id) {
+        return Err(c.err("SID", format!("shell set {id} is defined twice")));
+    }
+    let mut ids = Vec::new();
+    while let Some(d) = cards.next_opt(std.clone()) {
+        for i in 0..8 {
+            match d.id_opt(i, "EID")? {
+                0 => {}
+                e => ids.push(e),
+            }
+        }
+    }
+    if ids.is_empty() {
+        return Err(c.err(
+            "EID",
+            "no shell: expected lines of shell ids after this card",
+        ));
+    }
+    ctx.shell_sets.push((id, ids, c.loc()));
+    Ok(())
+}

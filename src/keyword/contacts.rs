@@ -24,8 +24,11 @@
 //! (with the surface-to-surface form's SSID surface as its secondary
 //! surface) whose `DynaPenalty` says SOFT 2, and that type takes it.
 //!
-//! Other SOFT values (and SOFT 2 nodes to surface, SOFT 0/1 surface to
-//! surface), SBOPT other than 2, DEPTH other than 2 or 5 on SOFT 2,
+//! `*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE` with SOFT 0/1 is two node-to-
+//! surface TYPE7s, each surface's nodes on the other's segments (the second
+//! with SFS and SFM swapped), as a Radioss deck writes a symmetric contact.
+//!
+//! Other SOFT values (and SOFT 2 nodes to surface), SBOPT other than 2, DEPTH other than 2 or 5 on SOFT 2,
 //! FRCFRQ > 1, SST/MST, SFST/SFMT, DC, VC, box and set types not read are
 //! refused by name.
 
@@ -210,62 +213,84 @@ fn contact(b: &Block, cards: &mut Cards, ctx: &mut Ctx, form: Form) -> InputResu
         }
     }
     let (soft, sofscl, depth) = optional_cards(cards, ctx, &kw)?;
-    match (form, soft) {
-        (Form::NodesToSurface, 2) => ctx.refuse(
+    if (form, soft) == (Form::NodesToSurface, 2) {
+        ctx.refuse(
             &loc,
             &kw,
             "SOFT 2 on a nodes-to-surface contact (segment-based contact pairs segments)",
-        ),
-        (Form::SurfaceToSurface, 0 | 1) => ctx.refuse(
-            &loc,
-            &kw,
-            format!("SOFT {soft} on a surface-to-surface contact (SOFT 2 is computed)"),
-        ),
-        _ => {}
+        );
     }
-    let surf = match form {
-        Form::SingleSurface => parts_surface(ctx, ssid, sstyp, &loc, &kw, "SSID")?,
-        Form::NodesToSurface | Form::SurfaceToSurface => {
-            parts_surface(ctx, msid, mstyp, &loc, &kw, "MSID")?
-        }
-    };
-    let grnod = match form {
-        Form::SingleSurface => 0,
-        Form::NodesToSurface => secondary_nodes(ctx, ssid, sstyp, &loc, &kw)?,
-        Form::SurfaceToSurface => parts_surface(ctx, ssid, sstyp, &loc, &kw, "SSID")?,
-    };
     if id == 0 {
         id = ctx.deck.interfaces.len() as Id + 1;
     }
-    let mut t = type7(
-        grnod,
-        surf,
-        fs,
-        vdc,
-        bt,
-        dt,
-        DynaPenalty {
-            slsfac: ctx.slsfac,
-            sfs,
-            sfm,
-            soft,
-            sofscl,
-            depth,
-        },
-    );
-    if form == Form::SurfaceToSurface {
-        // The secondary side is a surface (its segments, for SOFT 2).
-        t.ists = 1;
-    }
-    ctx.deck.interfaces.push(InterfaceSpec {
+    let penalty = DynaPenalty {
+        slsfac: ctx.slsfac,
+        sfs,
+        sfm,
+        soft,
+        sofscl,
+        depth,
+    };
+    let side = |ctx: &mut Ctx, sid: Id, styp: i64, field: &str| -> InputResult<(Id, Id)> {
+        Ok((
+            secondary_nodes(ctx, sid, styp, &loc, &kw, field)?,
+            parts_surface(ctx, sid, styp, &loc, &kw, field)?,
+        ))
+    };
+    let one = |grnod, surf, dyna| type7(grnod, surf, fs, vdc, bt, dt, dyna);
+    let spec = |id, title: String, t: Type7| InterfaceSpec {
         id,
         unit_id: 0,
         title,
         kind: InterfaceKind::Type7(t),
         loc: loc.clone(),
-        ids_loc: loc,
-    });
-    ctx.contacts.push(ctx.deck.interfaces.len() - 1);
+        ids_loc: loc.clone(),
+    };
+    let specs = match form {
+        Form::SingleSurface => {
+            let surf = parts_surface(ctx, ssid, sstyp, &loc, &kw, "SSID")?;
+            vec![spec(id, title, one(0, surf, penalty))]
+        }
+        Form::NodesToSurface => {
+            let surf = parts_surface(ctx, msid, mstyp, &loc, &kw, "MSID")?;
+            let grnod = secondary_nodes(ctx, ssid, sstyp, &loc, &kw, "SSID")?;
+            vec![spec(id, title, one(grnod, surf, penalty))]
+        }
+        Form::SurfaceToSurface if soft == 2 => {
+            // Segment-based: the SSID surface's segments against MSID's.
+            let surf = parts_surface(ctx, msid, mstyp, &loc, &kw, "MSID")?;
+            let sec = parts_surface(ctx, ssid, sstyp, &loc, &kw, "SSID")?;
+            let mut t = one(sec, surf, penalty);
+            t.ists = 1;
+            vec![spec(id, title, t)]
+        }
+        Form::SurfaceToSurface => {
+            // Two-way node to surface: SSID's nodes on MSID's segments
+            // (SFS on the nodes, SFM on the segments), and MSID's nodes on
+            // SSID's segments (the factors swapped), as two interfaces, the
+            // second with an id of the reader's own.
+            let (s_nodes, s_surf) = side(ctx, ssid, sstyp, "SSID")?;
+            let (m_nodes, m_surf) = side(ctx, msid, mstyp, "MSID")?;
+            let back = DynaPenalty {
+                sfs: sfm,
+                sfm: sfs,
+                ..penalty
+            };
+            let back_id = ctx.own_id();
+            vec![
+                spec(id, title.clone(), one(s_nodes, m_surf, penalty)),
+                spec(
+                    back_id,
+                    format!("{title} (MSID on SSID)"),
+                    one(m_nodes, s_surf, back),
+                ),
+            ]
+        }
+    };
+    for s in specs {
+        ctx.deck.interfaces.push(s);
+        ctx.contacts.push(ctx.deck.interfaces.len() - 1);
+    }
     Ok(())
 }
 
@@ -406,8 +431,9 @@ fn type7(grnod: Id, surf: Id, fs: f64, vdc: f64, bt: f64, dt: f64, dyna: DynaPen
     }
 }
 
-/// The main surface a set names: type 0 (segment set), 2 (part set), 3
-/// (part) or 5 (every part, filled once the deck is read).
+/// The main surface a set names: type 0 (segment set), 1 (shell set), 2
+/// (part set), 3 (part) or 5 (every part); shell and part sets and every
+/// part are filled once the deck is read.
 fn parts_surface(
     ctx: &mut Ctx,
     sid: Id,
@@ -422,6 +448,10 @@ fn parts_surface(
             .push((sid, loc.clone(), kw.to_string(), field.to_string()));
         return Ok(sid);
     }
+    if styp == 1 {
+        // A *SET_SHELL: its shells' faces, once the deck is read.
+        return Ok(ctx.shell_set_surface(sid, loc, kw, field));
+    }
     let parts: Vec<i64> = match styp {
         3 => vec![sid as i64],
         // Filled once the deck is read (`Ctx::resolve_part_sets`).
@@ -430,7 +460,7 @@ fn parts_surface(
             ctx.refuse(
                 loc,
                 kw,
-                format!("set type {styp} for {field} (2 part set, 3 part and 5 all are read)"),
+                format!("set type {styp} for {field} (0 segment set, 1 shell set, 2 part set, 3 part and 5 all are read)"),
             );
             Vec::new()
         }
@@ -456,16 +486,32 @@ fn parts_surface(
 
 /// The secondary nodes of a nodes-to-surface contact: a node set (4), or
 /// the nodes of a part (3) or part set (2).
-fn secondary_nodes(ctx: &mut Ctx, sid: Id, styp: i64, loc: &Loc, kw: &str) -> InputResult<Id> {
+fn secondary_nodes(
+    ctx: &mut Ctx,
+    sid: Id,
+    styp: i64,
+    loc: &Loc,
+    kw: &str,
+    field: &str,
+) -> InputResult<Id> {
     match styp {
         4 => Ok(sid),
         0 => {
             ctx.segment_sets_used
-                .push((sid, loc.clone(), kw.to_string(), "SSID".to_string()));
+                .push((sid, loc.clone(), kw.to_string(), field.to_string()));
             Ok(ctx.own_group(
                 NodeGroupKind::Surf,
                 vec![sid as i64],
                 format!("{kw} segment set {sid}"),
+                loc,
+            ))
+        }
+        1 => {
+            let surf = ctx.shell_set_surface(sid, loc, kw, field);
+            Ok(ctx.own_group(
+                NodeGroupKind::Surf,
+                vec![surf as i64],
+                format!("{kw} shell set {sid}"),
                 loc,
             ))
         }
@@ -475,12 +521,12 @@ fn secondary_nodes(ctx: &mut Ctx, sid: Id, styp: i64, loc: &Loc, kw: &str) -> In
             format!("{kw} part {sid}"),
             loc,
         )),
-        2 => Ok(ctx.part_set_group(sid, format!("{kw} part set {sid}"), loc, kw, "SSID")),
+        2 => Ok(ctx.part_set_group(sid, format!("{kw} part set {sid}"), loc, kw, field)),
         _ => {
             ctx.refuse(
                 loc,
                 kw,
-                format!("set type {styp} for SSID (2 part set, 3 part and 4 node set are read)"),
+                format!("set type {styp} for {field} (0 segment set, 1 shell set, 2 part set, 3 part and 4 node set are read)"),
             );
             Ok(ctx.own_group(NodeGroupKind::Node, Vec::new(), kw.to_string(), loc))
         }

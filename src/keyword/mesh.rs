@@ -164,8 +164,13 @@ pub fn part(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
         let id = c.id(0, "PID")?;
         let prop = c.id(1, "SECID")?;
         let mat = c.id(2, "MID")?;
-        let fields = [(3, "EOSID"), (4, "HGID"), (6, "ADPOPT"), (7, "TMID")];
+        let fields = [(3, "EOSID"), (6, "ADPOPT"), (7, "TMID")];
         ctx.refuse_given(&c, &kw, &fields, &format!(" (part {id})"), true)?;
+        // HGID: applied once the deck is read (`hourglass::finish`).
+        match c.id_opt(4, "HGID")? {
+            0 => ctx.parts_without_hgid.push(ctx.deck.parts.len()),
+            h => ctx.part_hgid.push((ctx.deck.parts.len(), h, c.loc())),
+        }
         ctx.deck.parts.push(PartCard {
             id,
             title,

@@ -18,8 +18,11 @@
 //!
 //! Keywords come in any order, as LS-DYNA reads them: what depends on
 //! keywords read later is completed once the whole deck is read — the
-//! groups and surfaces of part sets (`Ctx::resolve_part_sets`), every-part
-//! surfaces and SLSFAC (`contacts::finish`), rigid bodies and their new
+//! groups and surfaces of part sets and shell sets
+//! (`Ctx::resolve_part_sets`, `Ctx::resolve_shell_sets`), every-part
+//! surfaces and SLSFAC (`contacts::finish`), discrete parts' spring
+//! properties (`discrete::finish`), hourglass definitions
+//! (`hourglass::finish`), rigid bodies and their new
 //! main nodes (`rigid::finish`), moving walls' nodes (`walls_masses::finish`)
 //! — before the references are checked (`references::check`).
 
@@ -27,6 +30,8 @@ mod card;
 mod conditions;
 mod contacts;
 mod controls;
+mod discrete;
+mod hourglass;
 mod loads;
 mod materials;
 mod mesh;
@@ -68,9 +73,25 @@ pub(crate) struct Ctx<'a> {
     /// Node sets keywords name (id, where, keyword, field) where the
     /// reader makes its own group of them, checked once the deck is read.
     pub node_sets_used: Vec<(Id, Loc, String, String)>,
+    /// `*SET_SHELL` sets (id, shell ids, where), and the surfaces made of
+    /// one (set, surface index, where, keyword, field), filled once the deck
+    /// is read.
+    pub shell_sets: Vec<(Id, Vec<Id>, Loc)>,
+    pub shell_sets_used: Vec<(Id, usize, Loc, String, String)>,
     /// Groups and surfaces made of a part set (set, which, where, keyword,
     /// field), filled once the deck is read.
     pub part_sets_used: Vec<(Id, PartSetTarget, Loc, String, String)>,
+    /// `*HOURGLASS` definitions, `*CONTROL_HOURGLASS`'s, and the parts
+    /// with an HGID (index, HGID, where) or without: applied once the deck
+    /// is read (`hourglass::finish`).
+    pub hourglasses: Vec<(Id, hourglass::Hourglass)>,
+    pub control_hourglass: Option<hourglass::Hourglass>,
+    pub part_hgid: Vec<(usize, Id, Loc)>,
+    pub parts_without_hgid: Vec<usize>,
+    /// `*SECTION_DISCRETE` ids and the spring and damper materials (id,
+    /// their law), joined per part once the deck is read (`discrete::finish`).
+    pub discrete_sections: Vec<Id>,
+    pub discrete_materials: Vec<(Id, crate::model::SpringDof)>,
     /// Rigid bodies made once the deck is read (`rigid::finish`), and the
     /// moving walls (indices) whose node is made then.
     pub rigid: Vec<rigid::PendingBody>,
@@ -196,6 +217,78 @@ impl Ctx<'_> {
         Ok(())
     }
 
+    /// A surface of the faces of `*SET_SHELL` `sid`'s shells, filled once
+    /// the deck is read ([`Self::resolve_shell_sets`]).
+    pub fn shell_set_surface(&mut self, sid: Id, loc: &Loc, kw: &str, field: &str) -> Id {
+        let id = self.own_id();
+        self.shell_sets_used.push((
+            sid,
+            self.deck.surfaces.len(),
+            loc.clone(),
+            kw.into(),
+            field.into(),
+        ));
+        self.deck.surfaces.push(crate::deck::SurfaceCard {
+            id,
+            title: format!("{kw} {field} shell set {sid}"),
+            def: crate::deck::SurfaceDef::Segments(Vec::new()),
+            item_locs: vec![(0, loc.clone())],
+            loc: loc.clone(),
+        });
+        id
+    }
+
+    /// Fills every surface made of a shell set with its shells' faces (a
+    /// triangle's fourth node its third); an undefined set or shell is an
+    /// error naming the keyword and field.
+    pub fn resolve_shell_sets(&mut self) -> InputResult<()> {
+        let used = std::mem::take(&mut self.shell_sets_used);
+        if used.is_empty() {
+            return Ok(());
+        }
+        let e = &self.deck.elements;
+        let shells: std::collections::HashMap<Id, [Id; 4]> = e
+            .shell4
+            .iter()
+            .map(|c| (c.id, [c.nodes[0], c.nodes[1], c.nodes[2], c.nodes[3]]))
+            .chain(
+                e.shell3
+                    .iter()
+                    .map(|c| (c.id, [c.nodes[0], c.nodes[1], c.nodes[2], c.nodes[2]])),
+            )
+            .collect();
+        for (sid, si, loc, kw, field) in used {
+            let Some((_, ids, set_loc)) = self.shell_sets.iter().find(|s| s.0 == sid) else {
+                return Err(InputError::new(
+                    loc,
+                    &kw,
+                    &field,
+                    format!("shell set {sid} is not defined (expected a *SET_SHELL)"),
+                ));
+            };
+            let mut segs = Vec::with_capacity(ids.len());
+            for &eid in ids {
+                let nodes = *shells.get(&eid).ok_or_else(|| {
+                    InputError::new(
+                        set_loc.clone(),
+                        "*SET_SHELL",
+                        "EID",
+                        format!(
+                            "shell {eid} of set {sid} is not defined (no *ELEMENT_SHELL gives it)"
+                        ),
+                    )
+                })?;
+                segs.push(crate::deck::SegmentCard {
+                    id: segs.len() as Id + 1,
+                    nodes,
+                    loc: set_loc.clone(),
+                });
+            }
+            self.deck.surfaces[si].def = crate::deck::SurfaceDef::Segments(segs);
+        }
+        Ok(())
+    }
+
     /// The parts of `*SET_PART` `id`.
     pub fn part_set(&self, id: Id) -> Option<Vec<i64>> {
         self.part_sets
@@ -248,6 +341,12 @@ const TRANSLATORS: &[(&str, Translate)] = &[
         materials::piecewise_linear,
     ),
     ("MAT_024", materials::piecewise_linear),
+    ("MAT_SPRING_ELASTIC", discrete::spring),
+    ("MAT_S01", discrete::spring),
+    ("MAT_DAMPER_VISCOUS", discrete::damper),
+    ("MAT_S02", discrete::damper),
+    ("SECTION_DISCRETE", discrete::section),
+    ("ELEMENT_DISCRETE", discrete::element),
     ("MAT_RIGID", rigid::material),
     ("MAT_020", rigid::material),
     ("CONSTRAINED_NODAL_RIGID_BODY", rigid::nodal_body),
@@ -257,6 +356,8 @@ const TRANSLATORS: &[(&str, Translate)] = &[
     ("SET_PART_LIST", conditions::part_set),
     ("SET_SEGMENT", conditions::segment_set),
     ("SET_PART", conditions::part_set),
+    ("SET_SHELL_LIST", conditions::shell_set),
+    ("SET_SHELL", conditions::shell_set),
     ("BOUNDARY_SPC_NODE", conditions::spc_node),
     ("BOUNDARY_SPC_SET", conditions::spc_set),
     (
@@ -276,6 +377,8 @@ const TRANSLATORS: &[(&str, Translate)] = &[
         contacts::surface_to_surface,
     ),
     ("CONTROL_CONTACT", contacts::control),
+    ("HOURGLASS", hourglass::hourglass),
+    ("CONTROL_HOURGLASS", hourglass::control),
     ("RIGIDWALL_PLANAR", walls_masses::planar),
     ("RIGIDWALL_PLANAR_ORTHO", walls_masses::planar),
     ("RIGIDWALL_PLANAR_MOVING", walls_masses::planar),
@@ -361,6 +464,14 @@ pub fn read(path: &Path) -> InputResult<Deck> {
         segment_sets_used: Vec::new(),
         node_sets_used: Vec::new(),
         part_sets_used: Vec::new(),
+        shell_sets: Vec::new(),
+        shell_sets_used: Vec::new(),
+        discrete_sections: Vec::new(),
+        discrete_materials: Vec::new(),
+        hourglasses: Vec::new(),
+        control_hourglass: None,
+        part_hgid: Vec::new(),
+        parts_without_hgid: Vec::new(),
         rigid: Vec::new(),
         moving_walls: Vec::new(),
         next_group: OWN_GROUPS,
@@ -369,6 +480,9 @@ pub fn read(path: &Path) -> InputResult<Deck> {
         translate(b, &mut ctx)?;
     }
     ctx.resolve_part_sets()?;
+    ctx.resolve_shell_sets()?;
+    discrete::finish(&mut ctx)?;
+    hourglass::finish(&mut ctx)?;
     contacts::finish(&mut ctx);
     rigid::finish(&mut ctx);
     walls_masses::finish(&mut ctx);

@@ -28,7 +28,8 @@ pub fn check(ctx: &Ctx) -> InputResult<()> {
                 missing(ctx, "section", p.prop, "*SECTION"),
             ));
         }
-        if !d.materials.iter().any(|m| m.id == p.mat) {
+        let spring = matches!(section.map(|s| &s.kind), Some(PropertyKind::Spring(_)));
+        if !spring && !d.materials.iter().any(|m| m.id == p.mat) {
             return Err(e(
                 &p.loc,
                 "*PART",
