@@ -308,6 +308,21 @@ fn worst_drift(a: &[Vec<f64>]) -> f64 {
         .fold(0.0f64, f64::max)
 }
 
+/// Two runs' energies agree at every cycle to 1e-9 (relative, against at
+/// least 1e-3).
+fn same_energies(a: &[Vec<f64>], b: &[Vec<f64>]) {
+    assert_eq!(a.len(), b.len());
+    for (ra, rb) in a.iter().zip(b) {
+        for (x, y) in ra.iter().zip(rb) {
+            assert!(
+                (x - y).abs() <= 1e-9 * x.abs().max(y.abs()).max(1e-3),
+                "cycle {}: {x} vs {y}",
+                ra[1]
+            );
+        }
+    }
+}
+
 /// The energies CSV as numbers, row by row.
 fn rows(csv: &[u8]) -> Vec<Vec<f64>> {
     String::from_utf8_lossy(csv)
@@ -720,17 +735,7 @@ fn a_segment_set_is_a_contact_surface() {
     std::fs::write(scratch.join("seg.k"), &with_set).unwrap();
     let (_, en_s) = run(0, &scratch.join("seg.k"), "kw-segset-run");
     let (_, en_p) = run(0, &dir.join("keyword_contact.k"), "kw-segset-part");
-    let (a, b) = (rows(&en_s), rows(&en_p));
-    assert_eq!(a.len(), b.len());
-    for (ra, rb) in a.iter().zip(&b) {
-        for (x, y) in ra.iter().zip(rb) {
-            assert!(
-                (x - y).abs() <= 1e-9 * x.abs().max(y.abs()).max(1e-3),
-                "cycle {}: {x} vs {y}",
-                ra[1]
-            );
-        }
-    }
+    same_energies(&rows(&en_s), &rows(&en_p));
     std::fs::write(
         scratch.join("bad.k"),
         with_set.replacen("*SET_SEGMENT\n        99", "*SET_SEGMENT\n        98", 1),
@@ -1267,17 +1272,7 @@ fn a_shell_set_is_a_contact_surface() {
     std::fs::write(scratch.join("set.k"), &with_set).unwrap();
     let (_, en_s) = run(0, &scratch.join("set.k"), "kw-shellset-run");
     let (_, en_p) = run(0, &dir.join("keyword_contact.k"), "kw-shellset-part");
-    let (a, b) = (rows(&en_s), rows(&en_p));
-    assert_eq!(a.len(), b.len());
-    for (ra, rb) in a.iter().zip(&b) {
-        for (x, y) in ra.iter().zip(rb) {
-            assert!(
-                (x - y).abs() <= 1e-9 * x.abs().max(y.abs()).max(1e-3),
-                "cycle {}: {x} vs {y}",
-                ra[1]
-            );
-        }
-    }
+    same_energies(&rows(&en_s), &rows(&en_p));
     let mut bad = ids.clone();
     bad.push(9999);
     std::fs::write(scratch.join("bad.k"), deck_of(set_of(&bad))).unwrap();
