@@ -57,6 +57,21 @@ fn the_keyword_deck_and_its_radioss_twin_run_the_same_bits_on_1_and_2_ranks() {
     );
 }
 
+/// `run` of `deck` (its output beside it): its exit code and stderr.
+fn run_status(deck: &Path) -> (Option<i32>, String) {
+    let dir = deck.parent().unwrap().join("out");
+    let out = common::crashsim(&[
+        "run",
+        deck.to_str().unwrap(),
+        "--out",
+        dir.to_str().unwrap(),
+    ]);
+    (
+        out.status.code(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
 /// The twin deck with `from` replaced by `to` (once, the first match) in
 /// the main file, written to a scratch folder beside a copy of its include.
 fn variant(tag: &str, from: &str, to: &str) -> PathBuf {
@@ -203,15 +218,8 @@ fn a_keyword_nothing_computes_stops_run_by_name_and_check_lists_it() {
         listed.contains("*CONSTRAINED_SPOTWELD: keyword not supported"),
         "{listed}"
     );
-    let dir = common::scratch("kw-unsupported-run");
-    let out = common::crashsim(&[
-        "run",
-        deck.to_str().unwrap(),
-        "--out",
-        dir.to_str().unwrap(),
-    ]);
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(2), "{err}");
+    let (code, err) = run_status(&deck);
+    assert_eq!(code, Some(2), "{err}");
     assert!(err.contains("*CONSTRAINED_SPOTWELD"), "{err}");
     // An option of a computed keyword that nothing computes, by field.
     let deck = variant(
@@ -219,14 +227,8 @@ fn a_keyword_nothing_computes_stops_run_by_name_and_check_lists_it() {
         "         1         1         1\n*SECTION",
         "         1         1         1         5\n*SECTION",
     );
-    let out = common::crashsim(&[
-        "run",
-        deck.to_str().unwrap(),
-        "--out",
-        dir.to_str().unwrap(),
-    ]);
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(2), "{err}");
+    let (code, err) = run_status(&deck);
+    assert_eq!(code, Some(2), "{err}");
     assert!(
         err.contains("*PART") && err.contains("field EOSID"),
         "{err}"
@@ -861,14 +863,8 @@ fn soft2_with_depth_5_catches_an_edge_crossing_that_soft0_misses() {
     ] {
         let deck = scratch.join("refused.k");
         std::fs::write(&deck, text.replacen(from, to, 1)).unwrap();
-        let out = common::crashsim(&[
-            "run",
-            deck.to_str().unwrap(),
-            "--out",
-            scratch.to_str().unwrap(),
-        ]);
-        let err = String::from_utf8_lossy(&out.stderr);
-        assert_eq!(out.status.code(), Some(2), "{what}: {err}");
+        let (code, err) = run_status(&deck);
+        assert_eq!(code, Some(2), "{what}: {err}");
         assert!(
             err.contains(&format!("*CONTACT_AUTOMATIC_SINGLE_SURFACE, {what}")),
             "{what}: {err}"
@@ -1176,14 +1172,8 @@ fn hourglass_ihq_and_qm_run_as_the_radioss_isolid_and_h() {
     ];
     for (from, to, what) in refused {
         let d = variant("kw-hourglass-refused", from, &to);
-        let out = common::crashsim(&[
-            "run",
-            d.to_str().unwrap(),
-            "--out",
-            scratch.to_str().unwrap(),
-        ]);
-        let err = String::from_utf8_lossy(&out.stderr);
-        assert_eq!(out.status.code(), Some(2), "{what}: {err}");
+        let (code, err) = run_status(&d);
+        assert_eq!(code, Some(2), "{what}: {err}");
         assert!(err.contains(what), "{what}: {err}");
     }
     let err = check_fails(
@@ -1281,6 +1271,74 @@ fn a_shell_set_is_a_contact_surface() {
     assert_eq!(out.status.code(), Some(2), "{err}");
     assert!(
         err.contains("*SET_SHELL, field EID: shell 9999 of set 42 is not defined"),
+        "{err}"
+    );
+}
+
+/// *CONTACT_TIED_SHELL_EDGE_TO_SURFACE_CONSTRAINED_OFFSET (issue 17, →
+/// TYPE2 Spotflag 5): a fin of three shells standing on the twin's
+/// flapping plate, its bottom edge on the plate's nodes at x = 20, starts
+/// at rest; tied, its edge moves with the plate exactly (the same z as
+/// the plate's nodes under it); without the tie the plate leaves it.
+#[test]
+fn a_tied_shell_edge_follows_the_surface_it_stands_on() {
+    let node = |id: u64, x: f64, y: f64, z: f64| format!("{id:>8}{x:>16}{y:>16}{z:>16}\n");
+    let mut fin = String::from("*PART\nfin\n         3         1         1\n*NODE\n");
+    for j in 0..4u64 {
+        fin += &node(601 + j, 20.0, 5.0 * j as f64, 0.0);
+        fin += &node(605 + j, 20.0, 5.0 * j as f64, 5.0);
+    }
+    fin += "*ELEMENT_SHELL\n";
+    for j in 0..3u64 {
+        fin += &format!(
+            "{:>8}{:>8}{:>8}{:>8}{:>8}{:>8}\n",
+            601 + j,
+            3,
+            601 + j,
+            602 + j,
+            606 + j,
+            605 + j
+        );
+    }
+    fin += "*SET_NODE_LIST\n        88\n       601       602       603       604\n";
+    let tie = "*CONTACT_TIED_SHELL_EDGE_TO_SURFACE_CONSTRAINED_OFFSET\n        88         1         4         3\n\n\n";
+    let z_of = |fs: &[u8], id: f64| rows_from(fs, id).iter().find(|r| r[0] == id).unwrap()[3];
+    let tied = variant("kw-tied", "*INCLUDE", &format!("{fin}{tie}*INCLUDE"));
+    let (fs, _) = run(0, &tied, "kw-tied-run");
+    for (f, p) in [(601.0, 5.0), (602.0, 14.0), (603.0, 23.0), (604.0, 32.0)] {
+        let (zf, zp) = (z_of(&fs, f), z_of(&fs, p));
+        assert!(zp > 0.1, "the plate moves up at node {p}: {zp}");
+        assert!(
+            (zf - zp).abs() < 1e-9,
+            "fin node {f} at {zf}, plate node {p} at {zp}"
+        );
+    }
+    let free = variant("kw-untied", "*INCLUDE", &format!("{fin}*INCLUDE"));
+    let (fs_free, _) = run(0, &free, "kw-untied-run");
+    assert!(z_of(&fs_free, 601.0).abs() < 1e-9, "untied, the fin stays");
+}
+
+/// A rigid wall on a rigid body's nodes (found this session: the wall's
+/// impulse is not passed to the body, which then leaves its rigid motion
+/// and blows up): the run stops by name at the first cycle the wall acts,
+/// exit 3, naming the wall, the node, the cycle and the time.
+#[test]
+fn a_rigid_wall_on_a_rigid_bodys_nodes_stops_the_run_by_name() {
+    let set = block_node_set(77);
+    let wall = format!(
+        "{set}*RIGIDWALL_PLANAR\n        77\n      59.5         0         0      60.5         0         0\n*INCLUDE"
+    );
+    let deck = variant("kw-wall-on-body", "*INCLUDE", &wall);
+    let text = std::fs::read_to_string(&deck).unwrap().replacen(
+        "*MAT_ELASTIC_TITLE\nblock steel\n2,7.85e-6,210.,0.3",
+        "*MAT_RIGID_TITLE\nblock steel\n2,7.85e-6,210.,0.3\n0\n",
+        1,
+    );
+    std::fs::write(&deck, text).unwrap();
+    let (code, err) = run_status(&deck);
+    assert_eq!(code, Some(3), "{err}");
+    assert!(
+        err.contains("rigid wall 1 stops node 10") && err.contains("of a rigid body at cycle"),
         "{err}"
     );
 }

@@ -169,16 +169,21 @@ pub fn surface_to_surface(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputR
     contact(b, cards, ctx, Form::SurfaceToSurface)
 }
 
+/// The `_ID`/`_TITLE` card of a *CONTACT keyword: (CID, HEADING), (0, "")
+/// without it.
+pub(super) fn heading(b: &Block, cards: &mut Cards) -> InputResult<(Id, String)> {
+    let (_, titled, with_id) = base_name(&b.name);
+    if !(titled || with_id) {
+        return Ok((0, String::new()));
+    }
+    let c = cards.next(vec![10, 70], "the card CID HEADING")?;
+    Ok((c.id_opt(0, "CID")?, c.raw(1).to_string()))
+}
+
 fn contact(b: &Block, cards: &mut Cards, ctx: &mut Ctx, form: Form) -> InputResult<()> {
     let kw = format!("*{}", b.name);
     let std = cards.standard();
-    let (mut id, mut title) = (0, String::new());
-    let (_, titled, with_id) = base_name(&b.name);
-    if titled || with_id {
-        let c = cards.next(vec![10, 70], "the card CID HEADING")?;
-        id = c.id_opt(0, "CID")?;
-        title = c.raw(1).to_string();
-    }
+    let (mut id, title) = heading(b, cards)?;
     let c1 = cards.next(
         std.clone(),
         "card 1: SSID MSID SSTYP MSTYP SBOXID MBOXID SPR MPR",
@@ -434,7 +439,7 @@ fn type7(grnod: Id, surf: Id, fs: f64, vdc: f64, bt: f64, dt: f64, dyna: DynaPen
 /// The main surface a set names: type 0 (segment set), 1 (shell set), 2
 /// (part set), 3 (part) or 5 (every part); shell and part sets and every
 /// part are filled once the deck is read.
-fn parts_surface(
+pub(super) fn parts_surface(
     ctx: &mut Ctx,
     sid: Id,
     styp: i64,
@@ -486,7 +491,7 @@ fn parts_surface(
 
 /// The secondary nodes of a nodes-to-surface contact: a node set (4), or
 /// the nodes of a part (3) or part set (2).
-fn secondary_nodes(
+pub(super) fn secondary_nodes(
     ctx: &mut Ctx,
     sid: Id,
     styp: i64,

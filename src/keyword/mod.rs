@@ -39,6 +39,7 @@ mod references;
 mod rigid;
 mod sections;
 pub mod source;
+mod tied;
 mod walls_masses;
 
 use crate::deck::Deck;
@@ -375,6 +376,10 @@ const TRANSLATORS: &[(&str, Translate)] = &[
     (
         "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE",
         contacts::surface_to_surface,
+    ),
+    (
+        "CONTACT_TIED_SHELL_EDGE_TO_SURFACE_CONSTRAINED_OFFSET",
+        tied::shell_edge,
     ),
     ("CONTROL_CONTACT", contacts::control),
     ("HOURGLASS", hourglass::hourglass),

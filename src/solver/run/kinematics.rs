@@ -8,8 +8,11 @@ use crate::kinematics::rigid_body::NodeLoad;
 use crate::kinematics::rigid_wall::wall_velocity;
 use crate::output;
 
-/// Every velocity phase of one cycle, with the velocity step `dt_v` = ½(Δt^{n−½}+Δt^{n+½}).
-pub(super) fn velocities(cx: &Ctx, s: &mut State, dt_v: f64) {
+/// Every velocity phase of one cycle, with the velocity step `dt_v` =
+/// ½(Δt^{n−½}+Δt^{n+½}). Returns, on this rank, the lowest (node id, wall
+/// id) of a rigid body's node whose velocity a rigid wall changed (see
+/// [`wall_nodes`]).
+pub(super) fn velocities(cx: &Ctx, s: &mut State, dt_v: f64) -> Option<(u64, u64)> {
     tied_transfer(cx, s);
     // The rigid walls' nodes at v^{n−½}: the walls' work is taken with them.
     let before: Vec<Vec<[f64; 3]>> = cx
@@ -23,12 +26,13 @@ pub(super) fn velocities(cx: &Ctx, s: &mut State, dt_v: f64) {
     rigid_bodies(cx, s, dt_v);
     imposed_motion(cx, s, &prior);
     final_geometry(cx, s, &prior_fgeo);
-    rigid_walls(cx, s, &before);
+    let on_body = rigid_walls(cx, s, &before);
     boundary_conditions(s);
     // Tied secondary nodes follow their main nodes (after every other condition).
     if !s.ties.is_empty() {
         s.ties.recover(cx.world, &s.x, &mut s.v, &mut s.vr, s.dt);
     }
+    on_body
 }
 
 /// Tied interfaces: the secondary nodes' forces and moments go to their
@@ -362,8 +366,9 @@ fn reaction_work(m: f64, before: f64, free: f64, val: f64) -> f64 {
 
 /// Rigid walls: each stops its nodes; a moving wall follows its node's
 /// /IMPVEL, or (free, with a mass) takes the momentum its nodes lost.
-fn rigid_walls(cx: &Ctx, s: &mut State, before: &[Vec<[f64; 3]>]) {
+fn rigid_walls(cx: &Ctx, s: &mut State, before: &[Vec<[f64; 3]>]) -> Option<(u64, u64)> {
     let (dt, th) = (s.dt, s.t + 0.5 * s.dt);
+    let mut on_body: Option<(u64, u64)> = None;
     for (w, (nodes, wall)) in cx.walls.iter().enumerate() {
         s.walls.force[w] = Default::default();
         for c in &cx.wall_driver[w] {
@@ -380,7 +385,11 @@ fn rigid_walls(cx: &Ctx, s: &mut State, before: &[Vec<[f64; 3]>]) {
                 s.walls.v[w][d] = val;
             }
         }
-        let push = wall_nodes(cx, s, w, (nodes, &before[w]));
+        let (push, hit) = wall_nodes(cx, s, w, (nodes, &before[w]));
+        if let Some(n) = hit {
+            let id = (n, wall.card.id);
+            on_body = Some(on_body.map_or(id, |b| b.min(id)));
+        }
         if wall.node.is_some() && cx.wall_driver[w].is_empty() && wall.card.mass > 0.0 {
             // Free moving wall: its mass takes the momentum the nodes lost.
             let mut all: Vec<(u32, [f64; 3])> =
@@ -405,17 +414,21 @@ fn rigid_walls(cx: &Ctx, s: &mut State, before: &[Vec<[f64; 3]>]) {
             }
         }
     }
+    on_body
 }
 
 /// One wall's nodes on this rank (with their velocities at n−½): their
 /// velocities after the wall, the wall's work and force; returns the owned
-/// nodes' forces (global node, force).
+/// nodes' forces (global node, force), and the lowest id of a rigid body's
+/// node whose velocity the wall changed: the wall's impulse is not passed
+/// to the body (its node would leave the body's motion), so the run stops
+/// on it (`cycle`) rather than go on wrong.
 fn wall_nodes(
     cx: &Ctx,
     s: &mut State,
     w: usize,
     (nodes, before): (&[u32], &[[f64; 3]]),
-) -> Vec<(u32, [f64; 3])> {
+) -> (Vec<(u32, [f64; 3])>, Option<u64>) {
     let wall = cx.walls[w].1;
     // A free wall (its own mass) is part of the system, its kinetic energy
     // counted: what its impacts take stays inside (a negative ERROR, as a
@@ -424,6 +437,7 @@ fn wall_nodes(
     let mass = cx.mass.read().unwrap();
     let free = wall.node.is_some() && cx.wall_driver[w].is_empty() && wall.card.mass > 0.0;
     let mut push: Vec<(u32, [f64; 3])> = Vec::new();
+    let mut hit: Option<u64> = None;
     for (i, &l) in nodes.iter().enumerate() {
         let l = l as usize;
         let (nv, now_tied, f) = wall_velocity(
@@ -442,6 +456,10 @@ fn wall_nodes(
         if cx.owned[l] && !free {
             s.wall_work.add(impulse_work(mass[l], (before[i], v), nv));
         }
+        if nv != v && cx.in_body[l] {
+            let id = cx.g.node_ids[cx.sd.node_global[l] as usize];
+            hit = Some(hit.map_or(id, |h| h.min(id)));
+        }
         s.v[l] = nv;
         s.walls.tied[w][i] = now_tied;
         if cx.owned[l] && f != [0.0; 3] {
@@ -451,7 +469,7 @@ fn wall_nodes(
             }
         }
     }
-    push
+    (push, hit)
 }
 
 /// The work of a rigid wall's impulse on a node over the step: the impulse

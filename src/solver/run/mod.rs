@@ -214,7 +214,8 @@ fn cycle(
     } else {
         0.5 * (s.dt_prev + s.dt)
     };
-    kinematics::velocities(cx, s, dt_v);
+    let on_body = kinematics::velocities(cx, s, dt_v);
+    wall_on_body(cx, s, on_body)?;
     integrate::work(cx, s, dt_v);
     integrate::positions(cx, s);
     integrate::advance_clock(cx, s);
@@ -241,6 +242,32 @@ fn cycle(
         )));
     }
     print_cycle(cx, s, report, dog)
+}
+
+/// A rigid wall changed the velocity of a rigid body's node on some rank
+/// (collective): the run stops naming the node, the wall, the cycle and the
+/// time, since the wall's impulse is not passed to the body yet (the
+/// body's nodes would leave its rigid motion: a wrong answer).
+fn wall_on_body(cx: &Ctx, s: &State, mine: Option<(u64, u64)>) -> Result<(), RunError> {
+    if cx.walls.is_empty() || cx.g.rigid_bodies.is_empty() {
+        return Ok(());
+    }
+    // The lowest node id (then wall id) over the ranks, as the largest negative.
+    let mut v = mine.map_or([f64::NEG_INFINITY; 2], |(n, w)| [-(n as f64), -(w as f64)]);
+    cx.world.max_f64(&mut v[..1]);
+    let mut w = if mine.is_some_and(|m| -(m.0 as f64) == v[0]) {
+        v[1]
+    } else {
+        f64::NEG_INFINITY
+    };
+    cx.world.max_f64(std::slice::from_mut(&mut w));
+    if v[0] == f64::NEG_INFINITY {
+        return Ok(());
+    }
+    Err(RunError::Physics(format!(
+        "rigid wall {} stops node {} of a rigid body at cycle {}, time {:e}: a rigid wall acting on a rigid body's nodes is not computed yet (its impulse is not passed to the body)",
+        -w, -v[0], s.cycle, s.t
+    )))
 }
 
 /// The global energies (one all-reduce), at the cycles the --energies CSV,
