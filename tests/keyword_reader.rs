@@ -522,8 +522,10 @@ fn more_bad_keyword_decks_exit_2_naming_file_line_keyword_and_field() {
 
 /// The keyword reader never panics: every truncation of the twin deck (at
 /// each line) and 1000 seeded one-character mutations of it (the characters
-/// that mean something to the reader) each load to a model or an error.
-/// (`ci/fuzz keyword_reader` runs the same on arbitrary bytes.)
+/// that mean something to the reader) each load to a model or an error;
+/// the same for the twin with the keywords completed once the deck is read
+/// (`MANY_KEYWORDS`). (`ci/fuzz keyword_reader` runs the same on arbitrary
+/// bytes.)
 #[test]
 fn truncated_and_mutated_keyword_decks_never_panic() {
     let dir = common::scratch("kw-mutate");
@@ -532,7 +534,16 @@ fn truncated_and_mutated_keyword_decks_never_panic() {
         dir.join("keyword_twin_block.k"),
     )
     .unwrap();
-    let text = std::fs::read_to_string(twin_dir().join("keyword_twin.k")).unwrap();
+    let twin = std::fs::read_to_string(twin_dir().join("keyword_twin.k")).unwrap();
+    // The twin with every keyword the reader completes once the deck is read.
+    let later = twin
+        .replacen(
+            "block\n         2         2         2",
+            "block\n         2         2         2         0         5",
+            1,
+        )
+        .replacen("*INCLUDE", MANY_KEYWORDS, 1);
+    assert!(later != twin);
     let path = dir.join("keyword_twin.k");
     let load = |t: &str| {
         std::fs::write(&path, t).unwrap();
@@ -542,28 +553,37 @@ fn truncated_and_mutated_keyword_decks_never_panic() {
         });
         assert!(r.is_ok(), "the reader panicked on:\n{t}");
     };
-    let lines: Vec<&str> = text.lines().collect();
-    for n in 0..lines.len() {
-        load(&lines[..n].join("\n"));
-    }
-    let chars: Vec<char> = text.chars().collect();
-    // 'Ѽ': a character of two bytes (the fuzzer's first find: *PARAMETER
-    // split a name inside one).
-    let alphabet: Vec<char> = "*$,&-+ 9x.\nEѼ".chars().collect();
+    load(&later);
     let mut seed = 0x9e37_79b9_7f4a_7c15u64;
-    let mut next = || {
-        seed ^= seed << 13;
-        seed ^= seed >> 7;
-        seed ^= seed << 17;
-        seed
-    };
-    for _ in 0..1000 {
-        let mut c = chars.clone();
-        let at = (next() % c.len() as u64) as usize;
-        c[at] = alphabet[(next() % alphabet.len() as u64) as usize];
-        load(&c.iter().collect::<String>());
+    for text in [&twin, &later] {
+        let lines: Vec<&str> = text.lines().collect();
+        for n in 0..lines.len() {
+            load(&lines[..n].join("\n"));
+        }
+        let chars: Vec<char> = text.chars().collect();
+        // 'Ѽ': a character of two bytes (the fuzzer's first find: *PARAMETER
+        // split a name inside one).
+        let alphabet: Vec<char> = "*$,&-+ 9x.\nEѼ".chars().collect();
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            seed
+        };
+        for _ in 0..1000 {
+            let mut c = chars.clone();
+            let at = (next() % c.len() as u64) as usize;
+            c[at] = alphabet[(next() % alphabet.len() as u64) as usize];
+            load(&c.iter().collect::<String>());
+        }
     }
 }
+
+/// Keywords the reader completes once the deck is read (discrete parts,
+/// hourglass, shell sets, surface-to-surface SOFT 2, tied edges, contact
+/// controls, rigid bodies, moving walls), inserted before the twin's
+/// *INCLUDE for the mutation test.
+const MANY_KEYWORDS: &str = "*PART\nspring\n         4         4         4\n*SECTION_DISCRETE\n         4         0\n         0         0\n*MAT_SPRING_ELASTIC\n         4       1.0\n*ELEMENT_DISCRETE\n     701       4       1      36\n*HOURGLASS\n         5         2      0.05\n*CONTROL_HOURGLASS\n         1\n*SET_SHELL_LIST\n        42\n         1         2         3\n*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE\n        42         1         1         3\n\n\n         2       0.1         0         0         2         5\n*CONTACT_TIED_SHELL_EDGE_TO_SURFACE_CONSTRAINED_OFFSET\n         1         2         3         3\n\n\n*CONTROL_CONTACT\n       0.1\n         0\n\n         1\n*SET_NODE_LIST\n        88\n      1001      1002\n*CONSTRAINED_NODAL_RIGID_BODY\n        50         0        88\n*RIGIDWALL_PLANAR_MOVING\n         0\n      -5.0         0         0      -4.0         0         0\n      0.01       1.0\n*MAT_RIGID\n         9  7.85e-06       210       0.3\n         1         7         7\n\n*INCLUDE";
 
 /// *MAT_PIECEWISE_LINEAR_PLASTICITY on the flapping plate (20 m/s):
 /// bilinear (SIGY, ETAN) runs the same bits as *MAT_PLASTIC_KINEMATIC with
