@@ -813,19 +813,10 @@ impl ContactSystem {
     ) -> Candidates {
         let reach = it.max_gap + it.margin;
         let ends = |k: u32| p.sec_edges[k as usize].map(|c| self.cx[c as usize]);
-        let mut half_len = 0.0f64;
-        let mids: Vec<V3> = run
-            .mine
-            .iter()
-            .map(|&k| {
-                let [a, b] = ends(k);
-                half_len = half_len.max(0.5 * geo::norm(geo::sub(b, a)));
-                geo::scale(geo::add(a, b), 0.5)
-            })
-            .collect();
         // Midpoints within reach + half the longest edge hold every pair
         // within reach; the exact distance then decides, so the lists do
         // not depend on which rank holds the edge.
+        let (mids, half_len) = self.entity_centres(p, run);
         let raw = search::candidates(&mids, reach + half_len, boxes, search::choose(boxes));
         filter_candidates(run, &raw, |k, m| {
             let se = p.sec_edges[k as usize];
@@ -839,6 +830,26 @@ impl ContactSystem {
             let (m1, m2) = (self.cx[me[0] as usize], self.cx[me[1] as usize]);
             edge_geometry::closest_points_of_edges(s1, s2, m1, m2).dist <= reach
         })
+    }
+
+    /// The box centre of each owned secondary entity (an edge's midpoint)
+    /// of an entity pass, and the largest half box diagonal (half the
+    /// longest edge): the search's query points and their extra reach.
+    fn entity_centres(&self, p: &setup::Pass, run: &PassRun) -> (Vec<V3>, f64) {
+        let mut half = 0.0f64;
+        let centres = run
+            .mine
+            .iter()
+            .map(|&k| {
+                let mut b = Aabb::EMPTY;
+                for &c in p.sec_side(k as usize).nodes() {
+                    b.include(self.cx[c as usize]);
+                }
+                half = half.max(0.5 * b.diagonal());
+                b.centre()
+            })
+            .collect();
+        (centres, half)
     }
 
     /// The candidates of a segment pass: the main segments whose box comes
@@ -855,16 +866,7 @@ impl ContactSystem {
         let reach = it.max_gap + it.margin;
         let sec_box =
             |k: u32| Aabb::of_points(&p.sec_segs[k as usize].map(|c| self.cx[c as usize]));
-        let mut half_diag = 0.0f64;
-        let centres: Vec<V3> = run
-            .mine
-            .iter()
-            .map(|&k| {
-                let b = sec_box(k);
-                half_diag = half_diag.max(0.5 * b.diagonal());
-                b.centre()
-            })
-            .collect();
+        let (centres, half_diag) = self.entity_centres(p, run);
         // Centres within reach + half the largest diagonal hold every pair
         // whose boxes come within reach; the boxes then decide, so the
         // lists do not depend on which rank holds the segment.

@@ -23,10 +23,12 @@ fn list(c: &Card, name: &str, out: &mut Vec<i64>) -> InputResult<()> {
     Ok(())
 }
 
-/// A set's first card (SID and options) and its id list.
+/// A set's first card (SID and options) and its id list (`item`: the list
+/// fields' name in messages).
 fn set_lines(
     b: &Block,
     cards: &mut Cards,
+    item: &str,
 ) -> InputResult<(Id, String, crate::model::Loc, Vec<i64>)> {
     let title = title(b, cards)?;
     let std = cards.standard();
@@ -34,14 +36,14 @@ fn set_lines(
     let id = c.id(0, "SID")?;
     let mut items = Vec::new();
     while let Some(d) = cards.next_opt(std.clone()) {
-        list(&d, "NID", &mut items)?;
+        list(&d, item, &mut items)?;
     }
     Ok((id, title, c.loc(), items))
 }
 
 /// `*SET_NODE_LIST`: SID DA1..DA4 SOLVER, then node ids, 8 a line.
 pub fn node_set(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
-    let (id, title, loc, items) = set_lines(b, cards)?;
+    let (id, title, loc, items) = set_lines(b, cards, "NID")?;
     ctx.deck.node_groups.push(NodeGroupCard {
         id,
         title,
@@ -55,7 +57,7 @@ pub fn node_set(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> 
 
 /// `*SET_PART_LIST`: SID DA1..DA4 SOLVER, then part ids, 8 a line.
 pub fn part_set(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
-    let (id, _, loc, items) = set_lines(b, cards)?;
+    let (id, _, loc, items) = set_lines(b, cards, "NID")?;
     if ctx.part_sets.iter().any(|(s, _)| *s == id) {
         return Err(crate::model::InputError::new(
             loc,
@@ -317,28 +319,19 @@ pub fn segment_set(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<(
 /// once the deck is read (`Ctx::resolve_shell_sets`). (The attributes DA1-DA4
 /// only filter `_ADVANCED` sets, which are not read.)
 pub fn shell_set(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
-    title(b, cards)?;
-    let std = cards.standard();
-    let c = cards.next(std.clone(), "the card SID DA1 DA2 DA3 DA4 SOLVER")?;
-    let id = c.id(0, "SID")?;
+    let (id, _, loc, items) = set_lines(b, cards, "EID")?;
+    let err = |msg: String| {
+        crate::model::InputError::new(loc.clone(), &format!("*{}", b.name), "SID", msg)
+    };
     if ctx.shell_sets.iter().any(|s| s.0 == id) {
-        return Err(c.err("SID", format!("shell set {id} is defined twice")));
+        return Err(err(format!("shell set {id} is defined twice")));
     }
-    let mut ids = Vec::new();
-    while let Some(d) = cards.next_opt(std.clone()) {
-        for i in 0..8 {
-            match d.id_opt(i, "EID")? {
-                0 => {}
-                e => ids.push(e),
-            }
-        }
-    }
-    if ids.is_empty() {
-        return Err(c.err(
-            "EID",
-            "no shell: expected lines of shell ids after this card",
+    if items.is_empty() {
+        return Err(err(
+            "no shell: expected lines of shell ids after this card".into()
         ));
     }
-    ctx.shell_sets.push((id, ids, c.loc()));
+    ctx.shell_sets
+        .push((id, items.into_iter().map(|e| e as Id).collect(), loc));
     Ok(())
 }

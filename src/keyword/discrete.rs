@@ -22,7 +22,7 @@ use super::source::Block;
 use super::Ctx;
 use crate::deck::ElementCard;
 use crate::model::{
-    Id, InputError, InputResult, Loc, PropertyKind, PropertySpec, SpringDof, SpringProperty,
+    InputError, InputResult, PropertyKind, PropertySpec, SpringDof, SpringProperty,
 };
 
 /// Card 1: SECID DRO KD V0 CL FD; card 2: CDL TDL.
@@ -129,25 +129,21 @@ pub fn finish(ctx: &mut Ctx) -> InputResult<()> {
                 ),
             ));
         };
-        let (dof, title, loc): (SpringDof, String, Loc) = (
-            dof.1.clone(),
-            format!("part {} discrete", part.id),
-            part.loc.clone(),
-        );
-        let id: Id = ctx.own_id();
-        ctx.deck.properties.push(PropertySpec {
-            id,
+        let spec = PropertySpec {
+            id: 0,
             unit_id: 0,
-            title,
+            title: format!("part {} discrete", part.id),
             kind: PropertyKind::Spring(SpringProperty {
                 mass: 0.0,
                 sens_id: 0,
                 isflag: 0,
                 ileng: 0,
-                dof,
+                dof: dof.1.clone(),
             }),
-            loc,
-        });
+            loc: part.loc.clone(),
+        };
+        let id = ctx.own_id();
+        ctx.deck.properties.push(PropertySpec { id, ..spec });
         let part = &mut ctx.deck.parts[pi];
         part.prop = id;
         part.mat = 0;

@@ -20,7 +20,7 @@
 use super::card::Cards;
 use super::source::Block;
 use super::Ctx;
-use crate::model::{Id, InputError, InputResult, Loc, PropertyKind, PropertySpec};
+use crate::model::{Id, InputError, InputResult, Loc, PropertyKind};
 
 /// One hourglass definition (`*HOURGLASS`, or `*CONTROL_HOURGLASS`'s).
 #[derive(Clone)]
@@ -119,11 +119,11 @@ pub fn finish(ctx: &mut Ctx) -> InputResult<()> {
 fn apply(ctx: &mut Ctx, pi: usize, hg: &Hourglass) {
     let part = &ctx.deck.parts[pi];
     let found = ctx.deck.properties.iter().find(|p| p.id == part.prop);
-    let Some(prop) = found.map(|p| p.kind.clone()) else {
+    let Some(mut copy) = found.cloned() else {
         return; // references::check names the missing section
     };
+    let prop = copy.kind.clone();
     let whose = format!("IHQ {} (part {})", hg.ihq, part.id);
-    let mut copy: PropertySpec = found.cloned().expect("found");
     match &mut copy.kind {
         PropertyKind::Solid(s) if s.isolid != 14 => {
             s.isolid = match hg.ihq {

@@ -50,7 +50,7 @@ use super::{
     PairOutcome, PairState, SurfaceSizes,
 };
 use crate::contact::friction::{self, FrictionLaw};
-use crate::contact::gap::{GapRule, InitialPenetration};
+use crate::contact::gap::GapRule;
 use crate::contact::geometry::{self as geo, V3};
 use crate::contact::{edge_geometry, stiffness};
 use crate::model::contact::EP30;
@@ -400,18 +400,6 @@ impl InterfaceType for DynaSegment {
         }
         let mass = ms * mm / (ms + mm).max(1e-300);
         PairOutcome::Force(self.force(c, &depth, pen, kp, mass, st, a, b))
-    }
-
-    /// The baseline (pair memory) takes any initial penetration.
-    fn initial_penetration(
-        &self,
-        _: &Interface,
-        _: V3,
-        _: &[V3; 4],
-        _: bool,
-        _: f64,
-    ) -> (InitialPenetration, f64) {
-        (InitialPenetration::Keep, 0.0)
     }
 }
 

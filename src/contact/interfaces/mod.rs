@@ -461,15 +461,22 @@ pub trait InterfaceType: Sync {
     }
 
     /// Its initial-penetration rule: what happens to a pair of gap `g` found
-    /// penetrated at the first sort, and the penetration it measured.
+    /// penetrated at the first sort, and the penetration it measured. By
+    /// default the pair is kept as it is: types whose pairs take the
+    /// initial penetration as a baseline (TYPE25, LS-DYNA's SOFT 2), whose
+    /// edge pairs the runtime decides (`contact::edge_initial_penetrations`),
+    /// whose nodes meet an analytic surface (TYPE14), or whose total force
+    /// counts an initial intersection in p_max (TYPE6, Icor = 0).
     fn initial_penetration(
         &self,
-        it: &Interface,
-        xs: V3,
-        xm: &[V3; 4],
-        tri: bool,
-        g: f64,
-    ) -> (InitialPenetration, f64);
+        _it: &Interface,
+        _xs: V3,
+        _xm: &[V3; 4],
+        _tri: bool,
+        _g: f64,
+    ) -> (InitialPenetration, f64) {
+        (InitialPenetration::Keep, 0.0)
+    }
 }
 
 /// The /FUNCT a card's field names, for a type's `bind`; an error naming

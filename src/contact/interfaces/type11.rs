@@ -38,7 +38,7 @@ use super::{
 use super::layout::{Interface, Pass};
 use crate::contact::edge_geometry::closest_points_of_edges;
 use crate::contact::friction::{self, FrictionLaw};
-use crate::contact::gap::{GapRule, InitialPenetration};
+use crate::contact::gap::GapRule;
 use crate::contact::geometry::{self as geo, V3};
 use crate::contact::stiffness;
 use crate::model::InterfaceKind;
@@ -205,19 +205,6 @@ impl InterfaceType for Type11 {
     /// EQ. 8.8.5.1 with the law's gap: 0.5·(g' − p)/(dp/dt).
     fn kinematic_step(&self, f: &PairForce) -> Option<f64> {
         Some(f.dt_kin)
-    }
-
-    /// Not used: Inacti 1, 2 on edges are decided by the runtime's edge pass
-    /// (`contact::edge_initial_penetrations`); 0 pushes a penetrated pair out.
-    fn initial_penetration(
-        &self,
-        _it: &Interface,
-        _xs: V3,
-        _xm: &[V3; 4],
-        _tri: bool,
-        _g: f64,
-    ) -> (InitialPenetration, f64) {
-        (InitialPenetration::Keep, 0.0)
     }
 }
 

@@ -38,7 +38,7 @@ use super::{
     PairOutcome, PairState, SurfaceSizes, NODE_SHAPE,
 };
 use crate::contact::friction::{self, FrictionLaw};
-use crate::contact::gap::{GapRule, InitialPenetration};
+use crate::contact::gap::GapRule;
 use crate::contact::geometry::{self as geo, V3};
 use crate::kinematics::function;
 use crate::kinematics::rigid_body::{mat_vec, transpose, RigidBodyState};
@@ -363,17 +363,6 @@ impl InterfaceType for Type14 {
             dir: n,
             point,
         })
-    }
-
-    fn initial_penetration(
-        &self,
-        _it: &Interface,
-        _xs: V3,
-        _xm: &[V3; 4],
-        _tri: bool,
-        _g: f64,
-    ) -> (InitialPenetration, f64) {
-        (InitialPenetration::Keep, 0.0)
     }
 }
 

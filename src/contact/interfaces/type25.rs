@@ -45,7 +45,7 @@ use super::{
     PairOutcome, PairState, SurfaceSizes, NODE_SHAPE,
 };
 use crate::contact::friction::{self, FrictionLaw};
-use crate::contact::gap::{GapRule, InitialPenetration};
+use crate::contact::gap::GapRule;
 use crate::contact::geometry::{self as geo, V3};
 use crate::contact::stiffness;
 use crate::model::contact::EP30;
@@ -290,18 +290,6 @@ impl InterfaceType for Type25 {
     /// None: the penalty stiffness is constant (the nodal step sees it).
     fn kinematic_step(&self, _f: &PairForce) -> Option<f64> {
         None
-    }
-
-    /// The baseline takes any initial penetration: nothing to decide.
-    fn initial_penetration(
-        &self,
-        _it: &Interface,
-        _xs: V3,
-        _xm: &[V3; 4],
-        _tri: bool,
-        _g: f64,
-    ) -> (InitialPenetration, f64) {
-        (InitialPenetration::Keep, 0.0)
     }
 }
 

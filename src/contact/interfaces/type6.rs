@@ -32,7 +32,7 @@ use super::{
 };
 use super::layout::{Interface, Pass};
 use crate::contact::friction::{self, FrictionLaw};
-use crate::contact::gap::{GapRule, InitialPenetration};
+use crate::contact::gap::GapRule;
 use crate::contact::geometry::{self as geo, V3};
 use crate::kinematics::function;
 use crate::model::{self, Function, InterfaceKind};
@@ -336,17 +336,8 @@ impl InterfaceType for Type6 {
         })
     }
 
-    fn initial_penetration(
-        &self,
-        _it: &Interface,
-        _xs: V3,
-        _xm: &[V3; 4],
-        _tri: bool,
-        _g: f64,
-    ) -> (InitialPenetration, f64) {
-        // An initial intersection is simply part of p_max (Icor = 0).
-        (InitialPenetration::Keep, 0.0)
-    }
+    // Initial penetration: kept (the trait's default): an initial
+    // intersection is simply part of p_max (Icor = 0).
 }
 
 #[cfg(test)]
