@@ -1338,6 +1338,114 @@ fn a_tied_shell_edge_follows_the_surface_it_stands_on() {
     assert!(z_of(&fs_free, 601.0).abs() < 1e-9, "untied, the fin stays");
 }
 
+/// A fin of three shells (part 3, bottom nodes 601-604 in node set 88)
+/// standing over the twin's flapping plate at x = 20, its bottom edge `z0`
+/// above the plate's nodes 5, 14, 23, 32, `h` high.
+fn fin(z0: f64, h: f64) -> String {
+    let node = |id: u64, x: f64, y: f64, z: f64| format!("{id:>8}{x:>16}{y:>16}{z:>16}\n");
+    let mut fin = String::from("*PART\nfin\n         3         1         1\n*NODE\n");
+    for j in 0..4u64 {
+        fin += &node(601 + j, 20.0, 5.0 * j as f64, z0);
+        fin += &node(605 + j, 20.0, 5.0 * j as f64, z0 + h);
+    }
+    fin += "*ELEMENT_SHELL\n";
+    for j in 0..3u64 {
+        let n = [601 + j, 602 + j, 606 + j, 605 + j];
+        fin += &format!(
+            "{:>8}{:>8}{:>8}{:>8}{:>8}{:>8}\n",
+            601 + j,
+            3,
+            n[0],
+            n[1],
+            n[2],
+            n[3]
+        );
+    }
+    fin + "*SET_NODE_LIST\n        88\n       601       602       603       604\n"
+}
+
+/// LS-DYNA's constraint ties (issue 17, → TYPE2): the fin's bottom edge
+/// 0.3 above the flapping plate, 10 high.
+/// - `_NODES_TO_SURFACE`: the nodes are moved onto the plate at set-up and
+///   follow its translations exactly, not its rotations (Spotflag 4);
+/// - `_CONSTRAINED_OFFSET`: the 0.3 offset is kept, exactly;
+/// - `_SURFACE_TO_SURFACE` on the fin's part: the same bits (the fin's top
+///   nodes are beyond the search distance and stay free);
+/// - `_SHELL_EDGE_TO_SURFACE`: moved too, and the rotations are tied
+///   (Spotflag 5);
+/// - no tie does work: the energy balance closes as well as with the fin
+///   left free.
+#[test]
+fn tied_nodes_and_surfaces_tie_translations_and_move_onto_the_surface() {
+    let run_tie = |tag: &str, tie: &str| {
+        let deck = variant(tag, "*INCLUDE", &format!("{}{tie}*INCLUDE", fin(0.3, 10.0)));
+        run(0, &deck, &format!("{tag}-run"))
+    };
+    let card = |kw: &str, sid: u64, sstyp: u64| {
+        format!("{kw}\n{sid:>10}         1{sstyp:>10}         3\n\n\n")
+    };
+    let col =
+        |fs: &[u8], id: f64, c: usize| rows_from(fs, id).iter().find(|r| r[0] == id).unwrap()[c];
+    let pairs = [(601.0, 5.0), (602.0, 14.0), (603.0, 23.0), (604.0, 32.0)];
+    let (fs_free, en_free) = run_tie("kw-tn-free", "");
+    let drift_free = worst_drift(&rows(&en_free));
+    let nodes = card("*CONTACT_TIED_NODES_TO_SURFACE", 88, 4);
+    let (fs_n, en_n) = run_tie("kw-tn-nodes", &nodes);
+    let offset = card("*CONTACT_TIED_NODES_TO_SURFACE_CONSTRAINED_OFFSET", 88, 4);
+    let (fs_o, en_o) = run_tie("kw-tn-offset", &offset);
+    let surface = card("*CONTACT_TIED_SURFACE_TO_SURFACE", 3, 3);
+    let (fs_s, _) = run_tie("kw-tn-surface", &surface);
+    let edge = card("*CONTACT_TIED_SHELL_EDGE_TO_SURFACE", 88, 4);
+    let (fs_e, en_e) = run_tie("kw-tn-edge", &edge);
+    assert!(
+        fs_s == fs_n,
+        "surface to surface ties the fin's bottom nodes as the node set"
+    );
+    assert!(
+        (col(&fs_free, 601.0, 3) - 0.3).abs() < 1e-12,
+        "untied, the fin stays"
+    );
+    for (f, p) in pairs {
+        let zp = col(&fs_n, p, 3);
+        assert!(zp > 0.1, "the plate moves up at node {p}: {zp}");
+        let (dz_n, dz_o, dz_e) = (
+            col(&fs_n, f, 3) - zp,
+            col(&fs_o, f, 3) - col(&fs_o, p, 3),
+            col(&fs_e, f, 3) - col(&fs_e, p, 3),
+        );
+        assert!(
+            dz_n.abs() < 1e-9,
+            "nodes to surface: fin node {f} {dz_n} off the plate"
+        );
+        assert!(
+            (dz_o - 0.3).abs() < 1e-9,
+            "constrained offset: {dz_o}, not 0.3"
+        );
+        assert!(
+            dz_e.abs() < 1e-9,
+            "shell edge: fin node {f} {dz_e} off the plate"
+        );
+        // Rotation about y (column 8): tied by the edge, free for the nodes.
+        let (wf_n, wp_n) = (col(&fs_n, f, 8), col(&fs_n, p, 8));
+        assert!(
+            (wf_n - wp_n).abs() > 1e-3,
+            "nodes to surface ties no rotation: {wf_n} {wp_n}"
+        );
+        let (wf_e, wp_e) = (col(&fs_e, f, 8), col(&fs_e, p, 8));
+        assert!(
+            (wf_e - wp_e).abs() < 1e-9,
+            "shell edge: rotation {wf_e} vs the plate's {wp_e}"
+        );
+    }
+    for (name, en) in [("nodes", &en_n), ("offset", &en_o), ("edge", &en_e)] {
+        let d = worst_drift(&rows(en));
+        assert!(
+            d <= 1.05 * drift_free,
+            "{name}: energy drift {d} vs {drift_free} untied"
+        );
+    }
+}
+
 /// A rigid wall on a rigid body's nodes (found this session: the wall's
 /// impulse is not passed to the body, which then leaves its rigid motion
 /// and blows up): the run stops by name at the first cycle the wall acts,

@@ -45,6 +45,9 @@ pub struct Tie {
     /// false: main nodes without rotations (bricks), the segment's rigid spin
     /// is used (`type2::Turn::Spin`).
     pub rot: bool,
+    /// Rotations transmitted (Spotflag 5); false: translations only
+    /// (Spotflag 4, `type2::Turn::Fixed`).
+    pub turns: bool,
     /// Secondary node's own mass and rotational inertia (transferred once).
     pub ms: f64,
     pub is: f64,
@@ -168,12 +171,12 @@ fn constrained_nodes(m: &Model) -> (Holder, Holder) {
 }
 
 /// One TYPE2 interface before the tnode numbering: (id, title, ties as
-/// (secondary node, segment, shape, offset, rotations), untied node ids,
+/// (secondary node, segment, shape, offset, (rotations, turns)), untied node ids,
 /// untied nodes removed, dsearch).
 type RawTied = (
     u64,
     String,
-    Vec<(u32, [u32; 4], [f64; 4], V3, bool)>,
+    Vec<(u32, [u32; 4], [f64; 4], V3, (bool, bool))>,
     Vec<u64>,
     bool,
     f64,
@@ -208,6 +211,74 @@ fn check_main_nodes(
     Ok(())
 }
 
+/// dsearch: the card's, or 0 → the mean edge length of the main segments
+/// (reference guide, /INTER/TYPE2 dsearch).
+pub fn search_distance(t: &crate::model::contact::Type2, segs: &[[u32; 4]], x: &[V3]) -> f64 {
+    if t.dsearch > 0.0 {
+        return t.dsearch;
+    }
+    let (mut sum, mut n) = (0.0, 0usize);
+    for s in segs {
+        let x = s.map(|q| x[q as usize]);
+        let k = if s[3] == s[2] { 3 } else { 4 };
+        for e in 0..k {
+            sum += geo::norm(geo::sub(x[(e + 1) % k], x[e]));
+            n += 1;
+        }
+    }
+    sum / n as f64
+}
+
+/// The main segment nearest to `xs` (the first of equals): its distance,
+/// index and the projection on it. `segs` is not empty.
+pub fn nearest_segment(xs: V3, segs: &[[u32; 4]], x: &[V3]) -> (f64, usize, geo::Projection) {
+    let mut best: Option<(f64, usize, geo::Projection)> = None;
+    for (k, seg) in segs.iter().enumerate() {
+        let xm = seg.map(|q| x[q as usize]);
+        let pr = geo::project(xs, &xm, seg[3] == seg[2]);
+        if best.as_ref().is_none_or(|b| pr.dist < b.0) {
+            best = Some((pr.dist, k, pr));
+        }
+    }
+    best.expect("segments")
+}
+
+/// LS-DYNA's tied options without `_OFFSET` (`Type2::project`): each
+/// secondary node within dsearch of the main surface is moved onto its
+/// nearest segment, before masses and element geometry are computed (the
+/// nodes of every such interface in card order, each from the positions
+/// the earlier moves left). Returns how many nodes moved.
+pub fn project_secondary_nodes(m: &mut Model) -> usize {
+    let mut moved = 0;
+    for i in 0..m.interfaces.len() {
+        let it = &m.interfaces[i];
+        let InterfaceKind::Type2(t) = &it.card.kind else {
+            continue;
+        };
+        if !t.project || it.main_segments.is_empty() {
+            continue;
+        }
+        let dsearch = search_distance(t, &it.main_segments, &m.nodes.x);
+        let mut to: Vec<(u32, V3)> = Vec::new();
+        for &s in &it.secondary_nodes {
+            let xs = m.nodes.x[s as usize];
+            let (dist, k, pr) = nearest_segment(xs, &it.main_segments, &m.nodes.x);
+            if dist <= dsearch {
+                let seg = it.main_segments[k];
+                to.push((
+                    s,
+                    geo::interpolate(&pr.shape, &seg.map(|q| m.nodes.x[q as usize])),
+                ));
+            }
+        }
+        moved += to.len();
+        for (s, p) in to {
+            m.nodes.x[s as usize] = p;
+        }
+    }
+    moved
+}
+
 /// Builds the TYPE2 set-up on rank 0; `holders[g]` lists the ranks holding global node g.
 pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<TiedSetup, String> {
     let mut raw: Vec<RawTied> = Vec::new();
@@ -227,22 +298,7 @@ pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<TiedSetup, String> {
                 "{kw}, field surf_IDm: the main surface has no segment"
             ));
         }
-        // dsearch: 0 → the mean size of the main segments (reference guide, /INTER/TYPE2 dsearch).
-        let dsearch = if t.dsearch > 0.0 {
-            t.dsearch
-        } else {
-            let (mut sum, mut n) = (0.0, 0usize);
-            for s in &i.main_segments {
-                let x = s.map(|q| m.nodes.x[q as usize]);
-                let tri = s[3] == s[2];
-                let k = if tri { 3 } else { 4 };
-                for e in 0..k {
-                    sum += geo::norm(geo::sub(x[(e + 1) % k], x[e]));
-                    n += 1;
-                }
-            }
-            sum / n as f64
-        };
+        let dsearch = search_distance(t, &i.main_segments, &m.nodes.x);
         let mut main_nodes: Vec<u32> = i.main_segments.iter().flatten().copied().collect();
         main_nodes.sort_unstable();
         main_nodes.dedup();
@@ -274,15 +330,7 @@ pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<TiedSetup, String> {
                 ));
             }
             let xs = m.nodes.x[s as usize];
-            let mut best: Option<(f64, usize, geo::Projection)> = None;
-            for (k, seg) in i.main_segments.iter().enumerate() {
-                let x = seg.map(|q| m.nodes.x[q as usize]);
-                let pr = geo::project(xs, &x, seg[3] == seg[2]);
-                if best.as_ref().is_none_or(|b| pr.dist < b.0) {
-                    best = Some((pr.dist, k, pr));
-                }
-            }
-            let (dist, k, pr) = best.expect("segments");
+            let (dist, k, pr) = nearest_segment(xs, &i.main_segments, &m.nodes.x);
             if dist > dsearch {
                 untied.push(nid(s));
                 continue;
@@ -290,7 +338,7 @@ pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<TiedSetup, String> {
             let seg = i.main_segments[k];
             let rot = seg.iter().all(|&q| m.nodal_inertia[q as usize] > 0.0);
             let p = geo::interpolate(&pr.shape, &seg.map(|q| m.nodes.x[q as usize]));
-            ties.push((s, seg, pr.shape, geo::sub(xs, p), rot));
+            ties.push((s, seg, pr.shape, geo::sub(xs, p), (rot, t.spotflag != 4)));
         }
         let removed = matches!(t.ignore, 1..=3);
         raw.push((c.id, c.title.clone(), ties, untied, removed, dsearch));
@@ -312,12 +360,13 @@ pub fn build(m: &Model, holders: &[Vec<u32>]) -> Result<TiedSetup, String> {
                 title,
                 ties: ties
                     .into_iter()
-                    .map(|(s, seg, shape, offset, rot)| Tie {
+                    .map(|(s, seg, shape, offset, (rot, turns))| Tie {
                         sec: tn(s),
                         seg: seg.map(tn),
                         shape,
                         offset,
                         rot,
+                        turns,
                         ms: m.nodal_mass[s as usize],
                         is: m.nodal_inertia[s as usize],
                     })
@@ -456,8 +505,9 @@ impl TiedSystem {
     }
 
     /// Local secondary nodes: (translation tied, rotation tied) per local node.
-    /// Every secondary node's rotation follows its segment (the main nodes'
-    /// rotations, or the segment's spin where they have none).
+    /// A secondary node's rotation follows its segment (the main nodes'
+    /// rotations, or the segment's spin where they have none) unless the tie
+    /// passes translations only (Spotflag 4).
     pub fn masks(&self, n: usize) -> (Vec<bool>, Vec<bool>) {
         let mut tr = vec![false; n];
         let mut ro = vec![false; n];
@@ -466,7 +516,7 @@ impl TiedSystem {
                 let l = self.local[tie.sec as usize];
                 if l != NONE {
                     tr[l as usize] = true;
-                    ro[l as usize] = true;
+                    ro[l as usize] = tie.turns;
                 }
             }
         }
@@ -478,7 +528,8 @@ impl TiedSystem {
     pub fn add_masses(&self, mass: &mut [f64], inertia: &mut [f64]) {
         for it in &self.setup.interfaces {
             for tie in &it.ties {
-                let sh = type2::mass_share(&tie.shape, tie.ms, tie.is, tie.offset, tie.rot);
+                let sh =
+                    type2::mass_share(&tie.shape, tie.ms, tie.is, tie.offset, tie.rot && tie.turns);
                 for (i, &q) in tie.seg.iter().enumerate() {
                     let l = self.local[q as usize];
                     if l == NONE || tie.shape[i] == 0.0 {
@@ -503,7 +554,9 @@ impl TiedSystem {
 
     /// How the tie's segment turns, from its corners' positions.
     fn turn(tie: &Tie, xm: &[V3; 4]) -> type2::Turn {
-        if tie.rot {
+        if !tie.turns {
+            type2::Turn::Fixed
+        } else if tie.rot {
             type2::Turn::Nodal
         } else {
             type2::Turn::Spin(type2::SpinMap::new(xm, tie.seg[3] == tie.seg[2]))
@@ -669,7 +722,7 @@ impl TiedSystem {
                 let d = self.d[ii][j];
                 let (vs, ws) = type2::recover(&tie.shape, &vm, &wm, d, &turn);
                 v[l as usize] = vs;
-                if tie.rot || tie.is > 0.0 {
+                if tie.turns && (tie.rot || tie.is > 0.0) {
                     vr[l as usize] = ws;
                 }
                 self.d_next[ii][j] = crate::vec3::rotate(d, ws, dt);

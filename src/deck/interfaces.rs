@@ -131,6 +131,7 @@ fn read_type2(cards: &mut Cards) -> InputResult<Type2> {
         rupture,
         penalty,
         thermal,
+        project: false,
     })
 }
 

@@ -377,9 +377,20 @@ const TRANSLATORS: &[(&str, Translate)] = &[
         "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE",
         contacts::surface_to_surface,
     ),
+    ("CONTACT_TIED_NODES_TO_SURFACE", tied::tied),
+    (
+        "CONTACT_TIED_NODES_TO_SURFACE_CONSTRAINED_OFFSET",
+        tied::tied,
+    ),
+    ("CONTACT_TIED_SURFACE_TO_SURFACE", tied::tied),
+    (
+        "CONTACT_TIED_SURFACE_TO_SURFACE_CONSTRAINED_OFFSET",
+        tied::tied,
+    ),
+    ("CONTACT_TIED_SHELL_EDGE_TO_SURFACE", tied::tied),
     (
         "CONTACT_TIED_SHELL_EDGE_TO_SURFACE_CONSTRAINED_OFFSET",
-        tied::shell_edge,
+        tied::tied,
     ),
     ("CONTROL_CONTACT", contacts::control),
     ("HOURGLASS", hourglass::hourglass),

@@ -1,21 +1,28 @@
-//! `*CONTACT_TIED_SHELL_EDGE_TO_SURFACE_CONSTRAINED_OFFSET` → /INTER/TYPE2
-//! Spotflag 5 (keyword manual volume I "*CONTACT", the tied options; the
-//! reference guide's TYPE2).
+//! LS-DYNA's constraint-based tied contacts → /INTER/TYPE2 (keyword manual
+//! volume I "*CONTACT", the tied options; the reference guide's TYPE2):
 //!
-//! The secondary nodes (SSID: a node set, part, part set or segment set)
-//! are tied kinematically to the main surface (MSID) at set-up: each
-//! follows the point of the segment it projects on, with its offset kept
-//! as a rigid arm (the `_CONSTRAINED_OFFSET` option: nodes are not moved
-//! onto the surface), and its rotations follow the segment's (a shell
-//! edge's rotations are tied too: Spotflag 5 passes the moments to the
-//! main nodes). Nodes that find no segment within the search distance
-//! stay free, with a warning (Ignore 1000, dsearch from the element sizes).
+//! | keyword | ties | Spotflag | nodes moved onto the surface |
+//! | --- | --- | --- | --- |
+//! | `*CONTACT_TIED_NODES_TO_SURFACE` | translations | 4 | yes |
+//! | `*CONTACT_TIED_SURFACE_TO_SURFACE` | translations | 4 | yes |
+//! | `*CONTACT_TIED_SHELL_EDGE_TO_SURFACE` | translations and rotations | 5 | yes |
+//! | each with `_CONSTRAINED_OFFSET` | the same | the same | no: the offset is a rigid arm |
 //!
-//! Not registered (they stop `run` by name): the plain option, which moves
-//! the nodes onto the surface; `_OFFSET` and `_BEAM_OFFSET` (penalty ties);
-//! `_NODES_TO_SURFACE` and `_SURFACE_TO_SURFACE`, which tie translations
-//! only. Refused by name here: SBOXID, MBOXID, a birth or death time,
-//! SST/MST, and optional cards.
+//! The secondary nodes (SSID: a node set, part, part set, shell set or
+//! segment set) are tied kinematically at set-up: each follows the point
+//! of the main segment (MSID) it projects on. Without an offset option
+//! LS-DYNA "projects the slave nodes to the master surface during
+//! initialization" (`Type2::project`: moved before masses and element
+//! geometry). Spotflag 4 passes no rotation (reference guide: "Rotational
+//! DOF are not transmitted"), as LS-DYNA's nodes and surfaces ties, which
+//! constrain translations only; a shell edge's rotations are tied too
+//! (Spotflag 5 passes the moments to the main nodes). Nodes that find no
+//! segment within the search distance stay free, with a warning (Ignore
+//! 1000, dsearch from the element sizes).
+//!
+//! Not registered (they stop `run` by name): `_OFFSET` and `_BEAM_OFFSET`,
+//! LS-DYNA's penalty-based ties, and `_FAILURE`. Refused by name here:
+//! SBOXID, MBOXID, a birth or death time, SST/MST, and optional cards.
 
 use super::card::Cards;
 use super::contacts::{parts_surface, secondary_nodes};
@@ -24,9 +31,28 @@ use super::Ctx;
 use crate::model::contact::Type2;
 use crate::model::{Id, InputResult, InterfaceKind, InterfaceSpec};
 
+/// Spotflag and whether the nodes move onto the surface, by keyword
+/// (module table).
+fn form(name: &str) -> (i64, bool) {
+    let (base, _, _) = super::base_name(name);
+    let (base, project) = match base.strip_suffix("_CONSTRAINED_OFFSET") {
+        Some(b) => (b, false),
+        None => (base, true),
+    };
+    (
+        if base.ends_with("SHELL_EDGE_TO_SURFACE") {
+            5
+        } else {
+            4
+        },
+        project,
+    )
+}
+
 /// Cards 1-3 of *CONTACT (the title card with `_ID`/`_TITLE`).
-pub fn shell_edge(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
+pub fn tied(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
     let kw = format!("*{}", b.name);
+    let (spotflag, project) = form(&b.name);
     let std = cards.standard();
     let (mut id, title) = super::contacts::heading(b, cards)?;
     let c1 = cards.next(
@@ -62,7 +88,7 @@ pub fn shell_edge(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()
             grnod_ids,
             surf_idm,
             ignore: 1000,
-            spotflag: 5,
+            spotflag,
             level: 0,
             isearch: 2,
             idel2: 1000,
@@ -71,6 +97,7 @@ pub fn shell_edge(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()
             rupture: None,
             penalty: None,
             thermal: None,
+            project,
         }),
         loc: loc.clone(),
         ids_loc: loc,

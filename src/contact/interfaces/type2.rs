@@ -43,6 +43,14 @@
 //! secondary node's own rotational inertia (and m_s d²) has no place on
 //! translation-only main nodes (diagonal masses): it is left out of the
 //! dynamics and of the kinetic energy alike.
+//!
+//! Spotflag 4 (reference guide /INTER/TYPE2: "Rotational DOF are not
+//! transmitted"; LS-DYNA's tied nodes and surfaces, which tie translations
+//! only): `Turn::Fixed`. v_s = Σ Φ_i v_i and F_i = Φ_i F_s; the offset d⃗
+//! keeps its direction, and the secondary node's moment, rotational inertia
+//! and rotation stay its own. With d⃗ = 0 (nodes moved onto the surface) the
+//! tie keeps momentum and angular momentum exactly; with an offset, the
+//! moment d⃗ × F_s is not passed (as the reference formulation).
 
 use crate::contact::geometry::{add, cross, dot, scale, sub, V3};
 
@@ -122,10 +130,15 @@ impl SpinMap {
 
 /// How the segment turns: its nodes' rotational velocities (shells), or its
 /// rigid spin from the nodes' velocities (bricks: `None` when degenerate).
+/// `Fixed`: Spotflag 4, the rotations are not transmitted (reference guide
+/// /INTER/TYPE2: "Rotational DOF are not transmitted"): the offset keeps
+/// its direction, the secondary node's moment stays with it and its
+/// rotation is its own.
 #[derive(Clone, Copy, Debug)]
 pub enum Turn {
     Nodal,
     Spin(Option<SpinMap>),
+    Fixed,
 }
 
 /// Force F and moment M of the secondary node spread over the segment's corners.

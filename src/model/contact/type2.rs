@@ -41,6 +41,12 @@ pub struct Type2 {
     pub penalty: Option<Type2Penalty>,
     /// Thermal card; `None` when absent or blank.
     pub thermal: Option<Type2Thermal>,
+    /// Not a Radioss field: the secondary nodes are moved onto their main
+    /// segment at set-up (LS-DYNA's `*CONTACT_TIED_..._TO_SURFACE` without
+    /// an `_OFFSET` option: "slave nodes are projected to the master surface
+    /// during initialization"), before masses and element geometry.
+    #[serde(default)]
+    pub project: bool,
 }
 
 /// TYPE2 rupture cards (Spotflag 20-22).

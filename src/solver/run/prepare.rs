@@ -309,14 +309,15 @@ fn check_interface(c: &model::InterfaceSpec) -> Result<(), String> {
     match &c.kind {
         K::Type2(t) => {
             // Spotflag 0 reads as 5 (deck::interfaces::read_type2): the standard
-            // kinematic formulation is the one computed (contact::interfaces::type2).
+            // kinematic formulation and Spotflag 4, translations only, are the
+            // ones computed (contact::interfaces::type2).
             let fo = |field: &str, what: &str| {
                 Err(format!(
                     "{kw}, field {field}: {what} is not supported by the engine yet"
                 ))
             };
             match t.spotflag {
-                5 => {}
+                4 | 5 => {}
                 1 => {
                     return fo(
                         "Spotflag",
@@ -330,7 +331,6 @@ fn check_interface(c: &model::InterfaceSpec) -> Result<(), String> {
                     )
                 }
                 3 => return fo("Spotflag", "Spotflag = 3"),
-                4 => return fo("Spotflag", "Spotflag = 4 (rotations not transmitted)"),
                 10..=12 => {
                     return fo(
                         "Spotflag",
