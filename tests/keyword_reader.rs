@@ -580,10 +580,11 @@ fn truncated_and_mutated_keyword_decks_never_panic() {
 }
 
 /// Keywords the reader completes once the deck is read (discrete parts,
-/// hourglass, shell sets, surface-to-surface SOFT 2, tied edges, contact
-/// controls, rigid bodies, moving walls), inserted before the twin's
-/// *INCLUDE for the mutation test.
-const MANY_KEYWORDS: &str = "*PART\nspring\n         4         4         4\n*SECTION_DISCRETE\n         4         0\n         0         0\n*MAT_SPRING_ELASTIC\n         4       1.0\n*ELEMENT_DISCRETE\n     701       4       1      36\n*HOURGLASS\n         5         2      0.05\n*CONTROL_HOURGLASS\n         1\n*SET_SHELL_LIST\n        42\n         1         2         3\n*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE\n        42         1         1         3\n\n\n         2       0.1         0         0         2         5\n*CONTACT_TIED_SHELL_EDGE_TO_SURFACE_CONSTRAINED_OFFSET\n         1         2         3         3\n\n\n*CONTROL_CONTACT\n       0.1\n         0\n\n         1\n*SET_NODE_LIST\n        88\n      1001      1002\n*CONSTRAINED_NODAL_RIGID_BODY\n        50         0        88\n*RIGIDWALL_PLANAR_MOVING\n         0\n      -5.0         0         0      -4.0         0         0\n      0.01       1.0\n*MAT_RIGID\n         9  7.85e-06       210       0.3\n         1         7         7\n\n*INCLUDE";
+/// hourglass, shell sets, surface-to-surface SOFT 2, general contact, tied
+/// edges and nodes (moved onto their surface at load), contact controls,
+/// rigid bodies, moving walls), inserted before the twin's *INCLUDE for the
+/// mutation test.
+const MANY_KEYWORDS: &str = "*PART\nspring\n         4         4         4\n*SECTION_DISCRETE\n         4         0\n         0         0\n*MAT_SPRING_ELASTIC\n         4       1.0\n*ELEMENT_DISCRETE\n     701       4       1      36\n*HOURGLASS\n         5         2      0.05\n*CONTROL_HOURGLASS\n         1\n*SET_SHELL_LIST\n        42\n         1         2         3\n*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE\n        42         1         1         3\n\n\n         2       0.1         0         0         2         5\n*CONTACT_TIED_SHELL_EDGE_TO_SURFACE_CONSTRAINED_OFFSET\n         1         2         3         3\n\n\n*CONTACT_AUTOMATIC_GENERAL_INTERIOR\n         1         0         3\n\n\n*CONTACT_TIED_NODES_TO_SURFACE\n         2         1         3         3\n\n\n*CONTROL_CONTACT\n       0.1\n         0\n\n         1\n*SET_NODE_LIST\n        88\n      1001      1002\n*CONSTRAINED_NODAL_RIGID_BODY\n        50         0        88\n*RIGIDWALL_PLANAR_MOVING\n         0\n      -5.0         0         0      -4.0         0         0\n      0.01       1.0\n*MAT_RIGID\n         9  7.85e-06       210       0.3\n         1         7         7\n\n*INCLUDE";
 
 /// *MAT_PIECEWISE_LINEAR_PLASTICITY on the flapping plate (20 m/s):
 /// bilinear (SIGY, ETAN) runs the same bits as *MAT_PLASTIC_KINEMATIC with
@@ -832,25 +833,34 @@ fn soft2_takes_the_initial_penetration_as_baseline_and_pushes_k_dp() {
 /// either near a segment of the other. The edge-to-edge check holds it and
 /// throws it back (byte-identical on 1, 2 and 4 ranks); SOFT = 0
 /// (edges0.k) and SOFT = 2 with DEPTH = 2 let it fall through.
+/// The edge decks' upper plate (nodes 1-9): its lowest z at the end.
+fn lowest_upper_node(fs: &[u8]) -> f64 {
+    rows_from(fs, 1.0)
+        .iter()
+        .filter(|r| r[0] <= 9.0)
+        .map(|r| r[3])
+        .fold(f64::INFINITY, f64::min)
+}
+
 #[test]
 fn soft2_with_depth_5_catches_an_edge_crossing_that_soft0_misses() {
-    // The upper plate's nodes are 1-9: their lowest z at the end.
-    let lowest = |fs: &[u8]| -> f64 {
-        rows_from(fs, 1.0)
-            .iter()
-            .filter(|r| r[0] <= 9.0)
-            .map(|r| r[3])
-            .fold(f64::INFINITY, f64::min)
-    };
     let deck2 = soft2_dir().join("edges2.k");
     let (fs2, en2) = run(0, &deck2, "kw-soft2-edges");
-    assert!(lowest(&fs2) > 0.5, "SOFT 2, DEPTH 5: {}", lowest(&fs2));
+    assert!(
+        lowest_upper_node(&fs2) > 0.5,
+        "SOFT 2, DEPTH 5: {}",
+        lowest_upper_node(&fs2)
+    );
     for np in [2, 4] {
         let (fs, en) = run(np, &deck2, &format!("kw-soft2-edges-np{np}"));
         assert!(fs == fs2 && en == en2, "edges2.k differs on {np} ranks");
     }
     let (fs0, _) = run(0, &soft2_dir().join("edges0.k"), "kw-soft2-edges0");
-    assert!(lowest(&fs0) < -2.0, "SOFT 0: {}", lowest(&fs0));
+    assert!(
+        lowest_upper_node(&fs0) < -2.0,
+        "SOFT 0: {}",
+        lowest_upper_node(&fs0)
+    );
     let text = std::fs::read_to_string(&deck2).unwrap();
     let card_a = "         2       0.1         0         0         2         5";
     assert!(text.contains(card_a));
@@ -862,7 +872,11 @@ fn soft2_with_depth_5_catches_an_edge_crossing_that_soft0_misses() {
     )
     .unwrap();
     let (fsd, _) = run(0, &depth2, "kw-soft2-depth2-run");
-    assert!(lowest(&fsd) < -2.0, "SOFT 2, DEPTH 2: {}", lowest(&fsd));
+    assert!(
+        lowest_upper_node(&fsd) < -2.0,
+        "SOFT 2, DEPTH 2: {}",
+        lowest_upper_node(&fsd)
+    );
     // Options it does not compute stop the run by name.
     for (from, to, what) in [
         (
@@ -1336,6 +1350,52 @@ fn a_tied_shell_edge_follows_the_surface_it_stands_on() {
     let free = variant("kw-untied", "*INCLUDE", &format!("{fin}*INCLUDE"));
     let (fs_free, _) = run(0, &free, "kw-untied-run");
     assert!(z_of(&fs_free, 601.0).abs() < 1e-9, "untied, the fin stays");
+}
+
+/// *CONTACT_AUTOMATIC_GENERAL (issue 17, → TYPE19 self-contact: TYPE7
+/// nodes to surface and TYPE11 free edges, both with LS-DYNA's SOFT 0
+/// penalty) on the SOFT 2 edge deck: the falling plate's edge is stopped by
+/// the other plate's edge and thrown back, where the single-surface
+/// contact lets it through (`soft2_with_depth_5_...`); `_INTERIOR` (every
+/// edge) too. The run is byte-identical on 1, 2 and 4 ranks, and once the
+/// plates part the energy balance closes within 1.5 % (a contact of 13
+/// cycles: the penalty force starts at the first cycle inside the gap).
+#[test]
+fn automatic_general_stops_the_edge_crossing_that_single_surface_misses() {
+    let text = std::fs::read_to_string(soft2_dir().join("edges0.k")).unwrap();
+    let dir = common::scratch("kw-general");
+    for kw in ["GENERAL", "GENERAL_INTERIOR"] {
+        let deck = dir.join(format!("{kw}.k"));
+        let to = format!("*CONTACT_AUTOMATIC_{kw}");
+        std::fs::write(
+            &deck,
+            text.replacen("*CONTACT_AUTOMATIC_SINGLE_SURFACE", &to, 1),
+        )
+        .unwrap();
+        let (fs, en) = run(0, &deck, &format!("kw-general-{kw}"));
+        assert!(
+            lowest_upper_node(&fs) > 0.5,
+            "{kw}: the edge went through: {}",
+            lowest_upper_node(&fs)
+        );
+        let r = rows(&en);
+        assert!(
+            r.iter().any(|x| x[7] > 1e-3),
+            "{kw}: the contact stored energy"
+        );
+        let e0 = total_energy(&r[0]);
+        let last = (total_energy(r.last().unwrap()) - e0) / e0;
+        assert!(
+            last.abs() < 0.015,
+            "{kw}: energy balance {last} after the contact"
+        );
+        if kw == "GENERAL" {
+            for np in [2, 4] {
+                let (f2, e2) = run(np, &deck, &format!("kw-general-np{np}"));
+                assert!(f2 == fs && e2 == en, "{kw} differs on {np} ranks");
+            }
+        }
+    }
 }
 
 /// A fin of three shells (part 3, bottom nodes 601-604 in node set 88)

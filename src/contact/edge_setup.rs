@@ -8,7 +8,9 @@
 //! docs/notes/type11_type19_research.md §5–6:
 //! - an edge on shells takes the thickest of them (on equal thickness the
 //!   stiffer): k = E·t, gap t/2; an edge on solids only: k = B·V/L², gap 0
-//!   (the shell wins when both hold it). Stfac multiplies k in the kernel;
+//!   (the shell wins when both hold it). Stfac multiplies k in the kernel.
+//!   A type with its own rule (`InterfaceType::element_stiffness`: a
+//!   keyword deck's LS-DYNA penalty) takes it from the element instead;
 //! - Idel (card /INTER/TYPE11): an edge leaves when all (Idel 1) or any
 //!   (Idel 2) of the elements holding it are deleted; -1, -2 remove main
 //!   edges only;
@@ -20,7 +22,9 @@
 use super::element_data::{bulk, element_volume, node_elements};
 use super::geometry::{self as geo};
 use super::interfaces::layout::{IdelRule, Pass};
-use super::interfaces::PassSides;
+use super::interfaces::{InterfaceType, PassSides};
+use super::setup::{face_points, shell_size, solid_size};
+use super::stiffness::ElementSize;
 use crate::model::{distinct_nodes, ElementKind, Model};
 use std::collections::HashMap;
 
@@ -43,6 +47,7 @@ fn edge_data(
     m: &Model,
     ne: &HashMap<u32, Vec<(u8, u32)>>,
     e: [u32; 2],
+    own: &dyn Fn(&ElementSize) -> Option<f64>,
 ) -> Result<EdgeData, String> {
     let xa = m.nodes.x[e[0] as usize];
     let xb = m.nodes.x[e[1] as usize];
@@ -61,8 +66,10 @@ fn edge_data(
         };
         let d = if shell {
             let t = set.thick[el as usize];
+            let n = set.nodes_of(el as usize);
+            let size = shell_size(mat, &face_points(m, n), n.len() == 3, t);
             EdgeData {
-                k: mat.e * t,
+                k: own(&size).unwrap_or(mat.e * t),
                 gap: 0.5 * t,
                 thick: Some(t),
                 len,
@@ -70,11 +77,12 @@ fn edge_data(
             }
         } else {
             let v = element_volume(m, ki as usize, el as usize);
-            let k = if len > 0.0 {
+            let size = solid_size(mat, v.max(0.0).powf(2.0 / 3.0), v);
+            let k = own(&size).unwrap_or(if len > 0.0 {
                 bulk(mat) * v / (len * len)
             } else {
                 0.0
-            };
+            });
             EdgeData {
                 k,
                 gap: 0.0,
@@ -169,11 +177,12 @@ pub(super) struct EdgeSizes {
 pub(super) fn build_edge_pass(
     m: &Model,
     cnode: &dyn Fn(u32) -> u32,
-    igap: i64,
+    ty: &dyn InterfaceType,
     idel: i64,
     sides: &PassSides,
     kw: &str,
 ) -> Result<(Pass, EdgeSizes), String> {
+    let igap = ty.igap();
     let nodes = distinct_nodes(
         sides
             .sec_edges
@@ -183,14 +192,15 @@ pub(super) fn build_edge_pass(
             .copied(),
     );
     let ne = node_elements(m, &nodes);
-    let data = |edges: &[[u32; 2]]| -> Result<Vec<EdgeData>, String> {
+    let data = |edges: &[[u32; 2]], main: bool| -> Result<Vec<EdgeData>, String> {
+        let own = |size: &ElementSize| ty.element_stiffness(size, main);
         edges
             .iter()
-            .map(|&e| edge_data(m, &ne, e).map_err(|s| format!("{kw}: {s}")))
+            .map(|&e| edge_data(m, &ne, e, &own).map_err(|s| format!("{kw}: {s}")))
             .collect()
     };
-    let main = data(sides.main_edges)?;
-    let sec = data(sides.sec_edges)?;
+    let main = data(sides.main_edges, true)?;
+    let sec = data(sides.sec_edges, false)?;
     let mut sizes = EdgeSizes {
         l_min: f64::INFINITY,
         ..Default::default()

@@ -56,6 +56,22 @@ impl FrictionLaw {
         self.ifric != 0 || self.fric != 0.0
     }
 
+    /// The stiffness a pair adds to its nodes' time step
+    /// (docs/notes/contact_time_step_research.md §2): the tangent `kt` and
+    /// the normal damper `c` over the last step, or the friction damper
+    /// VISF·√(2·kd·m)/Δt where that is stiffer; `kt` before the first step.
+    pub fn step_stiffness(&self, kt: f64, c: f64, kd: f64, m: f64, dt: f64) -> f64 {
+        if dt <= 0.0 {
+            return kt;
+        }
+        let k = kt + c / dt;
+        if self.active() {
+            k.max(self.visf * (2.0 * kd * m).sqrt() / dt)
+        } else {
+            k
+        }
+    }
+
     /// μ(p, V): p the contact pressure on the main segment, V the sliding speed.
     pub fn mu(&self, p: f64, v: f64) -> f64 {
         let c = &self.c;

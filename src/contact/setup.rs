@@ -158,14 +158,14 @@ fn node_data(m: &Model, nodes: &[u32], ty: &dyn InterfaceType) -> HashMap<u32, (
 }
 
 /// The positions of a face's 3 or 4 nodes (a triangle repeats its third).
-fn face_points(m: &Model, n: &[u32]) -> [V3; 4] {
+pub(super) fn face_points(m: &Model, n: &[u32]) -> [V3; 4] {
     let x = |i: usize| m.nodes.x[n[i.min(n.len() - 1)] as usize];
     [x(0), x(1), x(2), x(3)]
 }
 
 /// A shell face of material `mat` for a type's own stiffness rule: its
 /// area and longest diagonal (a triangle: its longest edge).
-fn shell_size(mat: &MaterialSpec, x: &[V3; 4], tri: bool, thick: f64) -> ElementSize {
+pub(super) fn shell_size(mat: &MaterialSpec, x: &[V3; 4], tri: bool, thick: f64) -> ElementSize {
     let d = |a: usize, b: usize| geo::norm(geo::sub(x[a], x[b]));
     let dmax = if tri {
         d(0, 1).max(d(1, 2)).max(d(2, 0))
@@ -184,7 +184,7 @@ fn shell_size(mat: &MaterialSpec, x: &[V3; 4], tri: bool, thick: f64) -> Element
 }
 
 /// A solid of material `mat` and volume `volume` under a face of `area`.
-fn solid_size(mat: &MaterialSpec, area: f64, volume: f64) -> ElementSize {
+pub(super) fn solid_size(mat: &MaterialSpec, area: f64, volume: f64) -> ElementSize {
     ElementSize {
         bulk: bulk(mat),
         shell: false,
@@ -383,7 +383,7 @@ fn build_interface(
         } else {
             let cnode = |g: u32| surfaces.cn(g);
             let (pass, e) =
-                super::edge_setup::build_edge_pass(m, &cnode, ty.igap(), common.idel, &sides, &kw)?;
+                super::edge_setup::build_edge_pass(m, &cnode, ty, common.idel, &sides, &kw)?;
             sizes.l_sum += e.l_sum;
             sizes.n_edges += e.n_edges;
             sizes.l_min = sizes.l_min.min(e.l_min);

@@ -566,6 +566,7 @@ fn read_type11(cards: &mut Cards, old_layout: bool) -> InputResult<Type11> {
         bumult,
         fric_id,
         thermal,
+        dyna: None,
     })
 }
 

@@ -1,4 +1,5 @@
-//! `*CONTACT_AUTOMATIC_SINGLE_SURFACE` and `*CONTACT_AUTOMATIC_NODES_TO_SURFACE`
+//! `*CONTACT_AUTOMATIC_SINGLE_SURFACE`, `*CONTACT_AUTOMATIC_NODES_TO_SURFACE`
+//! and `*CONTACT_AUTOMATIC_GENERAL(_INTERIOR)`
 //! with SOFT = 0 or 1, and `*CONTROL_CONTACT`'s SLSFAC (keyword manual volume I,
 //! "*CONTACT", "*CONTROL_CONTACT").
 //!
@@ -28,6 +29,15 @@
 //! surface TYPE7s, each surface's nodes on the other's segments (the second
 //! with SFS and SFM swapped), as a Radioss deck writes a symmetric contact.
 //!
+//! `*CONTACT_AUTOMATIC_GENERAL` (SOFT 0/1) is a TYPE19 self-contact of the
+//! SSID surface, which Radioss computes as TYPE7 nodes to surface plus
+//! TYPE11 edge to edge: LS-DYNA checks "beams and exterior (unshared)
+//! shell edges" along their whole length besides the nodes, so the edge
+//! part takes the surface's free edges (Iedge 1), and every edge with
+//! `_INTERIOR` (Iedge 2); both parts run LS-DYNA's penalty
+//! (`contact::interfaces::type11`, linear law). (OpenRadioss's reader maps
+//! the keyword to a TYPE25 without edges unless SOFT is −19.)
+//!
 //! Other SOFT values (and SOFT 2 nodes to surface), SBOPT other than 2, DEPTH other than 2 or 5 on SOFT 2,
 //! FRCFRQ > 1, SST/MST, SFST/SFMT, DC, VC, box and set types not read are
 //! refused by name.
@@ -36,7 +46,7 @@ use super::card::Cards;
 use super::source::Block;
 use super::{base_name, Ctx};
 use crate::deck::{NodeGroupKind, SurfaceCard, SurfaceDef};
-use crate::model::contact::{DynaPenalty, Type7, EP30};
+use crate::model::contact::{DynaPenalty, Type19, Type7, EP30};
 use crate::model::{Id, InputResult, InterfaceKind, InterfaceSpec, Loc};
 
 /// `*CONTROL_CONTACT` card 1: SLSFAC RWPNAL ISLCHK SHLTHK PENOPT THKCHG
@@ -155,6 +165,16 @@ enum Form {
     SingleSurface,
     NodesToSurface,
     SurfaceToSurface,
+    /// `*CONTACT_AUTOMATIC_GENERAL`; `_INTERIOR`: every edge, not only the
+    /// free ones.
+    General {
+        interior: bool,
+    },
+}
+
+pub fn general(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
+    let interior = base_name(&b.name).0.ends_with("_INTERIOR");
+    contact(b, cards, ctx, Form::General { interior })
 }
 
 pub fn single_surface(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
@@ -218,11 +238,11 @@ fn contact(b: &Block, cards: &mut Cards, ctx: &mut Ctx, form: Form) -> InputResu
         }
     }
     let (soft, sofscl, depth) = optional_cards(cards, ctx, &kw)?;
-    if (form, soft) == (Form::NodesToSurface, 2) {
+    if soft == 2 && matches!(form, Form::NodesToSurface | Form::General { .. }) {
         ctx.refuse(
             &loc,
             &kw,
-            "SOFT 2 on a nodes-to-surface contact (segment-based contact pairs segments)",
+            "SOFT 2 on a nodes-to-surface or general contact (segment-based contact is for single-surface and surface-to-surface contacts)",
         );
     }
     if id == 0 {
@@ -243,15 +263,31 @@ fn contact(b: &Block, cards: &mut Cards, ctx: &mut Ctx, form: Form) -> InputResu
         ))
     };
     let one = |grnod, surf, dyna| type7(grnod, surf, fs, vdc, bt, dt, dyna);
-    let spec = |id, title: String, t: Type7| InterfaceSpec {
+    let spec_of = |id, title: String, kind| InterfaceSpec {
         id,
         unit_id: 0,
         title,
-        kind: InterfaceKind::Type7(t),
+        kind,
         loc: loc.clone(),
         ids_loc: loc.clone(),
     };
+    let spec = |id, title: String, t: Type7| spec_of(id, title, InterfaceKind::Type7(t));
     let specs = match form {
+        Form::General { interior } => {
+            // TYPE19 self-contact: nodes to surface (the node part) and the
+            // shell edges against each other (the edge part), both with
+            // LS-DYNA's penalty; free edges, or every edge with _INTERIOR.
+            let surf = parts_surface(ctx, ssid, sstyp, &loc, &kw, "SSID")?;
+            let t = Type19 {
+                surf_ids: surf,
+                surf_idm: 0,
+                igap: 1,
+                iedge: if interior { 2 } else { 1 },
+                edge_scale_gap: 0.0,
+                nodes: one(0, surf, penalty),
+            };
+            vec![spec_of(id, title, InterfaceKind::Type19(t))]
+        }
         Form::SingleSurface => {
             let surf = parts_surface(ctx, ssid, sstyp, &loc, &kw, "SSID")?;
             vec![spec(id, title, one(0, surf, penalty))]
@@ -550,7 +586,12 @@ pub fn finish(ctx: &mut Ctx) {
         ctx.deck.node_groups[i].items = all.clone();
     }
     for &i in &ctx.contacts {
-        if let InterfaceKind::Type7(t) = &mut ctx.deck.interfaces[i].kind {
+        let t = match &mut ctx.deck.interfaces[i].kind {
+            InterfaceKind::Type7(t) => Some(t),
+            InterfaceKind::Type19(t) => Some(&mut t.nodes),
+            _ => None,
+        };
+        if let Some(t) = t {
             if let Some(d) = &mut t.dyna {
                 d.slsfac = ctx.slsfac;
             }

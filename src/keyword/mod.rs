@@ -392,6 +392,8 @@ const TRANSLATORS: &[(&str, Translate)] = &[
         "CONTACT_TIED_SHELL_EDGE_TO_SURFACE_CONSTRAINED_OFFSET",
         tied::tied,
     ),
+    ("CONTACT_AUTOMATIC_GENERAL", contacts::general),
+    ("CONTACT_AUTOMATIC_GENERAL_INTERIOR", contacts::general),
     ("CONTROL_CONTACT", contacts::control),
     ("HOURGLASS", hourglass::hourglass),
     ("CONTROL_HOURGLASS", hourglass::control),

@@ -30,6 +30,18 @@
 //! Gap (card Igap): 1000 constant Gapmin; 1 variable max(Gapmin, g_s + g_m)
 //! with the edges' half shell thicknesses; 3 also at most %mesh_size times
 //! the sum of the edges' lengths.
+//!
+//! The edge part of a keyword deck's `*CONTACT_AUTOMATIC_GENERAL`
+//! (`Type11::dyna`) runs LS-DYNA's penalty instead, as its node part does
+//! (`type7`'s `DynaPenalty`): each edge's stiffness is the SOFT = 0 rule of
+//! the shell under it (SLSFAC·SFS·K·A/d_max; LS-DYNA documents edge contact
+//! as the shell's contact surface wrapped around its free edge, with the
+//! shell's penalty: its edge stiffness formula is not published, so the
+//! segment's is taken), the pair takes the smaller of its two edges'
+//! (SOFT = 1: at least 0.5·SOFSCL·m*/Δt², m* the smaller edge mass); the
+//! force is linear, F = K·p, through the whole gap (no 0.9 fraction, no
+//! deactivation: edges that cross release the pair), damped by VDC % of
+//! critical, 2·√(K·M).
 
 use super::{
     CandidateKind, CandidateSearch, CardCommon, InterfaceType, NodeState, PairContext, PairForce,
@@ -59,6 +71,8 @@ pub struct Type11 {
     pub igap: i64,
     pub gapmin: f64,
     pub mesh_size_pct: f64,
+    /// A keyword deck's penalty (module comment).
+    pub dyna: Option<crate::model::contact::DynaPenalty>,
 }
 
 impl InterfaceType for Type11 {
@@ -122,6 +136,7 @@ impl InterfaceType for Type11 {
             igap: t.igap,
             gapmin: t.gapmin,
             mesh_size_pct: t.mesh_size_pct,
+            dyna: t.dyna,
         };
         Some((own, common))
     }
@@ -171,7 +186,19 @@ impl InterfaceType for Type11 {
         stiffness::brick_type7(bulk, area, volume)
     }
 
+    /// A keyword deck's edge: the SOFT = 0 rule of its shell (SLSFAC·SFS on
+    /// the secondary edges, SLSFAC·SFM on the main ones).
+    fn element_stiffness(&self, el: &stiffness::ElementSize, main: bool) -> Option<f64> {
+        let d = self.dyna?;
+        let f = d.slsfac * if main { d.sfm } else { d.sfs };
+        Some(stiffness::dyna_soft0(f, el))
+    }
+
+    /// By Istf; a keyword deck's: the smaller of the two edges'.
     fn pair_stiffness(&self, it: &Interface, p: &Pass, k: usize, m: usize) -> f64 {
+        if self.dyna.is_some() {
+            return p.sec_k[k].min(p.seg_k[m]);
+        }
         edge_pair_stiffness(self.istf, it.stfac, p.sec_k[k], p.seg_k[m], self.stmin, self.stmax)
     }
 
@@ -191,6 +218,7 @@ impl InterfaceType for Type11 {
             viss: self.viss,
             friction: &it.friction,
             dt: c.dt,
+            soft: self.dyna.map(|d| if d.soft == 1 { d.sofscl } else { 0.0 }),
         };
         match edge_pair(&inp, st) {
             EdgeOutcome::Free => PairOutcome::Free,
@@ -235,6 +263,9 @@ pub struct EdgePair<'a> {
     pub viss: f64,
     pub friction: &'a FrictionLaw,
     pub dt: f64,
+    /// LS-DYNA's linear penalty (a keyword deck's edges), with SOFSCL when
+    /// SOFT = 1 (0 for SOFT = 0); `None`: the Radioss law.
+    pub soft: Option<f64>,
 }
 
 pub enum EdgeOutcome {
@@ -253,6 +284,9 @@ pub fn edge_reaction(k: f64, gl: f64, p: f64) -> (f64, f64) {
 
 /// The force of one edge pair (see the module's comment).
 pub fn edge_pair(e: &EdgePair, st: &mut PairState) -> EdgeOutcome {
+    if let Some(sofscl) = e.soft {
+        return linear_edge_pair(e, sofscl, st);
+    }
     let ep = closest_points_of_edges(e.xs[0], e.xs[1], e.xm[0], e.xm[1]);
     if ep.dist >= e.gap || e.k <= 0.0 {
         st.ft = [0.0; 3];
@@ -297,6 +331,61 @@ pub fn edge_pair(e: &EdgePair, st: &mut PairState) -> EdgeOutcome {
     } else {
         kt
     };
+    edge_force(e, &ep, (f_n, f_t), k_step, dt_kin, pen)
+}
+
+/// LS-DYNA's penalty on an edge pair (a keyword deck's, module comment):
+/// F = K·p over the whole gap, K at least the soft constraint when
+/// `sofscl` > 0, damper VDC % of critical; crossed edges release the pair.
+fn linear_edge_pair(e: &EdgePair, sofscl: f64, st: &mut PairState) -> EdgeOutcome {
+    let ep = closest_points_of_edges(e.xs[0], e.xs[1], e.xm[0], e.xm[1]);
+    if ep.dist >= e.gap || ep.dist < 1e-10 * e.gap || e.k <= 0.0 {
+        st.ft = [0.0; 3];
+        return EdgeOutcome::Free;
+    }
+    let pen = e.gap - ep.dist;
+    let n = geo::scale(ep.n, 1.0 / ep.dist);
+    let (ws, wm) = ep.weights();
+    let lerp = |w: [f64; 2], a: [V3; 2]| geo::add(geo::scale(a[0], w[0]), geo::scale(a[1], w[1]));
+    let vrel = geo::sub(lerp(ws, e.vs), lerp(wm, e.vm));
+    let dpdt = -geo::dot(vrel, n);
+    let mass = (ws[0] * e.ms[0] + ws[1] * e.ms[1]).min(wm[0] * e.mm[0] + wm[1] * e.mm[1]);
+    let k = if sofscl > 0.0 {
+        e.k.max(stiffness::soft_constraint(sofscl, mass, e.dt))
+    } else {
+        e.k
+    };
+    let c = e.viss * 2.0 * (k * mass).sqrt();
+    // Signed, as the node-to-surface penalty's (type7::pair, linear).
+    let f_n = k * pen + c * dpdt;
+    let mut f_t = [0.0; 3];
+    if e.friction.active() && f_n != 0.0 {
+        let vt = friction::tangential(vrel, n);
+        f_t = friction::tangential_force(
+            e.friction, e.friction.fric, f_n.abs(), vt, n, k, mass, e.dt, &mut st.ft,
+        );
+    }
+    let dt_kin = if dpdt > 0.0 {
+        0.5 * ep.dist / dpdt
+    } else {
+        f64::INFINITY
+    };
+    let k_step = e.friction.step_stiffness(k, c, k, mass, e.dt);
+    edge_force(e, &ep, (f_n, f_t), k_step, dt_kin, pen)
+}
+
+/// The pair force of normal `f_n` (along the unit common normal) and
+/// tangential `f_t` on the closest points `ep` of the edges of `e`.
+fn edge_force(
+    e: &EdgePair,
+    ep: &crate::contact::edge_geometry::EdgePoints,
+    (f_n, f_t): (f64, V3),
+    k_step: f64,
+    dt_kin: f64,
+    pen: f64,
+) -> EdgeOutcome {
+    let n = geo::scale(ep.n, 1.0 / ep.dist);
+    let (ws, wm) = ep.weights();
     EdgeOutcome::Force(PairForce {
         fs: geo::add(geo::scale(n, f_n), f_t),
         sec_shape: [ws[0], ws[1], 0.0, 0.0],
@@ -307,7 +396,7 @@ pub fn edge_pair(e: &EdgePair, st: &mut PairState) -> EdgeOutcome {
         f_t,
         pen,
         dir: n,
-        point: lerp(ws, e.xs),
+        point: geo::add(geo::scale(e.xs[0], ws[0]), geo::scale(e.xs[1], ws[1])),
     })
 }
 
@@ -330,7 +419,38 @@ mod tests {
             viss: 0.0,
             friction: NONE.get_or_init(FrictionLaw::none),
             dt: 1e-3,
+            soft: None,
         }
+    }
+
+    /// A keyword deck's edges: F = K·p through the whole gap (no 0.9
+    /// fraction, no deactivation), SOFT 1 at least 0.5·SOFSCL·m*/Δt², the
+    /// damper 2·VDC·√(K·M); crossed edges are free.
+    #[test]
+    fn the_linear_penalty_of_a_keyword_deck_s_edges() {
+        let mut st = PairState::default();
+        let mut e = crossing(0.01, 0.0);
+        e.soft = Some(0.0);
+        let EdgeOutcome::Force(f) = edge_pair(&e, &mut st) else {
+            panic!("linear: no deactivation at 0.9 g");
+        };
+        assert!((f.f_n - 1000.0 * 0.09).abs() < 1e-12, "{}", f.f_n);
+        // SOFT 1: m* = 1 (weights of unit masses), Δt 1e-3, SOFSCL 0.1.
+        e.soft = Some(0.1);
+        let EdgeOutcome::Force(f1) = edge_pair(&e, &mut st) else { panic!() };
+        let k1 = 0.5 * 0.1 * 1.0 / 1e-6;
+        assert!((f1.f_n - k1 * 0.09).abs() < 1e-9 * k1, "{}", f1.f_n);
+        // Closing at 2: damper 2·VDC·√(K·M)·2.
+        let mut d = crossing(0.04, -2.0);
+        d.soft = Some(0.0);
+        d.viss = 0.05;
+        let EdgeOutcome::Force(fd) = edge_pair(&d, &mut st) else { panic!() };
+        let expect = 1000.0 * 0.06 + 0.05 * 2.0 * (1000.0f64 * 1.0).sqrt() * 2.0;
+        assert!((fd.f_n - expect).abs() < 1e-9 * expect, "{} {expect}", fd.f_n);
+        // Crossed (distance 0): free.
+        let mut x = crossing(0.0, 0.0);
+        x.soft = Some(0.0);
+        assert!(matches!(edge_pair(&x, &mut st), EdgeOutcome::Free));
     }
 
     #[test]

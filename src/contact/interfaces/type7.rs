@@ -385,19 +385,7 @@ pub fn pair(p: &Pair, st: &mut PairState) -> Option<PairForce> {
     } else {
         f64::INFINITY
     };
-    // The stiffness of the nodal time step (note contact_time_step_research.md
-    // §2): Kt and the normal damper over the last step, or the friction
-    // damper where that is stiffer.
-    let k_step = if p.dt > 0.0 {
-        let k = kt + c / p.dt;
-        if p.friction.active() {
-            k.max(p.friction.visf * (2.0 * kd * p.ms).sqrt() / p.dt)
-        } else {
-            k
-        }
-    } else {
-        kt
-    };
+    let k_step = p.friction.step_stiffness(kt, c, kd, p.ms, p.dt);
     Some(PairForce {
         fs,
         sec_shape: NODE_SHAPE,

@@ -72,6 +72,11 @@ pub struct Type11 {
     pub fric_id: Id,
     /// The thermal cards (Ithe > 0).
     pub thermal: Option<Type11Thermal>,
+    /// Not a Radioss field: the edge part of a keyword deck's
+    /// `*CONTACT_AUTOMATIC_GENERAL` runs LS-DYNA's SOFT 0/1 penalty
+    /// (`contact::interfaces::type11`, linear law).
+    #[serde(default)]
+    pub dyna: Option<super::DynaPenalty>,
 }
 
 /// TYPE11 thermal cards (Ithe > 0). The layout differs from TYPE7's.

@@ -108,6 +108,7 @@ impl Type19 {
             bumult: t.bumult,
             fric_id: t.fric_id,
             thermal,
+            dyna: t.dyna,
         }
     }
 }
