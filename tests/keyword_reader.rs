@@ -485,9 +485,9 @@ fn more_bad_keyword_decks_exit_2_naming_file_line_keyword_and_field() {
         (inc, "*SECTION_SOLID\n         0         1\n*INCLUDE", "117: error: *SECTION_SOLID, field SECID: blank or 0"),
         (inc, "*PARAMETER\nR X              1.0\n*INCLUDE", ""),
         ("*INCLUDE\nkeyword_twin_block.k\n", "*INCLUDE_TRANSFORM\n", "116: error: *INCLUDE_TRANSFORM, field FILENAME: missing"),
-        ("*INCLUDE\nkeyword_twin_block.k", "*INCLUDE_TRANSFORM\nkeyword_twin_block.k\n      1000", "118: error: *INCLUDE_TRANSFORM, field IDNOFF: 1000"),
-        ("*INCLUDE\nkeyword_twin_block.k", "*INCLUDE_TRANSFORM\nkeyword_twin_block.k\n0,0,0,0,0,0,0\n0,,,\n1.,1.,25.4", "120: error: *INCLUDE_TRANSFORM, field FCTLEN: 25.4"),
-        ("*INCLUDE\nkeyword_twin_block.k", "*INCLUDE_TRANSFORM\nkeyword_twin_block.k\n\n\n\n         3", "121: error: *INCLUDE_TRANSFORM, field TRANID: 3"),
+        ("*INCLUDE\nkeyword_twin_block.k", "*INCLUDE_TRANSFORM\nkeyword_twin_block.k\n        -5", "118: error: *INCLUDE_TRANSFORM, field IDNOFF: '-5': expected an integer >= 0"),
+        ("*INCLUDE\nkeyword_twin_block.k", "*INCLUDE_TRANSFORM\nkeyword_twin_block.k\n0,0,0,0,0,0,0\n0,,,\n1.,1.,-25.4", "120: error: *INCLUDE_TRANSFORM, field FCTLEN: '-25.4': expected a unit factor > 0 (0: 1)"),
+        ("*INCLUDE\nkeyword_twin_block.k", "*INCLUDE_TRANSFORM\nkeyword_twin_block.k\n\n\n\n         x", "121: error: *INCLUDE_TRANSFORM, field TRANID: 'x': expected an integer >= 0"),
         (inc, "*MAT_RIGID\n         9   7.8e-06       210       0.3\n*INCLUDE", "117: error: *MAT_RIGID: the keyword ends early: expected card 2"),
         (inc, "*MAT_RIGID\n         9   7.8e-06       210       0.3\n       1.0         9\n\n*INCLUDE", "118: error: *MAT_RIGID, field CON1: 9"),
         (inc, "*CONSTRAINED_NODAL_RIGID_BODY\n         5         0        88\n*INCLUDE", "117: error: *CONSTRAINED_NODAL_RIGID_BODY, field NSID: node set 88 is not defined"),
@@ -542,8 +542,13 @@ fn truncated_and_mutated_keyword_decks_never_panic() {
             "block\n         2         2         2         0         5",
             1,
         )
-        .replacen("*INCLUDE", MANY_KEYWORDS, 1);
-    assert!(later != twin);
+        .replacen("*INCLUDE", MANY_KEYWORDS, 1)
+        .replacen(
+            "*INCLUDE\nkeyword_twin_block.k\n",
+            "*DEFINE_TRANSFORMATION\n         7\nTRANSL           1.0       2.0       0.0\n*INCLUDE_TRANSFORM\nkeyword_twin_block.k\n      1000       500\n\n         0         0         1\n         7\n",
+            1,
+        );
+    assert!(later.contains("*INCLUDE_TRANSFORM"));
     let path = dir.join("keyword_twin.k");
     let load = |t: &str| {
         std::fs::write(&path, t).unwrap();
@@ -583,7 +588,8 @@ fn truncated_and_mutated_keyword_decks_never_panic() {
 /// hourglass, shell sets, surface-to-surface SOFT 2, general contact, tied
 /// edges and nodes (moved onto their surface at load), contact controls,
 /// rigid bodies, moving walls), inserted before the twin's *INCLUDE for the
-/// mutation test.
+/// mutation test (which also makes that include an *INCLUDE_TRANSFORM with
+/// offsets and a TRANID).
 const MANY_KEYWORDS: &str = "*PART\nspring\n         4         4         4\n*SECTION_DISCRETE\n         4         0\n         0         0\n*MAT_SPRING_ELASTIC\n         4       1.0\n*ELEMENT_DISCRETE\n     701       4       1      36\n*HOURGLASS\n         5         2      0.05\n*CONTROL_HOURGLASS\n         1\n*SET_SHELL_LIST\n        42\n         1         2         3\n*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE\n        42         1         1         3\n\n\n         2       0.1         0         0         2         5\n*CONTACT_TIED_SHELL_EDGE_TO_SURFACE_CONSTRAINED_OFFSET\n         1         2         3         3\n\n\n*CONTACT_AUTOMATIC_GENERAL_INTERIOR\n         1         0         3\n\n\n*CONTACT_TIED_NODES_TO_SURFACE\n         2         1         3         3\n\n\n*CONTROL_CONTACT\n       0.1\n         0\n\n         1\n*SET_NODE_LIST\n        88\n      1001      1002\n*CONSTRAINED_NODAL_RIGID_BODY\n        50         0        88\n*RIGIDWALL_PLANAR_MOVING\n         0\n      -5.0         0         0      -4.0         0         0\n      0.01       1.0\n*MAT_RIGID\n         9  7.85e-06       210       0.3\n         1         7         7\n\n*INCLUDE";
 
 /// *MAT_PIECEWISE_LINEAR_PLASTICITY on the flapping plate (20 m/s):
@@ -1396,6 +1402,163 @@ fn automatic_general_stops_the_edge_crossing_that_single_surface_misses() {
             }
         }
     }
+}
+
+/// The twin with its block included by `*INCLUDE_TRANSFORM` (`cards`:
+/// the cards after FILENAME, and keywords put before it) of a copy of the
+/// block file whose node coordinates `at` gives (the file's own → what it
+/// writes); returns the deck.
+fn transformed_twin(
+    tag: &str,
+    before: &str,
+    cards: &str,
+    at: &dyn Fn([f64; 3]) -> [f64; 3],
+) -> PathBuf {
+    let deck = variant(
+        tag,
+        "*INCLUDE\nkeyword_twin_block.k",
+        &format!("{before}*INCLUDE_TRANSFORM\nmoved_block.k\n{cards}"),
+    );
+    let text = std::fs::read_to_string(twin_dir().join("keyword_twin_block.k")).unwrap();
+    let mut out = String::new();
+    let mut in_nodes = false;
+    for l in text.lines() {
+        if l.starts_with('*') {
+            in_nodes = l.starts_with("*NODE");
+        } else if in_nodes && !l.starts_with('$') {
+            let f = |i: usize| l[20 * i..20 * i + 20].trim().parse::<f64>().unwrap();
+            let x = at([f(1), f(2), f(3)]);
+            out += &format!(
+                "{:>20}{:>20e}{:>20e}{:>20e}\n",
+                &l[..20].trim(),
+                x[0],
+                x[1],
+                x[2]
+            );
+            continue;
+        }
+        out += l;
+        out.push('\n');
+    }
+    std::fs::write(deck.with_file_name("moved_block.k"), out).unwrap();
+    deck
+}
+
+/// *INCLUDE_TRANSFORM (issue 17) on the twin's included block:
+/// - IDNOFF 1000, IDEOFF 500: the same bits, the block's nodes 1000 up;
+/// - FCTLEN 10 (the file in cm, the deck in mm): the same bits from
+///   coordinates written a tenth;
+/// - TRANID: a file written turned by −90° about a vertical axis and moved,
+///   put back by *DEFINE_TRANSFORMATION (TRANSL, then ROTATE 90°): the same
+///   motion to 1e-9;
+/// - an undefined TRANID, FCTTEM, a curve with unit factors, an initial
+///   velocity in a turned file: exit 2 or refused, by name.
+#[test]
+fn include_transform_offsets_ids_converts_units_and_moves_nodes() {
+    let (fs0, en0) = run(0, &twin_dir().join("keyword_twin.k"), "kw-it-plain");
+    let plain = rows_from(&fs0, 1.0);
+    // Offsets.
+    let deck = transformed_twin("kw-it-off", "", "      1000       500\n", &|x| x);
+    let (fs, en) = run(0, &deck, "kw-it-off-run");
+    assert!(en == en0, "offset ids change the energies");
+    let moved = rows_from(&fs, 1.0);
+    assert_eq!(moved.len(), plain.len());
+    for (p, m) in plain.iter().zip(&moved) {
+        let shift = if p[0] > 1000.0 { 1000.0 } else { 0.0 };
+        assert_eq!(m[0], p[0] + shift, "node ids");
+        assert!(
+            m[1..] == p[1..],
+            "node {}: {:?} vs {:?}",
+            p[0],
+            &m[1..],
+            &p[1..]
+        );
+    }
+    // Unit factors: the file in cm.
+    let cm = transformed_twin(
+        "kw-it-cm",
+        "",
+        "\n\n         0         0        10\n",
+        &|x| x.map(|v| v / 10.0),
+    );
+    let (fs, en) = run(0, &cm, "kw-it-cm-run");
+    assert!(fs == fs0 && en == en0, "FCTLEN 10 on coordinates in cm");
+    // A transformation: the file turned by −90° about z through (70, 10)
+    // and moved by −(1, 2, 0); TRANSL (1, 2, 0), then ROTATE 90° back.
+    let tr = "*DEFINE_TRANSFORMATION\n         7\nTRANSL           1.0       2.0       0.0\nROTATE           0.0       0.0       1.0      70.0      10.0       0.0      90.0\n";
+    let back = |x: [f64; 3]| {
+        let (dx, dy) = (x[0] - 70.0, x[1] - 10.0);
+        [70.0 + dy - 1.0, 10.0 - dx - 2.0, x[2]]
+    };
+    let turned = transformed_twin("kw-it-rot", tr, "\n\n\n         7\n", &back);
+    let (fs, _) = run(0, &turned, "kw-it-rot-run");
+    for (p, m) in plain.iter().zip(&rows_from(&fs, 1.0)) {
+        for k in 1..4 {
+            assert!(
+                (m[k] - p[k]).abs() < 1e-9,
+                "node {}: {:?} vs {:?}",
+                p[0],
+                m,
+                p
+            );
+        }
+    }
+    // Errors by name.
+    let check = |deck: &Path| {
+        let out = common::crashsim(&["check", deck.to_str().unwrap()]);
+        (
+            out.status.code(),
+            String::from_utf8_lossy(&out.stderr).into_owned(),
+        )
+    };
+    let undefined = transformed_twin("kw-it-undef", "", "\n\n\n         9\n", &|x| x);
+    let (code, err) = check(&undefined);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("*INCLUDE_TRANSFORM, field TRANID: transformation 9 is not defined"),
+        "{err}"
+    );
+    let fcttem = transformed_twin(
+        "kw-it-tem",
+        "",
+        "\n\n         0         0         0      FtoC\n",
+        &|x| x,
+    );
+    let (code, err) = check(&fcttem);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("keyword_twin.k:") && err.contains("field FCTTEM"),
+        "{err}"
+    );
+    let curve = variant(
+        "kw-it-curve",
+        "*INCLUDE\nkeyword_twin_block.k",
+        "*INCLUDE_TRANSFORM\ncurve.k\n\n\n         0         0        10\n",
+    );
+    std::fs::write(
+        curve.with_file_name("curve.k"),
+        "*KEYWORD\n*DEFINE_CURVE\n         5\n0.0,1.0\n",
+    )
+    .unwrap();
+    let (code, err) = check(&curve);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("curve.k:4: error: *DEFINE_CURVE, field A"),
+        "{err}"
+    );
+    let vel = "*INITIAL_VELOCITY_NODE\n      1001       1.0       0.0       0.0\n";
+    let turned_v = transformed_twin("kw-it-vel", tr, "\n\n\n         7\n", &back);
+    let inc = turned_v.with_file_name("moved_block.k");
+    let t = std::fs::read_to_string(&inc)
+        .unwrap()
+        .replacen("*END", &format!("{vel}*END"), 1);
+    std::fs::write(&inc, t).unwrap();
+    let (code, err) = run_status(&turned_v);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("*INITIAL_VELOCITY_NODE, in a file of *INCLUDE_TRANSFORM"),
+        "{err}"
+    );
 }
 
 /// A fin of three shells (part 3, bottom nodes 601-604 in node set 88)

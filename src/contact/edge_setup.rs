@@ -19,11 +19,12 @@
 //!   shell thickness of the side's edges, or l_min/10 when no edge lies on
 //!   a shell.
 
-use super::element_data::{bulk, element_volume, node_elements};
+use super::element_data::{
+    bulk, element_volume, face_points, node_elements, shell_size, solid_size,
+};
 use super::geometry::{self as geo};
 use super::interfaces::layout::{IdelRule, Pass};
 use super::interfaces::{InterfaceType, PassSides};
-use super::setup::{face_points, shell_size, solid_size};
 use super::stiffness::ElementSize;
 use crate::model::{distinct_nodes, ElementKind, Model};
 use std::collections::HashMap;

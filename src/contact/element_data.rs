@@ -1,6 +1,8 @@
 //! What contact set-up reads from the elements under its nodes, segments
 //! and edges: bulk moduli, element volumes, the elements around a node.
 
+use super::geometry::{self as geo, V3};
+use super::stiffness::ElementSize;
 use crate::model::{geometry as mgeo, ElementKind, MaterialSpec, Model};
 use std::collections::HashMap;
 
@@ -61,4 +63,42 @@ pub(super) fn free_shell_edge_nodes(m: &Model) -> std::collections::HashSet<u32>
         .filter(|&(_, c)| c == 1)
         .flat_map(|(e, _)| e)
         .collect()
+}
+
+/// The positions of a face's 3 or 4 nodes (a triangle repeats its third).
+pub(super) fn face_points(m: &Model, n: &[u32]) -> [V3; 4] {
+    let x = |i: usize| m.nodes.x[n[i.min(n.len() - 1)] as usize];
+    [x(0), x(1), x(2), x(3)]
+}
+
+/// A shell face of material `mat` for a type's own stiffness rule: its
+/// area and longest diagonal (a triangle: its longest edge).
+pub(super) fn shell_size(mat: &MaterialSpec, x: &[V3; 4], tri: bool, thick: f64) -> ElementSize {
+    let d = |a: usize, b: usize| geo::norm(geo::sub(x[a], x[b]));
+    let dmax = if tri {
+        d(0, 1).max(d(1, 2)).max(d(2, 0))
+    } else {
+        d(0, 2).max(d(1, 3))
+    };
+    let area = geo::segment_area(x, tri);
+    ElementSize {
+        bulk: bulk(mat),
+        shell: true,
+        area,
+        dmax,
+        volume: 0.0,
+        mass: mat.rho * area * thick,
+    }
+}
+
+/// A solid of material `mat` and volume `volume` under a face of `area`.
+pub(super) fn solid_size(mat: &MaterialSpec, area: f64, volume: f64) -> ElementSize {
+    ElementSize {
+        bulk: bulk(mat),
+        shell: false,
+        area,
+        dmax: 0.0,
+        volume,
+        mass: mat.rho * volume,
+    }
 }

@@ -6,16 +6,18 @@
 //! Contact nodes are numbered densely in global node order ("cnode"); every
 //! array below speaks in cnodes.
 
-use super::geometry::{self as geo, V3};
+use super::geometry::{self as geo};
 use super::interfaces::{
     CandidateSearch, CardCommon, InterfaceType, PassSides, SurfaceSizes, TypeOptions,
 };
-use super::stiffness::{self, ElementSize};
-use crate::model::{geometry as mgeo, MaterialSpec, Model};
+use super::stiffness;
+use crate::model::{geometry as mgeo, Model};
 use crate::model::{ElementKind, InterfaceKind};
 use std::collections::HashMap;
 
-use super::element_data::{bulk, element_volume, node_elements};
+use super::element_data::{
+    bulk, element_volume, face_points, node_elements, shell_size, solid_size,
+};
 use super::inner_faces::{self, InnerFace};
 
 pub use super::interfaces::layout::{
@@ -155,44 +157,6 @@ fn node_data(m: &Model, nodes: &[u32], ty: &dyn InterfaceType) -> HashMap<u32, (
         }
     }
     out
-}
-
-/// The positions of a face's 3 or 4 nodes (a triangle repeats its third).
-pub(super) fn face_points(m: &Model, n: &[u32]) -> [V3; 4] {
-    let x = |i: usize| m.nodes.x[n[i.min(n.len() - 1)] as usize];
-    [x(0), x(1), x(2), x(3)]
-}
-
-/// A shell face of material `mat` for a type's own stiffness rule: its
-/// area and longest diagonal (a triangle: its longest edge).
-pub(super) fn shell_size(mat: &MaterialSpec, x: &[V3; 4], tri: bool, thick: f64) -> ElementSize {
-    let d = |a: usize, b: usize| geo::norm(geo::sub(x[a], x[b]));
-    let dmax = if tri {
-        d(0, 1).max(d(1, 2)).max(d(2, 0))
-    } else {
-        d(0, 2).max(d(1, 3))
-    };
-    let area = geo::segment_area(x, tri);
-    ElementSize {
-        bulk: bulk(mat),
-        shell: true,
-        area,
-        dmax,
-        volume: 0.0,
-        mass: mat.rho * area * thick,
-    }
-}
-
-/// A solid of material `mat` and volume `volume` under a face of `area`.
-pub(super) fn solid_size(mat: &MaterialSpec, area: f64, volume: f64) -> ElementSize {
-    ElementSize {
-        bulk: bulk(mat),
-        shell: false,
-        area,
-        dmax: 0.0,
-        volume,
-        mass: mat.rho * volume,
-    }
 }
 
 /// Per-segment data from the element under it.

@@ -212,7 +212,7 @@ fn build(deck: &Deck) -> Result<Model, InputError> {
     };
     // LS-DYNA's tied options without _OFFSET move their secondary nodes onto
     // the main surface before masses and element geometry are computed.
-    crate::contact::tied::project_secondary_nodes(&mut model);
+    crate::model::tie_projection::project_secondary_nodes(&mut model);
     let mut masses = Vec::new();
     for (set, locs) in model.elements.iter().zip(&element_locs) {
         masses.push(element_masses(&model, set, locs)?);

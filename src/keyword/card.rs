@@ -5,6 +5,7 @@
 //! `&NAME` (or `-&NAME`) takes the value of `*PARAMETER` NAME. Every error
 //! names file:line, the keyword, the field and what was expected.
 
+use super::include_transform::{IdKind, Transform};
 use super::source::{Block, Line};
 use crate::deck::fields::{parse_int, parse_real};
 use crate::model::{Id, InputError, InputResult, Loc};
@@ -20,6 +21,8 @@ pub struct Card<'a> {
     /// Field widths in columns (fixed format).
     widths: Vec<usize>,
     params: &'a Parameters,
+    /// The `*INCLUDE_TRANSFORM` of the file the card is in.
+    transform: Option<&'a Transform>,
 }
 
 /// Standard fields: 8 of 10 columns (20 in the long format).
@@ -39,7 +42,13 @@ impl<'a> Card<'a> {
             keyword: &block.name,
             widths,
             params,
+            transform: block.transform.as_deref(),
         }
+    }
+
+    /// The keyword's base name (no `_TITLE`/`_ID`), as the transform tables know it.
+    fn base(&self) -> &str {
+        super::base_name(self.keyword).0
     }
 
     pub fn loc(&self) -> Loc {
@@ -93,7 +102,8 @@ impl<'a> Card<'a> {
         })
     }
 
-    pub fn int(&self, i: usize, name: &str, default: i64) -> InputResult<i64> {
+    /// An integer field as written (no `*INCLUDE_TRANSFORM` offset).
+    fn int_written(&self, i: usize, name: &str, default: i64) -> InputResult<i64> {
         let v = self.value(i, name)?;
         if v.is_empty() {
             return Ok(default);
@@ -107,12 +117,45 @@ impl<'a> Card<'a> {
             .map_err(|e| self.err(name, format!("'{v}': {e}")))
     }
 
-    pub fn real(&self, i: usize, name: &str, default: f64) -> InputResult<f64> {
+    /// An integer field; an id offset by the file's `*INCLUDE_TRANSFORM`.
+    pub fn int(&self, i: usize, name: &str, default: i64) -> InputResult<i64> {
+        let v = self.int_written(i, name, default)?;
+        match self.transform {
+            Some(t) if !self.raw(i).is_empty() => {
+                t.int(self.base(), name, v).map_err(|m| self.err(name, m))
+            }
+            _ => Ok(v),
+        }
+    }
+
+    /// A real field as written (no unit factor).
+    fn real_written(&self, i: usize, name: &str, default: f64) -> InputResult<f64> {
         let v = self.value(i, name)?;
         if v.is_empty() {
             return Ok(default);
         }
         parse_real(&v).map_err(|e| self.err(name, format!("'{v}': {e}")))
+    }
+
+    /// A real field, in the deck's units (the file's `*INCLUDE_TRANSFORM`
+    /// unit factors).
+    pub fn real(&self, i: usize, name: &str, default: f64) -> InputResult<f64> {
+        let v = self.real_written(i, name, default)?;
+        match self.transform {
+            Some(t) if !self.raw(i).is_empty() => {
+                t.real(self.base(), name, v).map_err(|m| self.err(name, m))
+            }
+            _ => Ok(v),
+        }
+    }
+
+    /// Set id `id` (read as written: an `IntField::ByType` field) offset as
+    /// the kind `kind` says (None: not an id, as SSTYP 5).
+    pub fn offset_by_type(&self, id: Id, kind: Option<IdKind>) -> Id {
+        match (self.transform, kind) {
+            (Some(t), Some(k)) if id > 0 => (id as i64 + t.offset(k)).max(0) as Id,
+            _ => id,
+        }
     }
 
     /// A required id (> 0).
@@ -145,9 +188,9 @@ impl<'a> Card<'a> {
     /// (`integer`: "1.5" is an error) or a real one.
     pub fn given(&self, i: usize, name: &str, integer: bool) -> InputResult<bool> {
         Ok(if integer {
-            self.int(i, name, 0)? != 0
+            self.int_written(i, name, 0)? != 0
         } else {
-            self.real(i, name, 0.0)? != 0.0
+            self.real_written(i, name, 0.0)? != 0.0
         })
     }
 

@@ -3,6 +3,7 @@
 //! "*DEFINE_CURVE").
 
 use super::card::{Card, Cards};
+use super::include_transform::IdKind;
 use super::sections::title;
 use super::source::Block;
 use super::{base_name, Ctx};
@@ -57,7 +58,7 @@ pub fn node_set(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> 
 
 /// `*SET_PART_LIST`: SID DA1..DA4 SOLVER, then part ids, 8 a line.
 pub fn part_set(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
-    let (id, _, loc, items) = set_lines(b, cards, "NID")?;
+    let (id, _, loc, items) = set_lines(b, cards, "PID")?;
     if ctx.part_sets.iter().any(|(s, _)| *s == id) {
         return Err(crate::model::InputError::new(
             loc,
@@ -155,8 +156,12 @@ pub fn velocity_generation(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> Input
     while cards.remaining() > 0 {
         let std = cards.standard();
         let c = cards.next(std.clone(), "the card ID STYP OMEGA VX VY VZ IVATN ICID")?;
-        let id = c.id(0, "ID")?;
         let styp = c.int(1, "STYP", 0)?;
+        let kind = match styp {
+            2 => IdKind::Part,
+            _ => IdKind::Set,
+        };
+        let id = c.offset_by_type(c.id(0, "ID")?, Some(kind));
         if c.real(2, "OMEGA", 0.0)? != 0.0 {
             ctx.refuse(&c.loc(), &kw, "field OMEGA (a rotating initial velocity)");
         }

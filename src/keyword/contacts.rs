@@ -43,6 +43,7 @@
 //! refused by name.
 
 use super::card::Cards;
+use super::include_transform::contact_set_kind;
 use super::source::Block;
 use super::{base_name, Ctx};
 use crate::deck::{NodeGroupKind, SurfaceCard, SurfaceDef};
@@ -209,10 +210,10 @@ fn contact(b: &Block, cards: &mut Cards, ctx: &mut Ctx, form: Form) -> InputResu
         "card 1: SSID MSID SSTYP MSTYP SBOXID MBOXID SPR MPR",
     )?;
     let loc = c1.loc();
-    let ssid = c1.id_opt(0, "SSID")?;
-    let msid = c1.id_opt(1, "MSID")?;
     let sstyp = c1.int(2, "SSTYP", 0)?;
     let mstyp = c1.int(3, "MSTYP", 0)?;
+    let ssid = c1.offset_by_type(c1.id_opt(0, "SSID")?, contact_set_kind(sstyp));
+    let msid = c1.offset_by_type(c1.id_opt(1, "MSID")?, contact_set_kind(mstyp));
     ctx.refuse_given(&c1, &kw, &[(4, "SBOXID"), (5, "MBOXID")], "", true)?;
     let c2 = cards.next(std.clone(), "card 2: FS FD DC VC VDC PENCHK BT DT")?;
     let fs = c2.real(0, "FS", 0.0)?;

@@ -51,6 +51,7 @@ pub fn node(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
             x,
             loc: c.loc(),
         });
+        super::define_transformation::note(ctx, b, Some(ctx.deck.nodes.len() - 1));
     }
     Ok(())
 }

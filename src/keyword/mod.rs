@@ -30,8 +30,10 @@ mod card;
 mod conditions;
 mod contacts;
 mod controls;
+mod define_transformation;
 mod discrete;
 mod hourglass;
+pub mod include_transform;
 mod loads;
 mod materials;
 mod mesh;
@@ -97,6 +99,12 @@ pub(crate) struct Ctx<'a> {
     /// moving walls (indices) whose node is made then.
     pub rigid: Vec<rigid::PendingBody>,
     pub moving_walls: Vec<usize>,
+    /// `*DEFINE_TRANSFORMATION`s (TRANID, rows, where), the nodes read from
+    /// a file with a TRANID (index), and the keywords with directions read
+    /// there: completed once the deck is read (`define_transformation`).
+    pub transformations: Vec<(Id, Vec<define_transformation::Row>, Loc)>,
+    pub transformed_nodes: Vec<(usize, std::sync::Arc<include_transform::Transform>)>,
+    pub directed_in_transform: Vec<(Loc, String, std::sync::Arc<include_transform::Transform>)>,
     /// Next id of a node group made for a keyword that names nodes or
     /// parts directly (above every id a deck writes).
     next_group: Id,
@@ -368,6 +376,7 @@ const TRANSLATORS: &[(&str, Translate)] = &[
     ("INITIAL_VELOCITY", conditions::velocity_set),
     ("INITIAL_VELOCITY_NODE", conditions::velocity_node),
     ("DEFINE_CURVE", conditions::curve),
+    ("DEFINE_TRANSFORMATION", define_transformation::define),
     ("CONTACT_AUTOMATIC_SINGLE_SURFACE", contacts::single_surface),
     (
         "CONTACT_AUTOMATIC_NODES_TO_SURFACE",
@@ -492,11 +501,15 @@ pub fn read(path: &Path) -> InputResult<Deck> {
         parts_without_hgid: Vec::new(),
         rigid: Vec::new(),
         moving_walls: Vec::new(),
+        transformations: Vec::new(),
+        transformed_nodes: Vec::new(),
+        directed_in_transform: Vec::new(),
         next_group: OWN_GROUPS,
     };
     for b in &src.blocks {
         translate(b, &mut ctx)?;
     }
+    define_transformation::finish(&mut ctx)?;
     ctx.resolve_part_sets()?;
     ctx.resolve_shell_sets()?;
     discrete::finish(&mut ctx)?;
@@ -516,6 +529,9 @@ fn translate(b: &Block, ctx: &mut Ctx) -> InputResult<()> {
     }
     let params = ctx.params;
     if let Some((_, f)) = TRANSLATORS.iter().find(|(n, _)| *n == base) {
+        if define_transformation::has_directions(base) {
+            define_transformation::note(ctx, b, None);
+        }
         let mut cards = Cards::new(b, params);
         return f(b, &mut cards, ctx);
     }

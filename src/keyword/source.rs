@@ -12,15 +12,18 @@
 //! - `*INCLUDE` is replaced by the lines of the files it names, relative
 //!   to the including file's folder or to a folder of `*INCLUDE_PATH`
 //!   (`*INCLUDE_PATH_RELATIVE` too); `*END` ends the file it is in;
-//!   `*INCLUDE_TRANSFORM` too when its offsets, unit factors and
-//!   transformation change nothing (else an error naming the field);
+//!   `*INCLUDE_TRANSFORM` too, its blocks carrying what it does to their
+//!   cards (`include_transform::Transform`: id offsets, unit factors, a
+//!   TRANID);
 //! - `*PARAMETER` defines names that a field of any later card may give as
 //!   `&NAME` (or `-&NAME`);
 //! - every other line belongs to the keyword above it.
 
+use super::include_transform::Transform;
 use crate::model::{InputError, InputResult, Loc};
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 /// Longest line accepted.
 pub const MAX_LINE_BYTES: usize = 4096;
@@ -43,6 +46,9 @@ pub struct Block {
     /// 20-column fields (` +` on the keyword line, or `*KEYWORD LONG=S`).
     pub long: bool,
     pub lines: Vec<Line>,
+    /// The `*INCLUDE_TRANSFORM` of the file the block is in (composed
+    /// with those around it), if any.
+    pub transform: Option<Arc<Transform>>,
 }
 
 /// A deck read with its includes: its keyword blocks in reading order and
@@ -80,6 +86,7 @@ pub fn read(path: &Path) -> InputResult<Source> {
         stack: Vec::new(),
         include_dirs: Vec::new(),
         long_deck: false,
+        transform: None,
     };
     r.file(path, None)?;
     r.src.has_keyword_header = r.src.blocks.first().is_some_and(|b| b.name == "KEYWORD");
@@ -91,6 +98,8 @@ struct Reader {
     stack: Vec<PathBuf>,
     include_dirs: Vec<PathBuf>,
     long_deck: bool,
+    /// The transform of the file being read.
+    transform: Option<Arc<Transform>>,
 }
 
 impl Reader {
@@ -180,9 +189,17 @@ impl Reader {
                             "missing: expected the card FILENAME",
                         ));
                     };
-                    identity_transform(path, &data[1..])?;
+                    let t = transform_cards(path, &data[1..])?;
+                    let outer = self.transform.clone();
+                    let t = match &outer {
+                        Some(o) => t.within(o),
+                        None => t,
+                    };
+                    self.transform = Some(Arc::new(t));
                     let target = self.locate(&dir, name.trim());
-                    self.file(&target, Some(&loc(path, j + 1)))?;
+                    let read = self.file(&target, Some(&loc(path, j + 1)));
+                    self.transform = outer;
+                    read?;
                     continue;
                 }
                 "INCLUDE" => {
@@ -209,6 +226,7 @@ impl Reader {
                 loc: here,
                 long,
                 lines: Vec::new(),
+                transform: self.transform.clone(),
             });
         }
         self.stack.pop();
@@ -253,12 +271,10 @@ where
 }
 
 /// `*INCLUDE_TRANSFORM`'s cards 2-5 (IDNOFF IDEOFF IDPOFF IDMOFF IDSOFF
-/// IDFOFF IDDOFF; IDROFF, PREFIX, SUFFIX; FCTMAS FCTTIM FCTLEN FCTTEM
-/// INCOUT1; TRANID) read as a plain `*INCLUDE` when they change nothing: no
-/// id offset, unit factors 1 (0 or blank read as 1), no transformation.
-/// Anything else is an error naming the field: ids and values of the file
-/// are not offset, scaled or transformed yet.
-fn identity_transform(path: &Path, cards: &[(usize, String)]) -> InputResult<()> {
+/// IDFOFF IDDOFF; IDROFF, blank, PREFIX, SUFFIX; FCTMAS FCTTIM FCTLEN FCTTEM
+/// INCOUT1; TRANID), fixed 10-column or free format; blank cards and fields
+/// are 0 (factors: 0 or blank are 1). FCTTEM is refused by name.
+fn transform_cards(path: &Path, cards: &[(usize, String)]) -> InputResult<Transform> {
     const NAMES: [&[&str]; 4] = [
         &[
             "IDNOFF", "IDEOFF", "IDPOFF", "IDMOFF", "IDSOFF", "IDFOFF", "IDDOFF",
@@ -267,6 +283,7 @@ fn identity_transform(path: &Path, cards: &[(usize, String)]) -> InputResult<()>
         &["FCTMAS", "FCTTIM", "FCTLEN", "FCTTEM", "INCOUT1"],
         &["TRANID"],
     ];
+    let mut t = Transform::identity();
     for (card, (j, text)) in cards.iter().enumerate().take(NAMES.len()) {
         let fields: Vec<String> = if text.contains(',') {
             text.split(',').map(|f| f.trim().to_string()).collect()
@@ -280,28 +297,50 @@ fn identity_transform(path: &Path, cards: &[(usize, String)]) -> InputResult<()>
                 })
                 .collect()
         };
+        let at = loc(path, j + 1);
         for (f, name) in fields.iter().zip(NAMES[card]) {
-            let neutral = match (card, *name) {
-                (_, "") | (2, "INCOUT1") => true,
-                (2, "FCTTEM") => f.is_empty(),
-                (2, _) => f.is_empty() || matches!(f.parse::<f64>(), Ok(v) if v == 0.0 || v == 1.0),
-                (1, "PREFIX" | "SUFFIX") => f.is_empty(),
-                _ => f.is_empty() || matches!(f.parse::<f64>(), Ok(v) if v == 0.0),
-            };
-            if !neutral {
-                return Err(InputError::new(
-                    loc(path, j + 1),
+            let bad = |what: &str| {
+                InputError::new(
+                    at.clone(),
                     "*INCLUDE_TRANSFORM",
                     name,
-                    format!(
-                        "{f}: the included file's ids and values are not offset, scaled or transformed yet (expected {})",
-                        if card == 2 { "1" } else { "0 or blank" }
-                    ),
-                ));
+                    format!("'{f}': expected {what}"),
+                )
+            };
+            match (card, *name) {
+                (_, "") | (1, "PREFIX" | "SUFFIX") | (2, "INCOUT1") => {}
+                _ if f.is_empty() => {}
+                (2, "FCTTEM") => return Err(bad("blank: temperature conversion is not computed")),
+                (2, _) => {
+                    let v: f64 = f.parse().map_err(|_| bad("a unit factor > 0"))?;
+                    if !(v >= 0.0 && v.is_finite()) {
+                        return Err(bad("a unit factor > 0 (0: 1)"));
+                    }
+                    let k = NAMES[2].iter().position(|n| n == name).unwrap();
+                    t.factors[k] = if v == 0.0 { 1.0 } else { v };
+                }
+                _ => {
+                    let v = crate::deck::fields::parse_int(f)
+                        .ok()
+                        .filter(|&v| v >= 0)
+                        .ok_or_else(|| bad("an integer >= 0"))?;
+                    match (card, *name) {
+                        (3, _) => {
+                            if v > 0 {
+                                t.tranids.push((v as u64, at.clone()));
+                            }
+                        }
+                        (1, _) => t.offsets[7] = v,
+                        (_, _) => {
+                            let k = NAMES[0].iter().position(|n| n == name).unwrap();
+                            t.offsets[k] = v;
+                        }
+                    }
+                }
             }
         }
     }
-    Ok(())
+    Ok(t)
 }
 
 fn loc(path: &Path, line: usize) -> Loc {

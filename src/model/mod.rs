@@ -22,8 +22,10 @@ mod output_request;
 mod properties;
 mod property;
 mod rigid;
+pub mod segment_geometry;
 mod skew;
 mod source_location;
+pub mod tie_projection;
 
 pub use contact::{InterfaceKind, InterfaceSpec, Side};
 pub use controls::*;
