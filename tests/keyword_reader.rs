@@ -1591,7 +1591,8 @@ fn fin(z0: f64, h: f64) -> String {
 /// 0.3 above the flapping plate, 10 high.
 /// - `_NODES_TO_SURFACE`: the nodes are moved onto the plate at set-up and
 ///   follow its translations exactly, not its rotations (Spotflag 4);
-/// - `_CONSTRAINED_OFFSET`: the 0.3 offset is kept, exactly;
+/// - `_CONSTRAINED_OFFSET`: the 0.3 offset is kept, exactly; `_OFFSET`
+///   (LS-DYNA's penalty tie) runs the same, and the listing says so;
 /// - `_SURFACE_TO_SURFACE` on the fin's part: the same bits (the fin's top
 ///   nodes are beyond the search distance and stay free);
 /// - `_SHELL_EDGE_TO_SURFACE`: moved too, and the rotations are tied
@@ -1623,6 +1624,21 @@ fn tied_nodes_and_surfaces_tie_translations_and_move_onto_the_surface() {
     assert!(
         fs_s == fs_n,
         "surface to surface ties the fin's bottom nodes as the node set"
+    );
+    // LS-DYNA's penalty tie with its offset: the kinematic tie, said so.
+    let penalty = card("*CONTACT_TIED_NODES_TO_SURFACE_OFFSET", 88, 4);
+    let (fs_p, _) = run_tie("kw-tn-penalty", &penalty);
+    assert!(fs_p == fs_o, "_OFFSET runs as _CONSTRAINED_OFFSET");
+    let deck = variant(
+        "kw-tn-penalty-check",
+        "*INCLUDE",
+        &format!("{}{penalty}*INCLUDE", fin(0.3, 10.0)),
+    );
+    let out = common::crashsim(&["check", deck.to_str().unwrap()]);
+    let said = String::from_utf8_lossy(&out.stdout) + String::from_utf8_lossy(&out.stderr);
+    assert!(
+        said.contains("LS-DYNA's penalty tie is computed as the kinematic tie"),
+        "{said}"
     );
     assert!(
         (col(&fs_free, 601.0, 3) - 0.3).abs() < 1e-12,

@@ -1,5 +1,5 @@
-//! LS-DYNA's constraint-based tied contacts → /INTER/TYPE2 (keyword manual
-//! volume I "*CONTACT", the tied options; the reference guide's TYPE2):
+//! LS-DYNA's tied contacts → /INTER/TYPE2 (keyword manual volume I
+//! "*CONTACT", the tied options; the reference guide's TYPE2):
 //!
 //! | keyword | ties | Spotflag | nodes moved onto the surface |
 //! | --- | --- | --- | --- |
@@ -7,6 +7,8 @@
 //! | `*CONTACT_TIED_SURFACE_TO_SURFACE` | translations | 4 | yes |
 //! | `*CONTACT_TIED_SHELL_EDGE_TO_SURFACE` | translations and rotations | 5 | yes |
 //! | each with `_CONSTRAINED_OFFSET` | the same | the same | no: the offset is a rigid arm |
+//! | each with `_OFFSET` (LS-DYNA: penalty) | translations | 4 | no |
+//! | `*CONTACT_TIED_SHELL_EDGE_TO_SURFACE_BEAM_OFFSET` (penalty) | translations and rotations | 5 | no |
 //!
 //! The secondary nodes (SSID: a node set, part, part set, shell set or
 //! segment set) are tied kinematically at set-up: each follows the point
@@ -20,9 +22,18 @@
 //! segment within the search distance stay free, with a warning (Ignore
 //! 1000, dsearch from the element sizes).
 //!
-//! Not registered (they stop `run` by name): `_OFFSET` and `_BEAM_OFFSET`,
-//! LS-DYNA's penalty-based ties, and `_FAILURE`. Refused by name here:
-//! SBOXID, MBOXID, a birth or death time, SST/MST, and optional cards.
+//! `_OFFSET` and `_BEAM_OFFSET` are penalty springs in LS-DYNA ("tied
+//! contacts whose name holds OFFSET or BEAM_OFFSET are penalty-based",
+//! dynasupport "Tied, tied offset and tiebreak contacts"; a plain `_OFFSET`
+//! carries no moment of the offset, `_BEAM_OFFSET` does). They run here as
+//! the kinematic tie with the offset kept, the stiff limit of that spring,
+//! as OpenRadioss's keyword reader maps every tied option (to TYPE2
+//! Spotflag 28, kinematic where no other condition conflicts); the listing
+//! says so for each (the spring's own compliance is not computed).
+//!
+//! Not registered (they stop `run` by name): `_FAILURE`, tiebreaks.
+//! Refused by name here: SBOXID, MBOXID, a birth or death time, SST/MST,
+//! and optional cards.
 
 use super::card::Cards;
 use super::contacts::{parts_surface, secondary_nodes};
@@ -32,28 +43,41 @@ use super::Ctx;
 use crate::model::contact::Type2;
 use crate::model::{Id, InputResult, InterfaceKind, InterfaceSpec};
 
-/// Spotflag and whether the nodes move onto the surface, by keyword
-/// (module table).
-fn form(name: &str) -> (i64, bool) {
+/// Spotflag, whether the nodes move onto the surface, and whether LS-DYNA
+/// computes the tie as a penalty spring, by keyword (module table).
+fn form(name: &str) -> (i64, bool, bool) {
     let (base, _, _) = super::base_name(name);
-    let (base, project) = match base.strip_suffix("_CONSTRAINED_OFFSET") {
-        Some(b) => (b, false),
-        None => (base, true),
-    };
-    (
-        if base.ends_with("SHELL_EDGE_TO_SURFACE") {
+    let edge = |b: &str| {
+        if b.ends_with("SHELL_EDGE_TO_SURFACE") {
             5
         } else {
             4
-        },
-        project,
-    )
+        }
+    };
+    if let Some(b) = base.strip_suffix("_CONSTRAINED_OFFSET") {
+        (edge(b), false, false)
+    } else if base.ends_with("_BEAM_OFFSET") {
+        (5, false, true)
+    } else if base.ends_with("_OFFSET") {
+        (4, false, true)
+    } else {
+        (edge(base), true, false)
+    }
 }
 
 /// Cards 1-3 of *CONTACT (the title card with `_ID`/`_TITLE`).
 pub fn tied(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
     let kw = format!("*{}", b.name);
-    let (spotflag, project) = form(&b.name);
+    let (spotflag, project, penalty) = form(&b.name);
+    if penalty {
+        ctx.deck.warnings.push(crate::model::Warning {
+            loc: b.loc.clone(),
+            keyword: kw.clone(),
+            message: format!(
+                "LS-DYNA's penalty tie is computed as the kinematic tie with its offset kept (TYPE2 Spotflag {spotflag}), the stiff limit of the spring, as OpenRadioss's reader maps it"
+            ),
+        });
+    }
     let std = cards.standard();
     let (mut id, title) = super::contacts::heading(b, cards)?;
     let c1 = cards.next(
