@@ -34,7 +34,8 @@
 //! TYPE14's normal damper (type14_damped): a node bounces off a fixed sphere
 //! with the restitution of a spring-dashpot of damping ratio Visc; its
 //! friction (type14_slide): a node sliding on the ellipsoid is braked by
-//! μ·W.
+//! μ·W; its functions (fct_IDd1, fct_IDd2 set the damper's coefficient,
+//! fct_IDf scales μ) on the same decks, against the same analytic answers.
 
 mod common;
 #[path = "contact_common/mod.rs"]
@@ -301,18 +302,81 @@ fn a_type14_run_restarted_on_another_rank_count_ends_identically() {
     assert_restart_2_to_1_ends_as(&d, "type14_restart_stop", 300, &whole);
 }
 
-#[test]
-fn type14_options_it_does_not_compute_stop_the_run_by_name() {
-    // fct_IDf (columns 31-40 of card 1) names the load curve /FUNCT/2.
-    let (code, err) = run_variant("type14_sphere", "type14_fct_f", |i, lines| {
-        (i >= 1 && lines[i - 1].starts_with("#  grnd_IDs  surf_IDm"))
-            .then(|| common::set_cols(lines[i], 30, 40, 2))
+/// `name` with TYPE14's function fields of card 1 set (fct_IDf columns
+/// 31-40, fct_IDd1 41-50, fct_IDd2 51-60: (first column, id)) and, before
+/// /END, constant curves (id, value) over −1e3..1e3; run, its final state.
+fn type14_with_functions(
+    name: &str,
+    tag: &str,
+    fields: &[(usize, i64)],
+    curves: &[(i64, f64)],
+) -> (Run, std::collections::BTreeMap<u64, [f64; 6]>) {
+    let dir = scratch(tag);
+    let d = common::deck_variant(name, &dir, |i, lines| {
+        if i >= 1 && lines[i - 1].starts_with("#  grnd_IDs  surf_IDm") {
+            let mut l = lines[i].to_string();
+            for &(a, id) in fields {
+                l = common::set_cols(&l, a, a + 10, id);
+            }
+            return Some(l);
+        }
+        (lines[i] == "/END").then(|| {
+            let mut out = String::new();
+            for &(id, v) in curves {
+                out += &format!(
+                    "/FUNCT/{id}\nconstant {v}\n{:>20}{:>20}\n{:>20}{:>20}\n",
+                    -1e3, v, 1e3, v
+                );
+            }
+            out + "/END"
+        })
     });
-    assert_eq!(code, 2, "{err}");
+    let r = run(&d, &dir.join("out"), &RunArgs::default());
+    assert!(r.listing.normal_termination(), "{tag}");
+    let s = r.final_state();
+    (r, s)
+}
+
+/// TYPE14's damping functions (reference guide: fct_IDd1 the damping
+/// coefficient against the normal speed, fct_IDd2 against the nodal
+/// elastic force; c = Visc·g1·g2): on type14_damped (k = 1, m = 1,
+/// Visc 0.1) g1 = 4 gives c = 0.4, ζ = 0.2, and the node comes back at
+/// e·v0, e = exp(−ζπ/√(1 − ζ²)) = 0.5266, within 1%; g1 = 2 with g2 = 2
+/// gives the same; the energy closes with the damper's work within 0.1%.
+#[test]
+fn type14_damping_functions_set_the_damper_s_coefficient() {
+    let zeta: f64 = 0.2;
+    let e = (-zeta * std::f64::consts::PI / (1.0 - zeta * zeta).sqrt()).exp();
+    let (r, s) = type14_with_functions("type14_damped", "type14_fd1", &[(40, 7)], &[(7, 4.0)]);
+    let v = s[&1][5];
     assert!(
-        err.contains("/INTER/TYPE14/1") && err.contains("fct_IDf"),
-        "{err}"
+        (v - e).abs() < 0.01 * e,
+        "g1 = 4: rebound {v}, expected {e}"
     );
+    let closes = energy_closes(&r, "type14_damped");
+    assert!(closes.abs() < 0.1, "the energy closes to {closes}%");
+    let (_, s2) = type14_with_functions(
+        "type14_damped",
+        "type14_fd12",
+        &[(40, 7), (50, 8)],
+        &[(7, 2.0), (8, 2.0)],
+    );
+    let v2 = s2[&1][5];
+    assert!(
+        (v2 - e).abs() < 0.01 * e,
+        "g1 = g2 = 2: rebound {v2}, expected {e}"
+    );
+}
+
+/// TYPE14's friction function (fct_IDf, the friction coefficient's factor
+/// against the nodal elastic force): on type14_slide (W = 0.3 kN, Fric
+/// 0.3) a factor 0.5 halves the Coulomb force to 0.045 kN at every printed
+/// cycle while it slides (within 0.1%), and the node brakes as
+/// v0 − 0.15·W·t/m within 0.01 mm/ms.
+#[test]
+fn type14_friction_function_scales_the_friction_coefficient() {
+    let (r, s) = type14_with_functions("type14_slide", "type14_ff", &[(30, 7)], &[(7, 0.5)]);
+    assert_braked(&r, &s, 0.15, 0.3);
 }
 
 /// TYPE14 Visc (type14_damped): a 1 kg node hits a fixed sphere at v0 =
@@ -351,7 +415,14 @@ fn a_type14_node_sliding_on_the_ellipsoid_is_braked_by_coulomb_friction() {
         &RunArgs::default(),
     );
     assert!(r.listing.normal_termination());
-    let (mu, w) = (0.3, 0.3);
+    let s = r.final_state();
+    assert_braked(&r, &s, 0.3, 0.3);
+}
+
+/// type14_slide's node, pressed by `w`, slides against friction μ·w at
+/// every printed cycle after 0.2 ms (within 0.1%) under the normal force w,
+/// and ends at v0 − μ·w·t/m (m = 1) within 0.01 mm/ms.
+fn assert_braked(r: &Run, s: &std::collections::BTreeMap<u64, [f64; 6]>, mu: f64, w: f64) {
     let lines = r.listing.of(1);
     assert!(lines.len() >= 5);
     for l in lines.iter().filter(|l| l.t > 0.2) {
@@ -369,7 +440,7 @@ fn a_type14_node_sliding_on_the_ellipsoid_is_braked_by_coulomb_friction() {
         );
     }
     let t_end = r.listing.cycles.last().unwrap().t;
-    let v = r.final_state()[&1][3];
+    let v = s[&1][3];
     let expect = 1.0 - mu * w * t_end;
     assert!(
         (v - expect).abs() < 0.01,

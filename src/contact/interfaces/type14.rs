@@ -22,10 +22,18 @@
 //!   speed relative to the surface at its contact point; the normal force
 //!   is not clamped at 0, so the damper may pull while the node leaves.
 //!   Its stiffness for the nodal step is k + 2c/Δt, as the reference's.
+//!   With functions (reference guide /INTER/TYPE14: fct_IDd1 "damping
+//!   coefficient vs normal velocity", fct_IDd2 "vs nodal elastic force")
+//!   the coefficient is c = Visc·g1(v_n)·g2(F_e), a missing one counting
+//!   1 (the reference engine's product, research note §2.2), v_n the
+//!   node's normal speed relative to the surface (positive leaving), F_e
+//!   its elastic force.
 //! - Friction (Fric): each node already in contact at the last cycle takes
 //!   an elastic tangential spring of its normal stiffness on its slip
-//!   relative to the surface, capped at Fric·max(F_n, 0) (incremental,
-//!   `Type14::friction`).
+//!   relative to the surface, capped at μ·max(F_n, 0) (incremental,
+//!   `Type14::friction`); μ = Fric·gf(F_e) with fct_IDf (§8.9: "a local
+//!   friction coefficient is computed at each impacted node, depending upon
+//!   elastic force computed at its location"), else Fric.
 //! - The reaction, −F at the contact point, goes to the rigid body (force
 //!   and moment about its centre). A fixed ellipsoid (no /RBODY) takes none.
 //! - Time step: each node's stiffness enters its nodal step (EQ. 8.8.5.2);
@@ -65,6 +73,15 @@ pub struct Type14 {
     /// damper, c = Visc·2·√(k·m) (k the node's stiffness, m its mass).
     #[serde(default)]
     pub visc: f64,
+    /// fct_IDf, fct_IDd1, fct_IDd2 and their curves (bound from the model).
+    #[serde(default)]
+    pub fct_ids: [model::Id; 3],
+    #[serde(default)]
+    pub friction_factor: Option<Function>,
+    #[serde(default)]
+    pub damping_of_speed: Option<Function>,
+    #[serde(default)]
+    pub damping_of_force: Option<Function>,
 }
 
 /// Where the ellipsoid is: its centre and the rotation from its axes to
@@ -131,14 +148,34 @@ impl Type14 {
     /// contact at the last cycle (the impact's cycle takes none). `law` is
     /// the interface's (Fric, incremental); `st.ft` keeps the force,
     /// `st.side` marks the contact.
-    fn friction(law: &FrictionLaw, k: f64, f_n: f64, v_rel: V3, n: V3, dt: f64, st: &mut PairState) -> V3 {
+    #[allow(clippy::too_many_arguments)]
+    fn friction(
+        law: &FrictionLaw,
+        mu: f64,
+        k: f64,
+        f_n: f64,
+        v_rel: V3,
+        n: V3,
+        dt: f64,
+        st: &mut PairState,
+    ) -> V3 {
         let impacted_before = st.side != 0;
         st.side = 1;
         if !law.active() || !impacted_before {
             return [0.0; 3];
         }
         let vt = friction::tangential(v_rel, n);
-        friction::tangential_force(law, law.fric, f_n.max(0.0), vt, n, k, 0.0, dt, &mut st.ft)
+        friction::tangential_force(law, mu, f_n.max(0.0), vt, n, k, 0.0, dt, &mut st.ft)
+    }
+
+    /// The normal damper's coefficient for stiffness `k`, mass `m`, normal
+    /// speed `v_n` and elastic force `f_e` (module comment).
+    fn damping(&self, k: f64, m: f64, v_n: f64, f_e: f64) -> f64 {
+        if self.damping_of_speed.is_none() && self.damping_of_force.is_none() {
+            return self.visc * 2.0 * (k * m).sqrt();
+        }
+        let g = |f: &Option<Function>, x: f64| f.as_ref().map_or(1.0, |f| function::eval(f, x));
+        self.visc * g(&self.damping_of_speed, v_n) * g(&self.damping_of_force, f_e)
     }
 
     /// Stif·f(p) and its slope.
@@ -187,23 +224,12 @@ impl InterfaceType for Type14 {
             stif: t.stif,
             gap: t.gap,
             visc: t.visc,
+            fct_ids: [t.fct_id_f, t.fct_id_d1, t.fct_id_d2],
             ..Default::default()
         };
         Some((own, common))
     }
 
-    fn unsupported(kind: &InterfaceKind) -> Option<&'static str> {
-        let InterfaceKind::Type14(t) = kind else {
-            return None;
-        };
-        if t.fct_id_f != 0 {
-            Some("a friction function (fct_IDf)")
-        } else if t.fct_id_d1 != 0 || t.fct_id_d2 != 0 {
-            Some("viscosity functions (fct_IDd1, fct_IDd2)")
-        } else {
-            None
-        }
-    }
 
     /// The ellipsoid (surf_IDm), the rigid body whose /RBODY names it
     /// (none: the ellipsoid stays where it is), and the load curve.
@@ -254,6 +280,16 @@ impl InterfaceType for Type14 {
         if self.fct_id_ld != 0 {
             self.load = Some(super::bound_curve(m, self.fct_id_ld, kw, "fct_IDld")?);
         }
+        let curve = |id: model::Id, field: &str| -> Result<Option<Function>, String> {
+            Ok(if id == 0 {
+                None
+            } else {
+                Some(super::bound_curve(m, id, kw, field)?)
+            })
+        };
+        self.friction_factor = curve(self.fct_ids[0], "fct_IDf")?;
+        self.damping_of_speed = curve(self.fct_ids[1], "fct_IDd1")?;
+        self.damping_of_force = curve(self.fct_ids[2], "fct_IDd2")?;
         Ok(())
     }
 
@@ -341,16 +377,22 @@ impl InterfaceType for Type14 {
         };
         // The normal damper against the surface's velocity at the node's
         // contact point (the body's motion there; a fixed ellipsoid's is 0).
-        let c_d = self.visc * 2.0 * (k * c.ms).sqrt();
         let v_surface = match self.body.and_then(|b| c.bodies.get(b)) {
             Some(b) => geo::add(b.v, geo::cross(b.omega, geo::sub(point, b.center))),
             None => [0.0; 3],
         };
         let v_rel = geo::sub(c.vs, v_surface);
         let v_n = geo::dot(v_rel, n);
-        let f_n = k * pen - c_d * v_n;
+        let f_e = k * pen;
+        let c_d = self.damping(k, c.ms, v_n, f_e);
+        let f_n = f_e - c_d * v_n;
         let kt = if c.dt > 0.0 { k + 2.0 * c_d / c.dt } else { k };
-        let f_t = Self::friction(&c.it.friction, k, f_n, v_rel, n, c.dt, st);
+        let law = &c.it.friction;
+        let mu = match &self.friction_factor {
+            Some(g) => law.fric * function::eval(g, f_e),
+            None => law.fric,
+        };
+        let f_t = Self::friction(law, mu, k, f_n, v_rel, n, c.dt, st);
         PairOutcome::Force(PairForce {
             fs: geo::add(geo::scale(n, f_n), f_t),
             sec_shape: NODE_SHAPE,
