@@ -95,11 +95,19 @@ L += ["/RWALL/PLANE/1", "Rigid wall at x = -1", "#  node_ID     Slide grnod_ID1 
       "#               X_M1                Y_M1                Z_M1", r20(0.0) + r20(0) + r20(0)]
 L += ["/GRNOD/PART/4", "wall candidates: every tube node", i10(1)]
 L += ["/SURF/PART/5", "tube wall", i10(1)]
+# The contact gap (Igap 1: the two half thicknesses, 1.2 mm) must stay below
+# the element size, else a node sits inside the gap of its coplanar
+# neighbour segments and the contact pushes the mesh apart (the 100k tube,
+# 1 x 0.4 mm, blew up at cycle 100). Finer meshes take Irem_gap 2, the
+# card's option for it ("deactivating secondary nodes if element size <
+# gap value, in case of self-impact contact"); the 2 mm default mesh keeps 0.
+h_min = min(width / nw, length / nl)
+irem_gap = 2 if h_min < 1.2 else 0
 L_contact = ["/INTER/TYPE7/1", "Tube self-contact",
       "#  Slav_id   Mast_id      Istf      Ithe      Igap                Ibag      Idel     Icurv      Iadm",
       i10(0) + i10(5) + i10(4) + i10(0) + i10(1) + " " * 10 + i10(0) + i10(0) + i10(0) + i10(0),
       "#          Fscalegap             Gap_max             Fpenmax", r20(0) * 3,
-      "#              Stmin               Stmax          %mesh_size               dtmin  Irem_gap   Irem_i2", r20(0) * 4 + i10(0) + i10(0),
+      "#              Stmin               Stmax          %mesh_size               dtmin  Irem_gap   Irem_i2", r20(0) * 4 + i10(irem_gap) + i10(0),
       "#              Stfac                Fric              Gapmin              Tstart               Tstop", r20(1.0) + r20(0.2) + r20(0.6) + r20(0) + r20(0),
       "#      IBC                        Inacti                VisS                VisF              Bumult", "       000" + " " * 20 + i10(0) + r20(0) + r20(0) + r20(0),
       "#    Ifric    Ifiltr               Xfreq     Iform   sens_ID   fct_IDf             AscaleF   fric_ID", i10(0) + i10(0) + r20(0) + i10(0) + i10(0) + i10(0) + r20(0) + i10(0)]
