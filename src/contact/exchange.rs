@@ -13,7 +13,12 @@
 //!   holders), keyed by (interface, pass, secondary entity, main entity,
 //!   corner) ([`SumKey`]);
 //!   each rank sums a node's contributions in key order, so the sum is the
-//!   same bits on every rank and for any number of ranks.
+//!   same bits on every rank and for any number of ranks. They travel
+//!   neighbour to neighbour, not through a collective over every rank: at
+//!   each sort a rank lists the holders of every node it can see (held or
+//!   ghost: a pair's nodes are among them until the next sort), and one
+//!   exchange of those lists makes the set symmetric (`GhostPlan::route`),
+//!   so a cycle costs messages to a few neighbours, whatever the rank count.
 
 use super::geometry::V3;
 use super::key::SumKey;
@@ -27,6 +32,9 @@ pub struct GhostPlan {
     pub ranks: Vec<u32>,
     pub send: Vec<Vec<u32>>,
     pub recv: Vec<Vec<u32>>,
+    /// The ranks contributions travel between, ascending (symmetric: each
+    /// lists the other), set at the sort by [`GhostPlan::set_route`].
+    pub route: Vec<u32>,
 }
 
 fn box_to(b: &Aabb) -> [f64; 6] {
@@ -124,6 +132,32 @@ impl GhostPlan {
         }
     }
 
+    /// The contribution neighbours (collective, at a sort): the holders of
+    /// every cnode this rank can see (`avail`), and the ranks that list this
+    /// one among theirs.
+    pub fn set_route(&mut self, world: &World, setup: &ContactSetup, avail: &[bool]) {
+        let (me, n) = (world.rank() as usize, world.size() as usize);
+        if n == 1 {
+            return;
+        }
+        let mut dest = vec![false; n];
+        for (c, _) in avail.iter().enumerate().filter(|(_, &a)| a) {
+            for &r in setup.holders_of(c as u32) {
+                dest[r as usize] = true;
+            }
+        }
+        dest[me] = false;
+        let send: Vec<Vec<u64>> = dest
+            .iter()
+            .map(|&d| if d { vec![1] } else { vec![] })
+            .collect();
+        let got = world.alltoallv_u64(&send);
+        self.route = (0..n)
+            .filter(|&q| q != me && (dest[q] || !got[q].is_empty()))
+            .map(|q| q as u32)
+            .collect();
+    }
+
     pub fn ghost_count(&self) -> usize {
         self.recv.iter().map(|r| r.len()).sum()
     }
@@ -172,23 +206,41 @@ impl Contribution {
     }
 }
 
-/// Sends each contribution to every holder of its node; returns the ones for
-/// this rank's nodes, sorted by (node, key): the fixed summation order.
-pub fn route(world: &World, setup: &ContactSetup, out: Vec<Contribution>) -> Vec<Contribution> {
+/// Sends each contribution to every holder of its node, through the
+/// neighbours `route` (`GhostPlan::route`: every holder of a node this rank
+/// computed a pair on is among them); returns the ones for this rank's
+/// nodes, sorted by (node, key): the fixed summation order.
+pub fn route(
+    world: &World,
+    setup: &ContactSetup,
+    route: &[u32],
+    out: Vec<Contribution>,
+) -> Vec<Contribution> {
     let n = world.size() as usize;
     let mut got: Vec<Contribution> = if n == 1 {
         out
     } else {
-        let mut send: Vec<Vec<u64>> = vec![Vec::new(); n];
+        let me = world.rank();
+        let mut mine = Vec::new();
+        let mut send: Vec<Vec<u64>> = vec![Vec::new(); route.len()];
         for c in &out {
             for &r in setup.holders_of(c.c) {
-                c.encode(&mut send[r as usize]);
+                if r == me {
+                    mine.push(*c);
+                    continue;
+                }
+                let i = route
+                    .binary_search(&r)
+                    .expect("a holder of a node with a pair here is a route neighbour (set_route)");
+                c.encode(&mut send[i]);
             }
         }
-        let recv = world.alltoallv_u64(&send);
-        recv.iter()
-            .flat_map(|b| b.chunks_exact(8).map(Contribution::decode))
-            .collect()
+        let recv = world.exchange_with_neighbours(route, &send);
+        mine.extend(
+            recv.iter()
+                .flat_map(|b| b.chunks_exact(8).map(Contribution::decode)),
+        );
+        mine
     };
     got.sort_unstable_by_key(|a| (a.c, a.key));
     got
@@ -255,7 +307,7 @@ mod tests {
 
     #[test]
     fn routed_contact_forces_sum_to_the_same_bits_on_one_and_two_ranks() {
-        let one = sums(&route(&Serial, &setup(1), contributions()));
+        let one = sums(&route(&Serial, &setup(1), &[], contributions()));
         assert_eq!(one.len(), 6);
         let two = run_ranks(2, |w| {
             // Each rank computed every other pair, in reverse order.
@@ -266,7 +318,7 @@ mod tests {
                 .map(|(_, c)| c)
                 .rev()
                 .collect();
-            sums(&route(w, &setup(2), mine))
+            sums(&route(w, &setup(2), &[1 - w.rank()], mine))
         });
         let held = |r: u32| -> Vec<(u32, [u64; 3])> {
             let s = setup(2);

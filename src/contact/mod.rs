@@ -501,7 +501,7 @@ impl ContactSystem {
         let (contribs, step) = self.pairs(world, mass, t, dt, bodies);
         self.timers.force_s += tf.elapsed().as_secs_f64();
         let te = std::time::Instant::now();
-        let got = exchange::route(world, &self.setup, contribs);
+        let got = exchange::route(world, &self.setup, &self.plan.route, contribs);
         self.timers.exchange_s += te.elapsed().as_secs_f64();
         // Sum in key order (route sorted them).
         let mut nodal_k: Vec<(u32, f64)> = Vec::new();
@@ -700,6 +700,7 @@ impl ContactSystem {
                 self.avail[c as usize] = true;
             }
         }
+        self.plan.set_route(world, &self.setup, &self.avail);
         self.x_sort.clone_from(&self.cx);
     }
 
