@@ -42,7 +42,7 @@
 //! FRCFRQ > 1, SST/MST, SFST/SFMT, DC, VC, box and set types not read are
 //! refused by name.
 
-use super::card::Cards;
+use super::card::{Card, Cards};
 use super::include_transform::contact_set_kind;
 use super::source::Block;
 use super::{base_name, Ctx};
@@ -210,10 +210,7 @@ fn contact(b: &Block, cards: &mut Cards, ctx: &mut Ctx, form: Form) -> InputResu
         "card 1: SSID MSID SSTYP MSTYP SBOXID MBOXID SPR MPR",
     )?;
     let loc = c1.loc();
-    let sstyp = c1.int(2, "SSTYP", 0)?;
-    let mstyp = c1.int(3, "MSTYP", 0)?;
-    let ssid = c1.offset_by_type(c1.id_opt(0, "SSID")?, contact_set_kind(sstyp));
-    let msid = c1.offset_by_type(c1.id_opt(1, "MSID")?, contact_set_kind(mstyp));
+    let ((ssid, sstyp), (msid, mstyp)) = set_ids(&c1)?;
     ctx.refuse_given(&c1, &kw, &[(4, "SBOXID"), (5, "MBOXID")], "", true)?;
     let c2 = cards.next(std.clone(), "card 2: FS FD DC VC VDC PENCHK BT DT")?;
     let fs = c2.real(0, "FS", 0.0)?;
@@ -471,6 +468,16 @@ fn type7(grnod: Id, surf: Id, fs: f64, vdc: f64, bt: f64, dt: f64, dyna: DynaPen
         thermal: None,
         dyna: Some(dyna),
     }
+}
+
+/// Card 1's (SSID, SSTYP) and (MSID, MSTYP) of every *CONTACT, the ids
+/// offset by an *INCLUDE_TRANSFORM as their set type says.
+pub(super) type SetId = (Id, i64);
+pub(super) fn set_ids(c1: &Card) -> InputResult<(SetId, SetId)> {
+    let (sstyp, mstyp) = (c1.int(2, "SSTYP", 0)?, c1.int(3, "MSTYP", 0)?);
+    let ssid = c1.offset_by_type(c1.id_opt(0, "SSID")?, contact_set_kind(sstyp));
+    let msid = c1.offset_by_type(c1.id_opt(1, "MSID")?, contact_set_kind(mstyp));
+    Ok(((ssid, sstyp), (msid, mstyp)))
 }
 
 /// The main surface a set names: type 0 (segment set), 1 (shell set), 2

@@ -95,38 +95,27 @@ pub fn define(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
     Ok(())
 }
 
-/// Whether every transformation of `t` only translates.
-fn translates_only(ctx: &Ctx, t: &Transform) -> bool {
-    t.tranids.iter().all(|(id, _)| {
-        ctx.transformations
-            .iter()
-            .filter(|d| d.0 == *id)
-            .all(|d| d.1.iter().all(|r| matches!(r, Row::Translate(_))))
-    })
-}
-
 /// Once the deck is read: the included nodes moved by their files'
 /// transformations, and the keywords whose directions or points would need
 /// them refused (module comment).
 pub fn finish(ctx: &mut Ctx) -> InputResult<()> {
     let moved = std::mem::take(&mut ctx.transformed_nodes);
+    // The nodes of one file share its transform: its rows are looked up
+    // once per file, not per node.
+    let mut last: Option<(&Arc<Transform>, Vec<Row>)> = None;
     for (i, t) in &moved {
-        let mut x = ctx.deck.nodes[*i].x;
-        for (id, at) in &t.tranids {
-            let rows = rows_of(ctx, *id, at)?;
-            for r in rows {
-                x = r.apply(x);
-            }
+        if !last.as_ref().is_some_and(|(l, _)| Arc::ptr_eq(l, t)) {
+            last = Some((t, chain(ctx, t)?));
         }
-        ctx.deck.nodes[*i].x = x;
+        let rows = &last.as_ref().expect("set above").1;
+        let x = &mut ctx.deck.nodes[*i].x;
+        *x = rows.iter().fold(*x, |x, r| r.apply(x));
     }
     let directed = std::mem::take(&mut ctx.directed_in_transform);
     for (loc, kw, t) in &directed {
-        for (id, at) in &t.tranids {
-            rows_of(ctx, *id, at)?;
-        }
+        let rows = chain(ctx, t)?;
         let points = kw.starts_with("*RIGIDWALL");
-        if points || !translates_only(ctx, t) {
+        if points || !rows.iter().all(|r| matches!(r, Row::Translate(_))) {
             ctx.refuse(
                 loc,
                 kw,
@@ -137,11 +126,21 @@ pub fn finish(ctx: &mut Ctx) -> InputResult<()> {
     Ok(())
 }
 
-fn rows_of(ctx: &Ctx, id: Id, at: &Loc) -> InputResult<Vec<Row>> {
+/// The rows of every TRANID of `t`, in the order they apply (the innermost
+/// file's first); an undefined TRANID is an error at its card.
+fn chain(ctx: &Ctx, t: &Transform) -> InputResult<Vec<Row>> {
+    let mut rows = Vec::new();
+    for (id, at) in &t.tranids {
+        rows.extend(rows_of(ctx, *id, at)?.iter().cloned());
+    }
+    Ok(rows)
+}
+
+fn rows_of<'c>(ctx: &'c Ctx, id: Id, at: &Loc) -> InputResult<&'c [Row]> {
     ctx.transformations
         .iter()
         .find(|d| d.0 == id)
-        .map(|d| d.1.clone())
+        .map(|d| d.1.as_slice())
         .ok_or_else(|| {
             InputError::new(
                 at.clone(),

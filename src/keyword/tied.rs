@@ -37,7 +37,6 @@
 
 use super::card::Cards;
 use super::contacts::{parts_surface, secondary_nodes};
-use super::include_transform::contact_set_kind;
 use super::source::Block;
 use super::Ctx;
 use crate::model::contact::Type2;
@@ -98,9 +97,7 @@ pub fn tied(b: &Block, cards: &mut Cards, ctx: &mut Ctx) -> InputResult<()> {
         let c = cards.next_opt(cards.standard()).expect("a card");
         ctx.refuse(&c.loc(), &kw, "optional cards A and beyond");
     }
-    let (sstyp, mstyp) = (c1.int(2, "SSTYP", 0)?, c1.int(3, "MSTYP", 0)?);
-    let ssid = c1.offset_by_type(c1.id_opt(0, "SSID")?, contact_set_kind(sstyp));
-    let msid = c1.offset_by_type(c1.id_opt(1, "MSID")?, contact_set_kind(mstyp));
+    let ((ssid, sstyp), (msid, mstyp)) = super::contacts::set_ids(&c1)?;
     let grnod_ids = secondary_nodes(ctx, ssid, sstyp, &loc, &kw, "SSID")?;
     let surf_idm = parts_surface(ctx, msid, mstyp, &loc, &kw, "MSID")?;
     if id == 0 {
