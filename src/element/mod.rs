@@ -14,6 +14,7 @@ pub mod hex8;
 pub mod hex8_small;
 pub mod hex8_total;
 pub mod joint;
+pub mod lanes;
 pub mod ortho;
 pub mod shell3;
 pub mod shell4;

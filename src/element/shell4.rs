@@ -420,10 +420,10 @@ pub struct Shell4Out {
     pub bad_area: bool,
 }
 
-use crate::vec3::{cross, dot, scale, sub};
+use super::lanes::{cross, dot, scale, sub, Real, F4};
 /// a·p + b·q + c·r for vectors p, q, r.
 #[inline(always)]
-fn comb3(a: f64, p: [f64; 3], b: f64, q: [f64; 3], c: f64, r: [f64; 3]) -> [f64; 3] {
+fn comb3<R: Real>(a: R, p: [R; 3], b: R, q: [R; 3], c: R, r: [R; 3]) -> [R; 3] {
     [
         a * p[0] + b * q[0] + c * r[0],
         a * p[1] + b * q[1] + c * r[1],
@@ -432,7 +432,7 @@ fn comb3(a: f64, p: [f64; 3], b: f64, q: [f64; 3], c: f64, r: [f64; 3]) -> [f64;
 }
 /// Σ_I w_I u_I for four vectors.
 #[inline(always)]
-fn wsum(w: &[f64; 4], u: &[[f64; 3]; 4]) -> [f64; 3] {
+fn wsum<R: Real>(w: &[R; 4], u: &[[R; 3]; 4]) -> [R; 3] {
     [
         w[0] * u[0][0] + w[1] * u[1][0] + w[2] * u[2][0] + w[3] * u[3][0],
         w[0] * u[0][1] + w[1] * u[1][1] + w[2] * u[2][1] + w[3] * u[3][1],
@@ -447,41 +447,52 @@ fn wsum(w: &[f64; 4], u: &[[f64; 3]; 4]) -> [f64; 3] {
 /// x3 − c = ¼(h + 2d13), x4 − c = ¼(−h + 2d24); the diagonals are in the plane
 /// (e3 ⟂ d13, d24), so the warp is z_I = ¼(e3·h)Γ_I.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
-pub struct Geom {
+pub struct Geom<R = f64> {
     /// Rows e1, e2, e3.
-    e: [[f64; 3]; 3],
+    e: [[R; 3]; 3],
     /// Local in-plane coordinates relative to the centroid.
-    x: [f64; 4],
-    y: [f64; 4],
-    area: f64,
-    bx: [f64; 4],
-    by: [f64; 4],
+    x: [R; 4],
+    y: [R; 4],
+    area: R,
+    bx: [R; 4],
+    by: [R; 4],
     /// Orthogonal hourglass vector γ = Γ − (Γ·x)b_x − (Γ·y)b_y.
-    gam: [f64; 4],
+    gam: [R; 4],
     /// γ·z = e3·h (warping coupling of the membrane hourglass rates; γ·Γ = 4).
-    gz: f64,
+    gz: R,
 }
 
 impl Geom {
     #[inline(always)]
     fn new(p: &[[f64; 3]; 4]) -> Option<Geom> {
+        let (g, ok) = Geom::build(p);
+        ok.then_some(g)
+    }
+}
+
+impl<R: Real> Geom<R> {
+    /// The geometry of corners `p`, and whether every lane has a finite,
+    /// non-vanishing and positive area (NaN-safe: anything else is refused).
+    #[inline(always)]
+    fn build(p: &[[R; 3]; 4]) -> (Geom<R>, bool) {
         let d13 = sub(p[2], p[0]);
         let d24 = sub(p[3], p[1]);
         let n = cross(d13, d24);
         let nn2 = dot(n, n);
-        let dd = 1e-12 * (dot(d13, d13) + dot(d24, d24));
-        // NaN-safe: a non-finite or vanishing area is refused.
-        if nn2.is_nan() || nn2 <= dd * dd {
-            return None;
-        }
-        let e3 = scale(n, 1.0 / nn2.sqrt());
+        let dd = R::splat(1e-12) * (dot(d13, d13) + dot(d24, d24));
+        let sized = (0..R::LANES).all(|i| {
+            let (a, d) = (nn2.lane(i), dd.lane(i));
+            !(a.is_nan() || a <= d * d)
+        });
+        let one = R::splat(1.0);
+        let e3 = scale(n, one / nn2.sqrt());
         // e1 ∝ g1 + g2 × e3 with the mid-lines g1 = d13 − d24, g2 = d13 + d24
         // (g2 × e3 is g2 turned by −90°; never opposite to g1 since g1 × g2 ∥ +e3).
         let g1 = sub(d13, d24);
         let g2 = [d13[0] + d24[0], d13[1] + d24[1], d13[2] + d24[2]];
         let bt = cross(g2, e3);
         let s = [g1[0] + bt[0], g1[1] + bt[1], g1[2] + bt[2]];
-        let e1 = scale(s, 1.0 / dot(s, s).sqrt());
+        let e1 = scale(s, one / dot(s, s).sqrt());
         let e2 = cross(e3, e1);
         let h = [
             p[0][0] - p[1][0] + p[2][0] - p[3][0],
@@ -490,33 +501,32 @@ impl Geom {
         ];
         let (x13, x24, xh) = (dot(e1, d13), dot(e1, d24), dot(e1, h));
         let (y13, y24, yh) = (dot(e2, d13), dot(e2, d24), dot(e2, h));
-        let area = 0.5 * (x13 * y24 - x24 * y13);
-        if area.is_nan() || area <= 0.0 {
-            return None;
-        }
+        let area = R::splat(0.5) * (x13 * y24 - x24 * y13);
+        let ok = sized && area.all(|a| !(a.is_nan() || a <= 0.0));
+        let (q, mq, two) = (R::splat(0.25), R::splat(-0.25), R::splat(2.0));
         let x = [
-            0.25 * (xh - 2.0 * x13),
-            -0.25 * (xh + 2.0 * x24),
-            0.25 * (xh + 2.0 * x13),
-            0.25 * (2.0 * x24 - xh),
+            q * (xh - two * x13),
+            mq * (xh + two * x24),
+            q * (xh + two * x13),
+            q * (two * x24 - xh),
         ];
         let y = [
-            0.25 * (yh - 2.0 * y13),
-            -0.25 * (yh + 2.0 * y24),
-            0.25 * (yh + 2.0 * y13),
-            0.25 * (2.0 * y24 - yh),
+            q * (yh - two * y13),
+            mq * (yh + two * y24),
+            q * (yh + two * y13),
+            q * (two * y24 - yh),
         ];
-        let r2a = 0.5 / area;
+        let r2a = R::splat(0.5) / area;
         let bx = [-y24 * r2a, y13 * r2a, y24 * r2a, -y13 * r2a];
         let by = [x24 * r2a, -x13 * r2a, -x24 * r2a, x13 * r2a];
         // Γ·x = xh, Γ·y = yh.
         let gam = [
-            1.0 - xh * bx[0] - yh * by[0],
-            -1.0 - xh * bx[1] - yh * by[1],
-            1.0 - xh * bx[2] - yh * by[2],
-            -1.0 - xh * bx[3] - yh * by[3],
+            one - xh * bx[0] - yh * by[0],
+            -one - xh * bx[1] - yh * by[1],
+            one - xh * bx[2] - yh * by[2],
+            -one - xh * bx[3] - yh * by[3],
         ];
-        Some(Geom {
+        let g = Geom {
             e: [e1, e2, e3],
             x,
             y,
@@ -525,13 +535,14 @@ impl Geom {
             by,
             gam,
             gz: dot(e3, h),
-        })
+        };
+        (g, ok)
     }
 }
 
 /// Characteristic length of the reference engine's shell time step (see the module doc).
 #[inline]
-fn char_length(sec: &ShellSection, g: &Geom, tri: bool) -> f64 {
+fn char_length<R: Real>(sec: &ShellSection, g: &Geom<R>, tri: bool) -> R {
     let d2 = |i: usize, j: usize| {
         let dx = g.x[j] - g.x[i];
         let dy = g.y[j] - g.y[i];
@@ -543,11 +554,11 @@ fn char_length(sec: &ShellSection, g: &Geom, tri: bool) -> f64 {
     if !tri {
         lmin = lmin.min(l34).min(d13).min(d24);
     }
-    let dyn2 = g.area * g.area / d13.max(d24).max(1e-300);
+    let dyn2 = g.area * g.area / d13.max(d24).max(R::splat(1e-300));
     let mut l2 = dyn2.max(lmin);
     let h = sec.hm.max(sec.hf);
     if h > 0.0 {
-        l2 = l2.min(0.5 * (lmin + l2) / h);
+        l2 = l2.min(R::splat(0.5) * (lmin + l2) / R::splat(h));
     }
     l2.sqrt()
 }
@@ -758,182 +769,203 @@ fn principal_in_plane(e: [f64; 3]) -> f64 {
 
 /// Rotation (cos, sin) applied to plane tensors and vectors.
 #[derive(Clone, Copy, Debug)]
-struct Rot {
-    c: f64,
-    s: f64,
+struct Rot<R = f64> {
+    c: R,
+    s: R,
 }
 
-impl Rot {
+impl<R: Real> Rot<R> {
     /// The rotation by ψ with tan(ψ/2) = p.
     #[inline(always)]
-    fn cayley(p: f64) -> Rot {
-        let d = 1.0 / (1.0 + p * p);
+    fn cayley(p: R) -> Rot<R> {
+        let one = R::splat(1.0);
+        let d = one / (one + p * p);
         Rot {
-            c: (1.0 - p * p) * d,
-            s: 2.0 * p * d,
+            c: (one - p * p) * d,
+            s: R::splat(2.0) * p * d,
         }
     }
     /// Components (xx, yy, xy) of the symmetric tensor turned by the angle:
     /// R a Rᵀ with R = [[c, −s], [s, c]].
     #[inline(always)]
-    fn stress(self, a: [f64; 3]) -> [f64; 3] {
+    fn stress(self, a: [R; 3]) -> [R; 3] {
         let (c, s) = (self.c, self.s);
         let (cc, ss, cs) = (c * c, s * s, c * s);
+        let two = R::splat(2.0);
         [
-            cc * a[0] + ss * a[1] - 2.0 * cs * a[2],
-            ss * a[0] + cc * a[1] + 2.0 * cs * a[2],
+            cc * a[0] + ss * a[1] - two * cs * a[2],
+            ss * a[0] + cc * a[1] + two * cs * a[2],
             cs * (a[0] - a[1]) + (cc - ss) * a[2],
         ]
     }
     /// The same for a strain-like tensor given with its engineering shear (xx, yy, 2xy).
     #[inline(always)]
-    fn strain(self, a: [f64; 3]) -> [f64; 3] {
-        let r = self.stress([a[0], a[1], 0.5 * a[2]]);
-        [r[0], r[1], 2.0 * r[2]]
+    fn strain(self, a: [R; 3]) -> [R; 3] {
+        let r = self.stress([a[0], a[1], R::splat(0.5) * a[2]]);
+        [r[0], r[1], R::splat(2.0) * r[2]]
     }
     /// Components of the in-plane vector turned by the angle.
     #[inline(always)]
-    fn vector(self, x: f64, y: f64) -> (f64, f64) {
+    fn vector(self, x: R, y: R) -> (R, R) {
         (self.c * x - self.s * y, self.s * x + self.c * y)
+    }
+    #[inline(always)]
+    fn lane(self, i: usize) -> Rot {
+        Rot {
+            c: self.c.lane(i),
+            s: self.s.lane(i),
+        }
     }
 }
 
-/// One explicit step of one element: stresses from x^{n+1} and v^{n+½}, internal
-/// corner forces and moments at x^{n+1}, energies, and the element time step.
-///
-/// `x`: positions at t^{n+1}; `v`: translational velocities v^{n+½}; `vr`:
-/// rotational velocities (global frame); `sig`, `eps_p`: this element's
-/// `n_ip` points (stresses in the local frame of x^{n+1} on return).
-/// With `dt = 0` only forces and the time step are computed.
-///
-/// Objectivity: the stored local stresses (and elastic hourglass resultants)
-/// are turned by ψ = φ − Θ, the in-plane material rotation of the step minus
-/// the frame rotation (midpoint/Hughes-Winget: tan(φ/2) = ω_z Δt/2 with
-/// ω_z = ½(∂v_y/∂x − ∂v_x/∂y) on the mid-step geometry; Θ from the Rodrigues
-/// vector of the measured frame turn from x^{n+½} to x^{n+1}, doubled); the
-/// mid-step strain increments are turned by ψ/2. The stress rate is thus the
-/// Jaumann rate whatever the local frame (/SHFRA V4 or V5 alike), and a
-/// prestressed element spinning rigidly keeps its stress.
-///
-/// The local velocity sums are formed in the global frame (Σ b_I v_I, then
-/// projected on the frame vectors), and the corner forces are assembled
-/// directly in the global frame.
+/// The step's kinematics on the mid-step geometry (see [`shell4_step`]):
+/// generalized strain rates turned by half the step's rotation ψ/2, the
+/// rotations ψ (stored stresses) and ψ/2, and the hourglass rates.
+#[derive(Clone, Copy, Debug)]
+struct Rates<R = f64> {
+    /// Membrane strain rates (xx, yy, 2xy).
+    d_m: [R; 3],
+    /// Curvature rates (xx, yy, 2xy).
+    d_k: [R; 3],
+    /// Transverse shear rates γ_zx, γ_yz.
+    gxz: R,
+    gyz: R,
+    rot_old: Rot<R>,
+    rot_inc: Rot<R>,
+    /// Hourglass rates q_x, q_y, q_z, q_rx, q_ry.
+    hg: [R; 5],
+}
+
+impl<R: Real> Rates<R> {
+    /// The rates of corners `v`, `vr` on the mid-step geometry `gm`, with the
+    /// frame turn from `gm` to the end geometry `ge` (none when `dt` = 0).
+    /// `orth`: the orthogonal hourglass vector γ, else Γ.
+    #[inline(always)]
+    fn new(
+        gm: &Geom<R>,
+        ge: &Geom<R>,
+        v: &[[R; 3]; 4],
+        vr: &[[R; 3]; 4],
+        dt: f64,
+        orth: bool,
+    ) -> Rates<R> {
+        let [m1, m2, m3] = gm.e;
+        let vbx = wsum(&gm.bx, v); // Σ b_x,I v_I
+        let vby = wsum(&gm.by, v);
+        let wbx = wsum(&gm.bx, vr);
+        let wby = wsum(&gm.by, vr);
+        let wbar = scale(
+            [
+                vr[0][0] + vr[1][0] + vr[2][0] + vr[3][0],
+                vr[0][1] + vr[1][1] + vr[2][1] + vr[3][1],
+                vr[0][2] + vr[1][2] + vr[2][2] + vr[3][2],
+            ],
+            R::splat(0.25),
+        );
+        let (bxvy, byvx) = (dot(m2, vbx), dot(m1, vby));
+        let d_m = [dot(m1, vbx), dot(m2, vby), byvx + bxvy];
+        let d_k = [dot(m2, wbx), -dot(m1, wby), dot(m2, wby) - dot(m1, wbx)];
+        let bxvz = dot(m3, vbx);
+        let byvz = dot(m3, vby);
+        let gxz = bxvz + dot(m2, wbar);
+        let gyz = byvz - dot(m1, wbar);
+        let one = R::splat(1.0);
+        // ---- rotations: material spin minus frame spin ----------------------------
+        let (rot_old, rot_inc) = if dt > 0.0 {
+            // Frame turn: Rodrigues vector g = tan(β/2)·axis of the rotation taking
+            // the mid-step frame to the end frame (components in the mid frame);
+            // the whole step's turn about the normal has tan(Θ/2) = 2g_z/(1 − |g|²).
+            let (m, e) = (&gm.e, &ge.e);
+            let tr = dot(m[0], e[0]) + dot(m[1], e[1]) + dot(m[2], e[2]);
+            let inv = one / (one + tr);
+            let gx = (dot(m[2], e[1]) - dot(m[1], e[2])) * inv;
+            let gy = (dot(m[0], e[2]) - dot(m[2], e[0])) * inv;
+            let gz = (dot(m[1], e[0]) - dot(m[0], e[1])) * inv;
+            let tf = R::splat(2.0) * gz / (one - (gx * gx + gy * gy + gz * gz));
+            // Material turn: tan(φ/2) = ω_z Δt/2 (midpoint rule, exact for a rigid spin).
+            let tm = R::splat(0.25) * (bxvy - byvx) * R::splat(dt);
+            // ψ = φ − Θ for the stored stress, ψ/2 for the mid-step increments.
+            let p = (tm - tf) / (one + tm * tf);
+            let ph = p / (one + (one + p * p).sqrt());
+            (Rot::cayley(p), Rot::cayley(ph))
+        } else {
+            (Rot::cayley(R::splat(0.0)), Rot::cayley(R::splat(0.0)))
+        };
+        // Hourglass rates: orthogonal γ for Ishell 1, 3, 4 (with the warping
+        // term), Γ for Ishell 2 and under small strain.
+        let (gmv, gzm) = if orth {
+            (gm.gam, gm.gz)
+        } else {
+            (GAMMA.map(R::splat), R::splat(0.0))
+        };
+        let vg = wsum(&gmv, v);
+        let wg = wsum(&gmv, vr);
+        let (qx, qy) = rot_inc.vector(dot(m1, vg) + gzm * bxvz, dot(m2, vg) + gzm * byvz);
+        let qz = dot(m3, vg);
+        let (qrx, qry) = rot_inc.vector(dot(m1, wg), dot(m2, wg));
+        let (gxz, gyz) = rot_inc.vector(gxz, gyz);
+        Rates {
+            d_m: rot_inc.strain(d_m),
+            d_k: rot_inc.strain(d_k),
+            gxz,
+            gyz,
+            rot_old,
+            rot_inc,
+            hg: [qx, qy, qz, qrx, qry],
+        }
+    }
+
+    #[inline(always)]
+    fn lane(&self, i: usize) -> Rates {
+        let l = |a: [R; 3]| a.map(|r| r.lane(i));
+        Rates {
+            d_m: l(self.d_m),
+            d_k: l(self.d_k),
+            gxz: self.gxz.lane(i),
+            gyz: self.gyz.lane(i),
+            rot_old: self.rot_old.lane(i),
+            rot_inc: self.rot_inc.lane(i),
+            hg: self.hg.map(|r| r.lane(i)),
+        }
+    }
+}
+
+/// What an element's points give over the step.
+#[derive(Clone, Copy, Debug)]
+struct Points<'a> {
+    /// Resultants per unit length at x^{n+1}: membrane N, bending M, shear (Q_x, Q_y).
+    nr: [f64; 3],
+    mr: [f64; 3],
+    q: [f64; 2],
+    /// Thickness strain increment Σ w_N Δε_zz.
+    dezz: f64,
+    /// The element is deleted (its points failed).
+    deleted: bool,
+    d_eint: f64,
+    d_eplas: f64,
+    /// The points' law at this step's strain rate and temperature, and their ε_p before it.
+    law: PointLaw<'a>,
+    ep0: [f64; MAX_IP],
+}
+
+/// The points of one element over the step (scalar: laws branch point by
+/// point): strain rate filter, old stresses turned by ψ, the laws through
+/// [`update_slots`], the work of the resultants and LAW27's membrane
+/// viscosity. `area_m`, `area_e`: the mid-step and end areas.
 #[allow(clippy::too_many_arguments)]
-pub fn shell4_step(
-    sec: &ShellSection,
-    x: &[[f64; 3]; 4],
-    v: &[[f64; 3]; 4],
-    vr: &[[f64; 3]; 4],
-    dt: f64,
+fn points<'a>(
+    sec: &'a ShellSection,
     st: &mut Shell4State,
     sig: &mut [[f64; 5]],
     eps_p: &mut [f64],
     dmg: &mut [PointHistory],
-) -> Shell4Out {
-    let mut out = Shell4Out {
-        dt: f64::INFINITY,
-        ..Default::default()
-    };
-    if st.deleted {
-        out.failed = true;
-        return out;
-    }
-    let n_ip = sec.n_ip;
-    let sig = &mut sig[..n_ip];
-    let eps_p = &mut eps_p[..n_ip];
-    let mat = &sec.material;
-    let kc = &sec.k;
-
-    // ---- geometry at x^{n+1} (forces) and x^{n+1/2} (rates) ------------------
-    let Some(mut ge) = Geom::new(x) else {
-        out.bad_area = true;
-        return out;
-    };
-    let g_dt = st.geo0.as_ref().unwrap_or(&ge);
-    out.dt = if sec.ishell == 24 && !st.tri {
-        qeph::char_length(sec, g_dt) / kc.c
-    } else {
-        char_length(sec, g_dt, st.tri) / kc.c * sec.viscmx()
-    };
-    let mut gm = if dt > 0.0 {
-        let mut xm = *x;
-        for i in 0..4 {
-            for k in 0..3 {
-                xm[i][k] -= 0.5 * dt * v[i][k];
-            }
-        }
-        match Geom::new(&xm) {
-            Some(g) => g,
-            None => {
-                out.bad_area = true;
-                return out;
-            }
-        }
-    } else {
-        ge
-    };
-    if dot(gm.e[2], ge.e[2]) <= 0.0 {
-        out.bad_area = true;
-        return out;
-    }
-    if let Some(g0) = &st.geo0 {
-        small_strain(&mut gm, g0);
-        small_strain(&mut ge, g0);
-    }
-    // Hourglass vectors: orthogonal γ for Ishell 1, 3, 4, except under small
-    // strain (Ismstr = 1), where the reference engine takes the plain Γ for
-    // the membrane and flexural modes as for the rotational ones (its shell
-    // hourglass routine switches the orthogonalisation off with Ismstr 1/11).
-    let orth = sec.ishell != 2 && sec.ismstr != 1;
-    let hourglass = !st.tri && sec.ishell != 24;
-
-    // ---- generalized strain rates (mid-step frame) ---------------------------
-    let [m1, m2, m3] = gm.e;
-    let vbx = wsum(&gm.bx, v); // Σ b_x,I v_I
-    let vby = wsum(&gm.by, v);
-    let wbx = wsum(&gm.bx, vr);
-    let wby = wsum(&gm.by, vr);
-    let wbar = scale(
-        [
-            vr[0][0] + vr[1][0] + vr[2][0] + vr[3][0],
-            vr[0][1] + vr[1][1] + vr[2][1] + vr[3][1],
-            vr[0][2] + vr[1][2] + vr[2][2] + vr[3][2],
-        ],
-        0.25,
-    );
-    let (bxvy, byvx) = (dot(m2, vbx), dot(m1, vby));
-    let d_m = [dot(m1, vbx), dot(m2, vby), byvx + bxvy];
-    let d_k = [dot(m2, wbx), -dot(m1, wby), dot(m2, wby) - dot(m1, wbx)];
-    let bxvz = dot(m3, vbx);
-    let byvz = dot(m3, vby);
-    let gxz = bxvz + dot(m2, wbar);
-    let gyz = byvz - dot(m1, wbar);
-
-    // ---- rotations: material spin minus frame spin ----------------------------
-    let (rot_old, rot_inc) = if dt > 0.0 {
-        // Frame turn: Rodrigues vector g = tan(β/2)·axis of the rotation taking
-        // the mid-step frame to the end frame (components in the mid frame);
-        // the whole step's turn about the normal has tan(Θ/2) = 2g_z/(1 − |g|²).
-        let (m, e) = (&gm.e, &ge.e);
-        let tr = dot(m[0], e[0]) + dot(m[1], e[1]) + dot(m[2], e[2]);
-        let inv = 1.0 / (1.0 + tr);
-        let gx = (dot(m[2], e[1]) - dot(m[1], e[2])) * inv;
-        let gy = (dot(m[0], e[2]) - dot(m[2], e[0])) * inv;
-        let gz = (dot(m[1], e[0]) - dot(m[0], e[1])) * inv;
-        let tf = 2.0 * gz / (1.0 - (gx * gx + gy * gy + gz * gz));
-        // Material turn: tan(φ/2) = ω_z Δt/2 (midpoint rule, exact for a rigid spin).
-        let tm = 0.25 * (bxvy - byvx) * dt;
-        // ψ = φ − Θ for the stored stress, ψ/2 for the mid-step increments.
-        let p = (tm - tf) / (1.0 + tm * tf);
-        let ph = p / (1.0 + (1.0 + p * p).sqrt());
-        (Rot::cayley(p), Rot::cayley(ph))
-    } else {
-        (Rot::cayley(0.0), Rot::cayley(0.0))
-    };
-    let d_m = rot_inc.strain(d_m);
-    let d_k = rot_inc.strain(d_k);
-    let (gxz, gyz) = rot_inc.vector(gxz, gyz);
-
+    r: &Rates,
+    dt: f64,
+    area_m: f64,
+    area_e: f64,
+) -> Points<'a> {
+    let (mat, kc, n_ip) = (&sec.material, &sec.k, sec.n_ip);
+    let (d_m, d_k, gxz, gyz, rot_old) = (r.d_m, r.d_k, r.gxz, r.gyz, r.rot_old);
     let t = st.thick;
     if dt > 0.0 && (kc.rate || sec.failure.is_some()) {
         let (a, b, g) = (d_m[0], d_m[1], d_m[2]);
@@ -946,7 +978,7 @@ pub fn shell4_step(
 
     // ---- stress update at the points ------------------------------------------
     let temp = if kc.thermal {
-        mat.temperature(st.eint / (gm.area * t))
+        mat.temperature(st.eint / (area_m * t))
     } else {
         mat.reference_temperature()
     };
@@ -1020,6 +1052,17 @@ pub fn shell4_step(
         qr[0] += wm * s[4];
         qr[1] += wm * s[3];
     }
+    let mut out = Points {
+        nr,
+        mr,
+        q: qr,
+        dezz,
+        deleted,
+        d_eint: 0.0,
+        d_eplas: 0.0,
+        law,
+        ep0,
+    };
     // Work of the resultants over the step, A(N̄:Δε + M̄:Δκ + Q̄·Δγ) (conjugate to the forces).
     if dt > 0.0 {
         let de = 0.5
@@ -1032,14 +1075,13 @@ pub fn shell4_step(
                         + (mo[1] + mr[1]) * d_k[1]
                         + (mo[2] + mr[2]) * d_k[2])
                 + t * ((qo[0] + qr[0]) * gxz + (qo[1] + qr[1]) * gyz));
-        out.d_eint = de * gm.area;
-        out.d_eplas = dwp * gm.area * t;
+        out.d_eint = de * area_m;
+        out.d_eplas = dwp * area_m * t;
         st.eint += out.d_eint;
         st.eplas += out.d_eplas;
     }
     if deleted {
         st.deleted = true;
-        out.failed = true;
         return out;
     }
     // LAW27's membrane viscosity (research note `docs/notes/law27_research.md`
@@ -1048,124 +1090,273 @@ pub fn shell4_step(
     // internal energy.
     let dm = sec.membrane_damping();
     if dm > 0.0 && dt > 0.0 {
-        let f = 1.414 * dm * mat.rho_ref() * mat.sound_speed() * ge.area.sqrt();
+        let f = 1.414 * dm * mat.rho_ref() * mat.sound_speed() * area_e.sqrt();
         let sv = [
             f * (d_m[0] + 0.5 * d_m[1]),
             f * (d_m[1] + 0.5 * d_m[0]),
             f * d_m[2] / 3.0,
         ];
-        let dw = (sv[0] * d_m[0] + sv[1] * d_m[1] + sv[2] * d_m[2]) * dt * gm.area * t;
+        let dw = (sv[0] * d_m[0] + sv[1] * d_m[1] + sv[2] * d_m[2]) * dt * area_m * t;
         out.d_eint += dw;
         st.eint += dw;
         for c in 0..3 {
-            nr[c] += sv[c];
+            out.nr[c] += sv[c];
         }
     }
     // Resultants per unit length at x^{n+1}.
-    let nr = scale(nr, t);
-    let mr = scale(mr, t * t);
-    let (q0, q1) = (qr[0] * t, qr[1] * t);
+    out.nr = scale(out.nr, t);
+    out.mr = scale(out.mr, t * t);
+    out.q = [qr[0] * t, qr[1] * t];
+    out
+}
 
-    // ---- hourglass -------------------------------------------------------------
+/// Ishell 1, 2, 4 hourglass (see the module doc): the elastic resultants
+/// `hg` turned by ψ and integrated over the step, and the quadratic dampers.
+/// Returns the resultants (Q_mx, Q_my, Q_f, M_rx, M_ry), the new elastic
+/// resultants and the energy increment: the elastic resultants' mean over the
+/// step (the exact change of their stored energy, as the internal energy
+/// takes the mean of the old and new resultants) plus the dampers' work.
+#[inline(always)]
+fn hourglass_visco<R: Real>(
+    sec: &ShellSection,
+    ge: &Geom<R>,
+    t: R,
+    r: &Rates<R>,
+    hg: [R; N_HG],
+    dt: f64,
+) -> ([R; 5], [R; N_HG], R) {
+    let kc = &sec.k;
     let a = ge.area;
-    let (mut qmx, mut qmy, mut qf, mut mrx, mut mry) = (0.0, 0.0, 0.0, 0.0, 0.0);
-    if hourglass {
-        let (gmv, gzm) = if orth { (gm.gam, gm.gz) } else { (GAMMA, 0.0) };
-        let vg = wsum(&gmv, v);
-        let wg = wsum(&gmv, vr);
-        let (qx, qy) = rot_inc.vector(dot(m1, vg) + gzm * bxvz, dot(m2, vg) + gzm * byvz);
-        let qz = dot(m3, vg);
-        let (qrx, qry) = rot_inc.vector(dot(m1, wg), dot(m2, wg));
-        let shfpr3 = kc.shfpr3;
-        let e_mod = kc.e;
-        let bsum = a
-            * a
-            * (ge.bx[0] * ge.bx[0]
-                + ge.by[0] * ge.by[0]
-                + ge.bx[1] * ge.bx[1]
-                + ge.by[1] * ge.by[1]);
-        let rc = kc.rc;
-        let hg = &mut st.hourglass;
-        let (h0, h1) = rot_old.vector(hg[0], hg[1]);
-        if sec.ishell == 3 {
-            // Mean current yield stress of the points (∞ for an elastic material).
-            let sy_mean: f64 = (0..n_ip)
-                .map(|k| sec.w_mem[k] * law.yield_stress(eps_p[k]))
-                .sum();
-            let km = 0.125 * sec.hm * e_mod * t;
-            let kf = 0.125 * sec.hf * e_mod * shfpr3 * t * t * t / bsum;
-            let fm_max = 0.5 * sy_mean * t * a.sqrt() * sec.hm;
-            let ff_max = 0.25 * sy_mean * t * t * sec.hf;
-            let cap = |v: f64, m: f64| if m.is_finite() { v.clamp(-m, m) } else { v };
-            hg[0] = cap(h0 + km * qx * dt, fm_max);
-            hg[1] = cap(h1 + km * qy * dt, fm_max);
-            hg[2] = cap(hg[2] + kf * qz * dt, ff_max);
-            let cr = rc * t * t * a * kc.vr3;
-            qmx = hg[0];
-            qmy = hg[1];
-            qf = hg[2];
-            mrx = cr * qrx;
-            mry = cr * qry;
-        } else {
-            // Ishell 1, 2, 4: elastic resultants integrated in time plus a
-            // quadratic viscosity, with the reference engine's global factors
-            // (elastic ½, quadratic viscosity ½, linear viscosity 0).
-            let km = 0.125 * sec.hm * e_mod * t;
-            let kf = 0.125 * sec.hf * e_mod * shfpr3 * t * t * t / bsum;
-            let h2 = hg[2];
-            hg[0] = h0 + km * qx * dt;
-            hg[1] = h1 + km * qy * dt;
-            hg[2] += kf * qz * dt;
-            let cm = kc.qm * t * a.sqrt();
-            let cf = kc.qf * t * t;
-            let cr = kc.qr * t * t * a;
-            let (dmx, dmy, df) = (cm * qx.abs() * qx, cm * qy.abs() * qy, cf * qz.abs() * qz);
-            qmx = hg[0] + dmx;
-            qmy = hg[1] + dmy;
-            qf = hg[2] + df;
-            mrx = cr * qrx.abs() * qrx;
-            mry = cr * qry.abs() * qry;
-            // Energy: the elastic resultants' mean over the step (the exact
-            // change of their stored energy, as the internal energy takes the
-            // mean of the old and new resultants) plus the dampers' work.
-            out.d_ehg = dt
-                * ((0.5 * (h0 + hg[0]) + dmx) * qx
-                    + (0.5 * (h1 + hg[1]) + dmy) * qy
-                    + (0.5 * (h2 + hg[2]) + df) * qz
-                    + mrx * qrx
-                    + mry * qry);
-            st.ehg += out.d_ehg;
-        }
-        if sec.ishell == 3 {
-            out.d_ehg = dt * (qmx * qx + qmy * qy + qf * qz + mrx * qrx + mry * qry);
-            st.ehg += out.d_ehg;
-        }
-    }
+    let [qx, qy, qz, qrx, qry] = r.hg;
+    let bsum = a
+        * a
+        * (ge.bx[0] * ge.bx[0] + ge.by[0] * ge.by[0] + ge.bx[1] * ge.bx[1] + ge.by[1] * ge.by[1]);
+    let (h0, h1) = r.rot_old.vector(hg[0], hg[1]);
+    // Global factors of the reference engine: elastic ½, quadratic viscosity ½, linear 0.
+    let km = R::splat(0.125 * sec.hm * kc.e) * t;
+    let kf = R::splat(0.125 * sec.hf * kc.e * kc.shfpr3) * t * t * t / bsum;
+    let rdt = R::splat(dt);
+    let h2 = hg[2];
+    let new = [h0 + km * qx * rdt, h1 + km * qy * rdt, h2 + kf * qz * rdt];
+    let cm = R::splat(kc.qm) * t * a.sqrt();
+    let cf = R::splat(kc.qf) * t * t;
+    let cr = R::splat(kc.qr) * t * t * a;
+    let (dmx, dmy, df) = (cm * qx.abs() * qx, cm * qy.abs() * qy, cf * qz.abs() * qz);
+    let (mrx, mry) = (cr * qrx.abs() * qrx, cr * qry.abs() * qry);
+    let half = R::splat(0.5);
+    let d_ehg = rdt
+        * ((half * (h0 + new[0]) + dmx) * qx
+            + (half * (h1 + new[1]) + dmy) * qy
+            + (half * (h2 + new[2]) + df) * qz
+            + mrx * qrx
+            + mry * qry);
+    (
+        [new[0] + dmx, new[1] + dmy, new[2] + df, mrx, mry],
+        new,
+        d_ehg,
+    )
+}
 
-    // ---- corner forces and moments at x^{n+1}, global frame ---------------------
-    // f_I = b_x,I F_x + b_y,I F_y + γ_I H_f with
-    // F_x = A(N_xx e1 + N_xy e2 + Q_x e3) + (γ·z)q_mx e3, F_y likewise, H_f = Q_m,x e1 + Q_m,y e2 + Q_f e3;
-    // m_I = b_x,I M_x + b_y,I M_y + M_0 + γ_I H_m with M_x = A(−M_xy e1 + M_xx e2),
-    // M_y = A(−M_yy e1 + M_xy e2), M_0 = ¼A(−Q_y e1 + Q_x e2), H_m = M_rx e1 + M_ry e2.
+/// Ishell 3 hourglass (see the module doc): elasto-plastic membrane and
+/// flexural resultants capped by the points' mean yield stress, viscous
+/// rotations. Returns the resultants and the energy increment; `hg` is updated.
+#[allow(clippy::too_many_arguments)]
+fn hourglass_plastic(
+    sec: &ShellSection,
+    ge: &Geom,
+    t: f64,
+    r: &Rates,
+    hg: &mut [f64; N_HG],
+    law: &PointLaw,
+    eps_p: &[f64],
+    dt: f64,
+) -> ([f64; 5], f64) {
+    let kc = &sec.k;
+    let a = ge.area;
+    let [qx, qy, qz, qrx, qry] = r.hg;
+    let bsum = a
+        * a
+        * (ge.bx[0] * ge.bx[0] + ge.by[0] * ge.by[0] + ge.bx[1] * ge.bx[1] + ge.by[1] * ge.by[1]);
+    let (h0, h1) = r.rot_old.vector(hg[0], hg[1]);
+    // Mean current yield stress of the points (∞ for an elastic material).
+    let sy_mean: f64 = (0..sec.n_ip)
+        .map(|k| sec.w_mem[k] * law.yield_stress(eps_p[k]))
+        .sum();
+    let km = 0.125 * sec.hm * kc.e * t;
+    let kf = 0.125 * sec.hf * kc.e * kc.shfpr3 * t * t * t / bsum;
+    let fm_max = 0.5 * sy_mean * t * a.sqrt() * sec.hm;
+    let ff_max = 0.25 * sy_mean * t * t * sec.hf;
+    let cap = |v: f64, m: f64| if m.is_finite() { v.clamp(-m, m) } else { v };
+    hg[0] = cap(h0 + km * qx * dt, fm_max);
+    hg[1] = cap(h1 + km * qy * dt, fm_max);
+    hg[2] = cap(hg[2] + kf * qz * dt, ff_max);
+    let cr = kc.rc * t * t * a * kc.vr3;
+    let h = [hg[0], hg[1], hg[2], cr * qrx, cr * qry];
+    let d_ehg = dt * (h[0] * qx + h[1] * qy + h[2] * qz + h[3] * qrx + h[4] * qry);
+    (h, d_ehg)
+}
+
+/// Corner forces and moments at x^{n+1}, global frame, of the resultants
+/// per unit length (`nr`, `mr`, `q`) and the hourglass resultants `h`:
+/// f_I = b_x,I F_x + b_y,I F_y + γ_I H_f with
+/// F_x = A(N_xx e1 + N_xy e2 + Q_x e3) + (γ·z)q_mx e3, F_y likewise, H_f = Q_m,x e1 + Q_m,y e2 + Q_f e3;
+/// m_I = b_x,I M_x + b_y,I M_y + M_0 + γ_I H_m with M_x = A(−M_xy e1 + M_xx e2),
+/// M_y = A(−M_yy e1 + M_xy e2), M_0 = ¼A(−Q_y e1 + Q_x e2), H_m = M_rx e1 + M_ry e2.
+#[inline(always)]
+fn corner_forces<R: Real>(
+    ge: &Geom<R>,
+    orth: bool,
+    nr: [R; 3],
+    mr: [R; 3],
+    q: [R; 2],
+    h: [R; 5],
+) -> ([[R; 3]; 4], [[R; 3]; 4]) {
     let [e1, e2, e3] = ge.e;
-    let (gev, gze) = if orth { (ge.gam, ge.gz) } else { (GAMMA, 0.0) };
-    let fx = comb3(a * nr[0], e1, a * nr[2], e2, a * q0 + gze * qmx, e3);
-    let fy = comb3(a * nr[2], e1, a * nr[1], e2, a * q1 + gze * qmy, e3);
+    let a = ge.area;
+    let [qmx, qmy, qf, mrx, mry] = h;
+    let zero = R::splat(0.0);
+    let (gev, gze) = if orth {
+        (ge.gam, ge.gz)
+    } else {
+        (GAMMA.map(R::splat), zero)
+    };
+    let fx = comb3(a * nr[0], e1, a * nr[2], e2, a * q[0] + gze * qmx, e3);
+    let fy = comb3(a * nr[2], e1, a * nr[1], e2, a * q[1] + gze * qmy, e3);
     let hf = comb3(qmx, e1, qmy, e2, qf, e3);
-    let mx = comb3(-a * mr[2], e1, a * mr[0], e2, 0.0, e3);
-    let my = comb3(-a * mr[1], e1, a * mr[2], e2, 0.0, e3);
-    let m0 = comb3(-0.25 * a * q1, e1, 0.25 * a * q0, e2, 0.0, e3);
-    let hm = comb3(mrx, e1, mry, e2, 0.0, e3);
+    let mx = comb3(-a * mr[2], e1, a * mr[0], e2, zero, e3);
+    let my = comb3(-a * mr[1], e1, a * mr[2], e2, zero, e3);
+    let m0 = comb3(
+        R::splat(-0.25) * a * q[1],
+        e1,
+        R::splat(0.25) * a * q[0],
+        e2,
+        zero,
+        e3,
+    );
+    let hm = comb3(mrx, e1, mry, e2, zero, e3);
+    let mut f = [[zero; 3]; 4];
+    let mut m = [[zero; 3]; 4];
     for (i, &gi) in gev.iter().enumerate() {
         let (bxi, byi) = (ge.bx[i], ge.by[i]);
-        out.f[i] = comb3(bxi, fx, byi, fy, gi, hf);
+        f[i] = comb3(bxi, fx, byi, fy, gi, hf);
         let mm = comb3(bxi, mx, byi, my, gi, hm);
-        out.m[i] = [mm[0] + m0[0], mm[1] + m0[1], mm[2] + m0[2]];
+        m[i] = [mm[0] + m0[0], mm[1] + m0[1], mm[2] + m0[2]];
+    }
+    (f, m)
+}
+
+/// One explicit step of one element: stresses from x^{n+1} and v^{n+½}, internal
+/// corner forces and moments at x^{n+1}, energies, and the element time step.
+///
+/// `x`: positions at t^{n+1}; `v`: translational velocities v^{n+½}; `vr`:
+/// rotational velocities (global frame); `sig`, `eps_p`: this element's
+/// `n_ip` points (stresses in the local frame of x^{n+1} on return).
+/// With `dt = 0` only forces and the time step are computed.
+///
+/// Objectivity: the stored local stresses (and elastic hourglass resultants)
+/// are turned by ψ = φ − Θ, the in-plane material rotation of the step minus
+/// the frame rotation (midpoint/Hughes-Winget: tan(φ/2) = ω_z Δt/2 with
+/// ω_z = ½(∂v_y/∂x − ∂v_x/∂y) on the mid-step geometry; Θ from the Rodrigues
+/// vector of the measured frame turn from x^{n+½} to x^{n+1}, doubled); the
+/// mid-step strain increments are turned by ψ/2. The stress rate is thus the
+/// Jaumann rate whatever the local frame (/SHFRA V4 or V5 alike), and a
+/// prestressed element spinning rigidly keeps its stress.
+///
+/// The local velocity sums are formed in the global frame (Σ b_I v_I, then
+/// projected on the frame vectors), and the corner forces are assembled
+/// directly in the global frame. [`shell4_step4`] runs four elements of one
+/// section through the same source, lane by lane.
+#[allow(clippy::too_many_arguments)]
+pub fn shell4_step(
+    sec: &ShellSection,
+    x: &[[f64; 3]; 4],
+    v: &[[f64; 3]; 4],
+    vr: &[[f64; 3]; 4],
+    dt: f64,
+    st: &mut Shell4State,
+    sig: &mut [[f64; 5]],
+    eps_p: &mut [f64],
+    dmg: &mut [PointHistory],
+) -> Shell4Out {
+    let mut out = Shell4Out {
+        dt: f64::INFINITY,
+        ..Default::default()
+    };
+    if st.deleted {
+        out.failed = true;
+        return out;
+    }
+    let n_ip = sec.n_ip;
+    let sig = &mut sig[..n_ip];
+    let eps_p = &mut eps_p[..n_ip];
+    let kc = &sec.k;
+
+    // ---- geometry at x^{n+1} (forces) and x^{n+1/2} (rates) ------------------
+    let Some(mut ge) = Geom::new(x) else {
+        out.bad_area = true;
+        return out;
+    };
+    let g_dt = st.geo0.as_ref().unwrap_or(&ge);
+    out.dt = if sec.ishell == 24 && !st.tri {
+        qeph::char_length(sec, g_dt) / kc.c
+    } else {
+        char_length(sec, g_dt, st.tri) / kc.c * sec.viscmx()
+    };
+    let mut gm = if dt > 0.0 {
+        match Geom::new(&mid_step(x, v, dt)) {
+            Some(g) => g,
+            None => {
+                out.bad_area = true;
+                return out;
+            }
+        }
+    } else {
+        ge
+    };
+    if dot(gm.e[2], ge.e[2]) <= 0.0 {
+        out.bad_area = true;
+        return out;
+    }
+    if let Some(g0) = &st.geo0 {
+        small_strain(&mut gm, g0);
+        small_strain(&mut ge, g0);
+    }
+    // Hourglass vectors: orthogonal γ for Ishell 1, 3, 4, except under small
+    // strain (Ismstr = 1), where the reference engine takes the plain Γ for
+    // the membrane and flexural modes as for the rotational ones (its shell
+    // hourglass routine switches the orthogonalisation off with Ismstr 1/11).
+    let orth = sec.ishell != 2 && sec.ismstr != 1;
+    let hourglass = !st.tri && sec.ishell != 24;
+    let r = Rates::new(&gm, &ge, v, vr, dt, orth);
+    let t = st.thick;
+    let p = points(sec, st, sig, eps_p, dmg, &r, dt, gm.area, ge.area);
+    out.d_eint = p.d_eint;
+    out.d_eplas = p.d_eplas;
+    if p.deleted {
+        out.failed = true;
+        return out;
     }
 
+    // ---- hourglass -------------------------------------------------------------
+    let mut h = [0.0; 5];
+    if hourglass {
+        let (hr, d_ehg) = if sec.ishell == 3 {
+            hourglass_plastic(sec, &ge, t, &r, &mut st.hourglass, &p.law, eps_p, dt)
+        } else {
+            let (hr, new, d_ehg) = hourglass_visco(sec, &ge, t, &r, st.hourglass, dt);
+            st.hourglass = new;
+            (hr, d_ehg)
+        };
+        h = hr;
+        out.d_ehg = d_ehg;
+        st.ehg += d_ehg;
+    }
+    (out.f, out.m) = corner_forces(&ge, orth, p.nr, p.mr, p.q, h);
+
     if sec.ishell == 24 && !st.tri {
-        let pl = qeph::plastic_state(sec, &law, &ep0[..n_ip], eps_p);
-        let (nb, mb) = (scale(nr, 1.0 / t), scale(mr, 1.0 / (t * t)));
+        let [e1, e2, e3] = ge.e;
+        let pl = qeph::plastic_state(sec, &p.law, &p.ep0[..n_ip], eps_p);
+        let (nb, mb) = (scale(p.nr, 1.0 / t), scale(p.mr, 1.0 / (t * t)));
         let q = qeph::step(sec, &gm, &ge, v, vr, dt, t, &mut st.qeph, pl, nb, mb);
         for i in 0..4 {
             let (f, m) = (q.f[i], q.m[i]);
@@ -1183,13 +1374,30 @@ pub fn shell4_step(
 
     // ---- thickness ---------------------------------------------------------------
     if sec.ithick == 1 && dt > 0.0 {
-        st.thick = t * (1.0 + dezz);
+        st.thick = t * (1.0 + p.dezz);
     }
     out
 }
 
+/// The mid-step corners x^{n+½} = x^{n+1} − ½Δt v^{n+½}.
+#[inline(always)]
+fn mid_step<R: Real>(x: &[[R; 3]; 4], v: &[[R; 3]; 4], dt: f64) -> [[R; 3]; 4] {
+    let h = R::splat(0.5 * dt);
+    let mut m = *x;
+    for (mi, vi) in m.iter_mut().zip(v) {
+        for k in 0..3 {
+            mi[k] = mi[k] - h * vi[k];
+        }
+    }
+    m
+}
+
 #[path = "shell4_qeph.rs"]
 mod qeph;
+
+#[path = "shell4_batch.rs"]
+mod batch;
+pub use batch::shell4_step4;
 
 #[cfg(test)]
 #[path = "shell4_tests.rs"]

@@ -5,7 +5,7 @@
 use super::*;
 use crate::model::{JohnsonCook, Loc, MaterialLaw, MaterialSpec};
 
-fn card(law: MaterialLaw) -> MaterialSpec {
+pub(super) fn card(law: MaterialLaw) -> MaterialSpec {
     MaterialSpec {
         id: 1,
         unit_id: 0,
@@ -21,17 +21,17 @@ fn card(law: MaterialLaw) -> MaterialSpec {
 }
 
 /// BOX1BL's /MAT/PLAS_JOHNS/1 (rate term off unless asked).
-fn jc_mat(f: impl FnOnce(&mut JohnsonCook)) -> Material {
+pub(super) fn jc_mat(f: impl FnOnce(&mut JohnsonCook)) -> Material {
     let mut j = JohnsonCook::hardening(0.25, 0.349999994, 0.519999981);
     f(&mut j);
     Material::from_card(&card(MaterialLaw::JohnsonCook(j)))
 }
 
-fn elastic() -> Material {
+pub(super) fn elastic() -> Material {
     Material::from_card(&card(MaterialLaw::Elastic))
 }
 
-fn resolved(ishell: i64, n: i64, h: f64) -> ResolvedShell {
+pub(super) fn resolved(ishell: i64, n: i64, h: f64) -> ResolvedShell {
     ResolvedShell {
         ishell,
         ismstr: 2,
@@ -52,7 +52,7 @@ fn resolved(ishell: i64, n: i64, h: f64) -> ResolvedShell {
     }
 }
 
-fn section(ishell: i64, n: i64, h: f64, m: &Material) -> ShellSection {
+pub(super) fn section(ishell: i64, n: i64, h: f64, m: &Material) -> ShellSection {
     ShellSection::new(&resolved(ishell, n, h), m).unwrap()
 }
 
@@ -63,16 +63,16 @@ fn global_section(ishell: i64, h: f64, m: &Material) -> ShellSection {
 }
 
 /// Deterministic pseudo-random numbers in [−1, 1).
-struct Lcg(u64);
+pub(super) struct Lcg(pub(super) u64);
 impl Lcg {
-    fn next(&mut self) -> f64 {
+    pub(super) fn next(&mut self) -> f64 {
         self.0 = self
             .0
             .wrapping_mul(6364136223846793005)
             .wrapping_add(1442695040888963407);
         ((self.0 >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
     }
-    fn v3(&mut self, s: f64) -> [f64; 3] {
+    pub(super) fn v3(&mut self, s: f64) -> [f64; 3] {
         [s * self.next(), s * self.next(), s * self.next()]
     }
 }
@@ -107,7 +107,7 @@ fn mul(r: &[[f64; 3]; 3], a: [f64; 3]) -> [f64; 3] {
 }
 
 /// A distorted, warped quad (warp ~ 3% of the size).
-fn warped_quad() -> [[f64; 3]; 4] {
+pub(super) fn warped_quad() -> [[f64; 3]; 4] {
     [
         [0.1, -0.2, 0.05],
         [5.3, 0.4, -0.12],

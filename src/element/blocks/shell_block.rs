@@ -3,7 +3,7 @@
 /// 4-node and 3-node shells share this shape: a section per part, `nip`
 /// integration points per element (stress and plastic strain), rotations.
 macro_rules! shell_block {
-    ($name:ident, $kind:expr, $nn:literal, $state:ty, $init:path, $step:path, $section:path, $stiff:expr) => {
+    ($name:ident, $kind:expr, $nn:literal, $state:ty, $init:path, $step:path, $section:path, $stiff:expr, $batch:expr) => {
         pub struct $name {
             le: LocalElements,
             sections: Vec<ShellSection>,
@@ -73,47 +73,88 @@ macro_rules! shell_block {
             ) {
                 let (le, sections, section, nip) =
                     (&self.le, &self.sections, &self.section, self.nip);
+                let batch: Option<BatchFn<$nn, $state>> = $batch;
+                // Four elements at a time: one batch where the formulation
+                // has one and they share a section, else one by one (the
+                // same answer either way, see `element::lanes`).
                 contrib
-                    .par_chunks_mut($nn)
-                    .zip(self.state.par_iter_mut())
-                    .zip(self.sig.par_chunks_mut(nip))
-                    .zip(self.eps_p.par_chunks_mut(nip))
-                    .zip(self.dmg.par_chunks_mut(nip))
-                    .zip(self.steps.par_iter_mut())
-                    .zip(self.alive.par_iter())
+                    .par_chunks_mut(4 * $nn)
+                    .zip(self.state.par_chunks_mut(4))
+                    .zip(self.sig.par_chunks_mut(4 * nip))
+                    .zip(self.eps_p.par_chunks_mut(4 * nip))
+                    .zip(self.dmg.par_chunks_mut(4 * nip))
+                    .zip(self.steps.par_chunks_mut(4))
+                    .zip(self.alive.par_chunks(4))
                     .enumerate()
-                    .for_each(|(e, ((((((c, st), sig), eps), dmg), out), alive))| {
-                        if !*alive {
-                            c.iter_mut().for_each(|s| *s = [0.0; SLOT]);
-                            *out = ElemStep {
-                                dt: f64::INFINITY,
-                                ..Default::default()
+                    .for_each(|(b, ((((((c, st), sig), eps), dmg), out), alive))| {
+                        let e0 = 4 * b;
+                        let sec = &sections[section[e0] as usize];
+                        if let Some(step4) = batch {
+                            if st.len() == 4
+                                && alive.iter().all(|&a| a)
+                                && section[e0..e0 + 4].iter().all(|&s| s == section[e0])
+                            {
+                                let g = |a: &[[f64; 3]]| {
+                                    let n = |i| gather::<$nn>(le, e0 + i, a);
+                                    [n(0), n(1), n(2), n(3)]
+                                };
+                                let o =
+                                    step4(sec, &g(x), &g(v), &g(vr), dt, st, sig, eps, dmg, nip);
+                                if let Some(o) = o {
+                                    for (i, o) in o.iter().enumerate() {
+                                        for k in 0..$nn {
+                                            c[$nn * i + k] = [
+                                                o.f[k][0], o.f[k][1], o.f[k][2], o.m[k][0],
+                                                o.m[k][1], o.m[k][2],
+                                            ];
+                                        }
+                                        out[i] = ElemStep {
+                                            dt: o.dt,
+                                            failed: o.failed,
+                                            bad: o.bad_area,
+                                        };
+                                    }
+                                    return;
+                                }
+                            }
+                        }
+                        for i in 0..st.len() {
+                            let e = e0 + i;
+                            let c = &mut c[$nn * i..$nn * (i + 1)];
+                            if !alive[i] {
+                                c.iter_mut().for_each(|s| *s = [0.0; SLOT]);
+                                out[i] = ElemStep {
+                                    dt: f64::INFINITY,
+                                    ..Default::default()
+                                };
+                                continue;
+                            }
+                            let sec = &sections[section[e] as usize];
+                            let n = sec.n_ip.max(1);
+                            let pts = i * nip..i * nip + n;
+                            let o = $step(
+                                sec,
+                                &gather::<$nn>(le, e, x),
+                                &gather::<$nn>(le, e, v),
+                                &gather::<$nn>(le, e, vr),
+                                dt,
+                                &mut st[i],
+                                &mut sig[pts.clone()],
+                                &mut eps[pts.clone()],
+                                &mut dmg[pts],
+                            );
+                            for k in 0..$nn {
+                                c[k] = [
+                                    o.f[k][0], o.f[k][1], o.f[k][2], o.m[k][0], o.m[k][1],
+                                    o.m[k][2],
+                                ];
+                            }
+                            out[i] = ElemStep {
+                                dt: o.dt,
+                                failed: o.failed,
+                                bad: o.bad_area,
                             };
-                            return;
                         }
-                        let sec = &sections[section[e] as usize];
-                        let n = sec.n_ip.max(1);
-                        let o = $step(
-                            sec,
-                            &gather::<$nn>(le, e, x),
-                            &gather::<$nn>(le, e, v),
-                            &gather::<$nn>(le, e, vr),
-                            dt,
-                            st,
-                            &mut sig[..n],
-                            &mut eps[..n],
-                            &mut dmg[..n],
-                        );
-                        for k in 0..$nn {
-                            c[k] = [
-                                o.f[k][0], o.f[k][1], o.f[k][2], o.m[k][0], o.m[k][1], o.m[k][2],
-                            ];
-                        }
-                        *out = ElemStep {
-                            dt: o.dt,
-                            failed: o.failed,
-                            bad: o.bad_area,
-                        };
                     });
             }
             fn steps(&self) -> &[ElemStep] {
@@ -245,3 +286,19 @@ pub(super) use shell_block;
 /// nodal time step: its section, corners and thickness.
 pub(super) type NodalStiffnessFn<const N: usize> =
     fn(&crate::element::shell4::ShellSection, &[[f64; 3]; N], f64) -> (f64, f64);
+
+/// A formulation's step of four elements of one section (corners, velocities,
+/// rotational velocities, Δt, their states and `nip`-strided points), or
+/// `None` with nothing changed where they must go one by one.
+pub(super) type BatchFn<const N: usize, S> = fn(
+    &crate::element::shell4::ShellSection,
+    &[[[f64; 3]; N]; 4],
+    &[[[f64; 3]; N]; 4],
+    &[[[f64; 3]; N]; 4],
+    f64,
+    &mut [S],
+    &mut [[f64; 5]],
+    &mut [f64],
+    &mut [crate::element::shell4::PointHistory],
+    usize,
+) -> Option<[crate::element::shell4::Shell4Out; 4]>;

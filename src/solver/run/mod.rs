@@ -14,6 +14,7 @@ mod forces;
 mod integrate;
 mod kinematics;
 mod nodal_step;
+mod peak_memory;
 mod prepare;
 mod pressure;
 mod report;
@@ -455,6 +456,11 @@ fn final_block(
             nsec[1] as u64,
         )
     });
+    // Peak resident memory: the sum over the ranks and the largest rank.
+    let peak = peak_memory::peak_resident_bytes();
+    let (mut total, mut largest) = ([peak], [peak]);
+    cx.world.sum_f64(&mut total);
+    cx.world.max_f64(&mut largest);
     let Some(l) = &mut report.listing else {
         return;
     };
@@ -512,6 +518,13 @@ fn final_block(
         "     TIME PER CYCLE          : {:>10.3} µs   ({:.4} µs per element-cycle)",
         1e6 * looped / cycle.max(1) as f64,
         1e6 * looped / (cycle.max(1) as f64 * elems as f64)
+    ));
+    let mib = |b: f64| b / (1024.0 * 1024.0);
+    l.line(&format!(
+        "     PEAK MEMORY             : {:>10.1} MiB resident, all ranks ({:.1} MiB on the largest; {:.0} bytes per element)",
+        mib(total[0]),
+        mib(largest[0]),
+        total[0] / elems as f64
     ));
     l.flush();
 }

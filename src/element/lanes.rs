@@ -1,0 +1,220 @@
+//! Arithmetic on one element or on four side by side.
+//!
+//! Kernels written over [`Real`] compile twice: for `f64` (one element) and
+//! for [`F4`] (four elements of one section, each lane one element). Every
+//! operation of `F4` is the `f64` operation applied lane by lane, in the same
+//! order the generic source gives, and Rust never fuses a multiply and an add
+//! on its own: a lane's result is bitwise the one element's result. A batch
+//! therefore changes the speed and never the answer, whichever elements a
+//! rank's partition happens to put side by side.
+//!
+//! `F4` is a plain lane array (`[f64; 4]`, 32-byte aligned) whose operators
+//! the compiler turns into vector instructions (AVX2 where the build targets
+//! it, two SSE2 halves otherwise). `std::simd` would say the same but is not
+//! stable; the `wide` crate gives these operators too, but its `sqrt` and
+//! `min`/`max` are not documented as lane-wise IEEE operations on every target,
+//! and the bitwise promise above rests on them.
+
+use std::ops::{Add, Div, Mul, Neg, Sub};
+
+/// The arithmetic a kernel written once for one element or four needs.
+pub trait Real:
+    Copy
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Div<Output = Self>
+    + Neg<Output = Self>
+{
+    /// How many elements one value carries.
+    const LANES: usize;
+    /// The same value in every lane.
+    fn splat(v: f64) -> Self;
+    /// Lane `i`.
+    fn lane(self, i: usize) -> f64;
+    /// A value built lane by lane.
+    fn from_fn(f: impl FnMut(usize) -> f64) -> Self;
+    fn sqrt(self) -> Self;
+    fn abs(self) -> Self;
+    /// `f64::min` lane by lane.
+    fn min(self, o: Self) -> Self;
+    /// `f64::max` lane by lane.
+    fn max(self, o: Self) -> Self;
+    /// Whether `ok` holds in every lane.
+    #[inline(always)]
+    fn all(self, ok: impl Fn(f64) -> bool) -> bool {
+        (0..Self::LANES).all(|i| ok(self.lane(i)))
+    }
+}
+
+impl Real for f64 {
+    const LANES: usize = 1;
+    #[inline(always)]
+    fn splat(v: f64) -> f64 {
+        v
+    }
+    #[inline(always)]
+    fn lane(self, _: usize) -> f64 {
+        self
+    }
+    #[inline(always)]
+    fn from_fn(mut f: impl FnMut(usize) -> f64) -> f64 {
+        f(0)
+    }
+    #[inline(always)]
+    fn sqrt(self) -> f64 {
+        f64::sqrt(self)
+    }
+    #[inline(always)]
+    fn abs(self) -> f64 {
+        f64::abs(self)
+    }
+    #[inline(always)]
+    fn min(self, o: f64) -> f64 {
+        f64::min(self, o)
+    }
+    #[inline(always)]
+    fn max(self, o: f64) -> f64 {
+        f64::max(self, o)
+    }
+}
+
+/// Four elements' values, one per lane.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[repr(C, align(32))]
+pub struct F4(pub [f64; 4]);
+
+macro_rules! lane_op {
+    ($tr:ident, $f:ident, $op:tt) => {
+        impl $tr for F4 {
+            type Output = F4;
+            #[inline(always)]
+            fn $f(self, o: F4) -> F4 {
+                F4([
+                    self.0[0] $op o.0[0],
+                    self.0[1] $op o.0[1],
+                    self.0[2] $op o.0[2],
+                    self.0[3] $op o.0[3],
+                ])
+            }
+        }
+    };
+}
+lane_op!(Add, add, +);
+lane_op!(Sub, sub, -);
+lane_op!(Mul, mul, *);
+lane_op!(Div, div, /);
+
+impl Neg for F4 {
+    type Output = F4;
+    #[inline(always)]
+    fn neg(self) -> F4 {
+        F4(self.0.map(|a| -a))
+    }
+}
+
+impl Real for F4 {
+    const LANES: usize = 4;
+    #[inline(always)]
+    fn splat(v: f64) -> F4 {
+        F4([v; 4])
+    }
+    #[inline(always)]
+    fn lane(self, i: usize) -> f64 {
+        self.0[i]
+    }
+    #[inline(always)]
+    fn from_fn(mut f: impl FnMut(usize) -> f64) -> F4 {
+        F4([f(0), f(1), f(2), f(3)])
+    }
+    #[inline(always)]
+    fn sqrt(self) -> F4 {
+        F4(self.0.map(f64::sqrt))
+    }
+    #[inline(always)]
+    fn abs(self) -> F4 {
+        F4(self.0.map(f64::abs))
+    }
+    #[inline(always)]
+    fn min(self, o: F4) -> F4 {
+        let (a, b) = (self.0, o.0);
+        F4([
+            a[0].min(b[0]),
+            a[1].min(b[1]),
+            a[2].min(b[2]),
+            a[3].min(b[3]),
+        ])
+    }
+    #[inline(always)]
+    fn max(self, o: F4) -> F4 {
+        let (a, b) = (self.0, o.0);
+        F4([
+            a[0].max(b[0]),
+            a[1].max(b[1]),
+            a[2].max(b[2]),
+            a[3].max(b[3]),
+        ])
+    }
+}
+
+/// a·b for 3-vectors, summed x + y + z (as `vec3::dot`).
+#[inline(always)]
+pub fn dot<R: Real>(a: [R; 3], b: [R; 3]) -> R {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+/// a × b (as `vec3::cross`).
+#[inline(always)]
+pub fn cross<R: Real>(a: [R; 3], b: [R; 3]) -> [R; 3] {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+
+/// a − b.
+#[inline(always)]
+pub fn sub<R: Real>(a: [R; 3], b: [R; 3]) -> [R; 3] {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
+/// a·s.
+#[inline(always)]
+pub fn scale<R: Real>(a: [R; 3], s: R) -> [R; 3] {
+    [a[0] * s, a[1] * s, a[2] * s]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every operator of F4 is the f64 operator lane by lane, special values included.
+    #[test]
+    fn lanes_are_the_scalar_operations() {
+        let a = F4([1.5, -0.0, f64::INFINITY, 3.0e-310]);
+        let b = F4([-2.25, 0.0, 7.0, f64::NAN]);
+        fn bits(x: F4) -> [u64; 4] {
+            x.0.map(f64::to_bits)
+        }
+        fn each(a: F4, b: F4, f: fn(f64, f64) -> f64) -> F4 {
+            F4([
+                f(a.0[0], b.0[0]),
+                f(a.0[1], b.0[1]),
+                f(a.0[2], b.0[2]),
+                f(a.0[3], b.0[3]),
+            ])
+        }
+        assert_eq!(bits(a + b), bits(each(a, b, |x, y| x + y)));
+        assert_eq!(bits(a - b), bits(each(a, b, |x, y| x - y)));
+        assert_eq!(bits(a * b), bits(each(a, b, |x, y| x * y)));
+        assert_eq!(bits(a / b), bits(each(a, b, |x, y| x / y)));
+        assert_eq!(bits(Real::min(a, b)), bits(each(a, b, f64::min)));
+        assert_eq!(bits(Real::max(a, b)), bits(each(a, b, f64::max)));
+        assert_eq!(bits(-a), a.0.map(|x| (-x).to_bits()));
+        assert_eq!(bits(Real::sqrt(a)), a.0.map(|x| x.sqrt().to_bits()));
+        assert_eq!(bits(Real::abs(b)), b.0.map(|x| x.abs().to_bits()));
+        assert!(F4([1.0; 4]).all(|x| x > 0.0));
+        assert!(!a.all(|x| x > 0.0));
+    }
+}
