@@ -948,6 +948,91 @@ struct Points<'a> {
     ep0: [f64; MAX_IP],
 }
 
+/// Sums over an element's points per unit thickness: Σ w_N σ (membrane),
+/// Σ w_M σ (bending), Σ w_N τ (shear zx, yz).
+#[derive(Clone, Copy, Debug)]
+struct Sums<R = f64> {
+    n: [R; 3],
+    m: [R; 3],
+    q: [R; 2],
+}
+
+impl<R: Real> Sums<R> {
+    #[inline(always)]
+    fn zero() -> Sums<R> {
+        let z = R::splat(0.0);
+        Sums {
+            n: [z; 3],
+            m: [z; 3],
+            q: [z; 2],
+        }
+    }
+    /// Adds point k's in-plane stress `s` and shears `zx`, `yz`.
+    #[inline(always)]
+    fn add(&mut self, sec: &ShellSection, k: usize, s: [R; 3], zx: R, yz: R) {
+        let (wm, wb) = (R::splat(sec.w_mem[k]), R::splat(sec.w_bend[k]));
+        for c in 0..3 {
+            self.n[c] = self.n[c] + wm * s[c];
+            self.m[c] = self.m[c] + wb * s[c];
+        }
+        self.q[0] = self.q[0] + wm * zx;
+        self.q[1] = self.q[1] + wm * yz;
+    }
+}
+
+/// The work of the resultants over the step per unit area,
+/// ½Δt(t(N̄:d) + t²(M̄:κ) + t(Q̄·γ)) with the old and new sums (conjugate to
+/// the forces).
+#[inline(always)]
+fn resultant_work<R: Real>(t: R, old: &Sums<R>, new: &Sums<R>, r: &Rates<R>, dt: f64) -> R {
+    let (no, nr, mo, mr, qo, qr) = (old.n, new.n, old.m, new.m, old.q, new.q);
+    let (d_m, d_k) = (r.d_m, r.d_k);
+    R::splat(0.5)
+        * R::splat(dt)
+        * (t * ((no[0] + nr[0]) * d_m[0] + (no[1] + nr[1]) * d_m[1] + (no[2] + nr[2]) * d_m[2])
+            + t * t
+                * ((mo[0] + mr[0]) * d_k[0] + (mo[1] + mr[1]) * d_k[1] + (mo[2] + mr[2]) * d_k[2])
+            + t * ((qo[0] + qr[0]) * r.gxz + (qo[1] + qr[1]) * r.gyz))
+}
+
+/// A stored point stress [σxx, σyy, σxy, σyz, σzx] turned to this step's
+/// frame by ψ, with the elastic transverse shear increments `dg_yz`,
+/// `dg_zx` (already times G·k); returns the turned old stress and the new slot.
+#[inline(always)]
+fn turn_slot<R: Real>(s: [R; 5], rot: Rot<R>, dg_yz: R, dg_zx: R) -> ([R; 3], R, R, [R; 5]) {
+    let o = rot.stress([s[0], s[1], s[2]]);
+    let (ozx, oyz) = rot.vector(s[4], s[3]);
+    (o, ozx, oyz, [o[0], o[1], o[2], oyz + dg_yz, ozx + dg_zx])
+}
+
+/// The element's filtered strain rate (Johnson-Cook rate term, failure
+/// models) and its law at this step's rate and temperature.
+fn rate_and_law<'a>(
+    sec: &'a ShellSection,
+    st: &mut Shell4State,
+    r: &Rates,
+    dt: f64,
+    area_m: f64,
+) -> (PointLaw<'a>, f64) {
+    let (mat, kc) = (&sec.material, &sec.k);
+    let (d_m, d_k) = (r.d_m, r.d_k);
+    let t = st.thick;
+    if dt > 0.0 && (kc.rate || sec.failure.is_some()) {
+        let (a, b, g) = (d_m[0], d_m[1], d_m[2]);
+        let em = a * a + b * b + a * b + 0.25 * g * g;
+        let (a, b, g) = (d_k[0], d_k[1], d_k[2]);
+        let ek = a * a + b * b + a * b + 0.25 * g * g;
+        let raw = (4.0 / 3.0 * em + t * t / 9.0 * ek).sqrt();
+        st.eps_dot = mat.filter_strain_rate(st.eps_dot, raw, dt);
+    }
+    let temp = if kc.thermal {
+        mat.temperature(st.eint / (area_m * t))
+    } else {
+        mat.reference_temperature()
+    };
+    (mat.at(st.eps_dot, temp), temp)
+}
+
 /// The points of one element over the step (scalar: laws branch point by
 /// point): strain rate filter, old stresses turned by ψ, the laws through
 /// [`update_slots`], the work of the resultants and LAW27's membrane
@@ -965,47 +1050,20 @@ fn points<'a>(
     area_e: f64,
 ) -> Points<'a> {
     let (mat, kc, n_ip) = (&sec.material, &sec.k, sec.n_ip);
-    let (d_m, d_k, gxz, gyz, rot_old) = (r.d_m, r.d_k, r.gxz, r.gyz, r.rot_old);
+    let (d_m, d_k, rot_old) = (r.d_m, r.d_k, r.rot_old);
     let t = st.thick;
-    if dt > 0.0 && (kc.rate || sec.failure.is_some()) {
-        let (a, b, g) = (d_m[0], d_m[1], d_m[2]);
-        let em = a * a + b * b + a * b + 0.25 * g * g;
-        let (a, b, g) = (d_k[0], d_k[1], d_k[2]);
-        let ek = a * a + b * b + a * b + 0.25 * g * g;
-        let raw = (4.0 / 3.0 * em + t * t / 9.0 * ek).sqrt();
-        st.eps_dot = mat.filter_strain_rate(st.eps_dot, raw, dt);
-    }
+    let (law, temp) = rate_and_law(sec, st, r, dt, area_m);
 
     // ---- stress update at the points ------------------------------------------
-    let temp = if kc.thermal {
-        mat.temperature(st.eint / (area_m * t))
-    } else {
-        mat.reference_temperature()
-    };
-    let law = mat.at(st.eps_dot, temp);
-    let gs = kc.gs;
-    let (dgzx, dgyz) = (gxz * dt, gyz * dt);
-    // New and old (turned) resultants per unit thickness: Σ w_N σ, Σ w_M σ, Σ w_N τ.
-    let mut nr = [0.0; 3];
-    let mut mr = [0.0; 3];
-    let mut qr = [0.0; 2];
-    let mut no = [0.0; 3];
-    let mut mo = [0.0; 3];
-    let mut qo = [0.0; 2];
+    let (dg_zx, dg_yz) = (kc.gs * (r.gxz * dt), kc.gs * (r.gyz * dt));
+    let mut old = Sums::zero();
     let mut ep0 = [0.0; MAX_IP];
     let (dwp, dezz, deleted) = if dt > 0.0 {
         // Old stresses turned to this step's frame; transverse shear elastic.
         for (k, s) in sig.iter_mut().enumerate() {
-            let (wm, wb) = (sec.w_mem[k], sec.w_bend[k]);
-            let o = rot_old.stress([s[0], s[1], s[2]]);
-            let (ozx, oyz) = rot_old.vector(s[4], s[3]);
-            for c in 0..3 {
-                no[c] += wm * o[c];
-                mo[c] += wb * o[c];
-            }
-            qo[0] += wm * ozx;
-            qo[1] += wm * oyz;
-            *s = [o[0], o[1], o[2], oyz + gs * dgyz, ozx + gs * dgzx];
+            let (o, ozx, oyz, new) = turn_slot(*s, rot_old, dg_yz, dg_zx);
+            old.add(sec, k, o, ozx, oyz);
+            *s = new;
         }
         ep0[..n_ip].copy_from_slice(eps_p);
         if sec.material.brittle().is_some() {
@@ -1043,19 +1101,14 @@ fn points<'a>(
         let deleted = failed == n_ip || (failed > 0 && mat.deletes_at_first_failed_point());
         (0.0, 0.0, deleted)
     };
+    let mut new = Sums::zero();
     for (k, s) in sig.iter().enumerate() {
-        let (wm, wb) = (sec.w_mem[k], sec.w_bend[k]);
-        for c in 0..3 {
-            nr[c] += wm * s[c];
-            mr[c] += wb * s[c];
-        }
-        qr[0] += wm * s[4];
-        qr[1] += wm * s[3];
+        new.add(sec, k, [s[0], s[1], s[2]], s[4], s[3]);
     }
     let mut out = Points {
-        nr,
-        mr,
-        q: qr,
+        nr: new.n,
+        mr: new.m,
+        q: new.q,
         dezz,
         deleted,
         d_eint: 0.0,
@@ -1063,19 +1116,8 @@ fn points<'a>(
         law,
         ep0,
     };
-    // Work of the resultants over the step, A(N̄:Δε + M̄:Δκ + Q̄·Δγ) (conjugate to the forces).
     if dt > 0.0 {
-        let de = 0.5
-            * dt
-            * (t * ((no[0] + nr[0]) * d_m[0]
-                + (no[1] + nr[1]) * d_m[1]
-                + (no[2] + nr[2]) * d_m[2])
-                + t * t
-                    * ((mo[0] + mr[0]) * d_k[0]
-                        + (mo[1] + mr[1]) * d_k[1]
-                        + (mo[2] + mr[2]) * d_k[2])
-                + t * ((qo[0] + qr[0]) * gxz + (qo[1] + qr[1]) * gyz));
-        out.d_eint = de * area_m;
+        out.d_eint = resultant_work(t, &old, &new, r, dt) * area_m;
         out.d_eplas = dwp * area_m * t;
         st.eint += out.d_eint;
         st.eplas += out.d_eplas;
@@ -1106,7 +1148,7 @@ fn points<'a>(
     // Resultants per unit length at x^{n+1}.
     out.nr = scale(out.nr, t);
     out.mr = scale(out.mr, t * t);
-    out.q = [qr[0] * t, qr[1] * t];
+    out.q = [new.q[0] * t, new.q[1] * t];
     out
 }
 

@@ -66,40 +66,23 @@ pub fn shell4_step4(
     let dt_el = char_length(sec, &ge, false) / F4::splat(kc.c) * F4::splat(sec.viscmx());
     let orth = sec.ishell != 2;
     let r = Rates::new(&gm, &ge, &v, &vr, dt, orth);
-    let n = sec.n_ip;
     let t = F4::from_fn(|l| st[l].thick);
     let zero = F4::splat(0.0);
-    let (mut nr, mut mr, mut q) = ([zero; 3], [zero; 3], [zero; 2]);
-    let mut dezz = [0.0; 4];
+    let p = match points4(sec, st, sig, eps_p, nip, &r, dt, gm.area) {
+        Some(p) => p,
+        None => points_one_by_one(sec, st, sig, eps_p, dmg, nip, &r, dt, &gm, &ge),
+    };
     let mut out = [Shell4Out::default(); 4];
-    for l in 0..4 {
-        let pts = l * nip..l * nip + n;
-        let p = points(
-            sec,
-            &mut st[l],
-            &mut sig[pts.clone()],
-            &mut eps_p[pts.clone()],
-            &mut dmg[pts],
-            &r.lane(l),
-            dt,
-            gm.area.lane(l),
-            ge.area.lane(l),
-        );
-        for c in 0..3 {
-            nr[c].0[l] = p.nr[c];
-            mr[c].0[l] = p.mr[c];
-        }
-        q[0].0[l] = p.q[0];
-        q[1].0[l] = p.q[1];
-        dezz[l] = p.dezz;
-        out[l] = Shell4Out {
+    for (l, o) in out.iter_mut().enumerate() {
+        *o = Shell4Out {
             dt: dt_el.lane(l),
-            d_eint: p.d_eint,
-            d_eplas: p.d_eplas,
-            failed: p.deleted,
+            d_eint: p.d_eint[l],
+            d_eplas: p.d_eplas[l],
+            failed: p.deleted[l],
             ..Default::default()
         };
     }
+    let (nr, mr, q, dezz) = (p.nr, p.mr, p.q, p.dezz);
     let mut hg = [zero; N_HG];
     for (c, h) in hg.iter_mut().enumerate() {
         *h = F4::from_fn(|l| st[l].hourglass[c]);
@@ -127,6 +110,57 @@ pub fn shell4_step4(
     }
     Some(out)
 }
+
+/// [`points`] of each element in turn, gathered into lanes.
+#[allow(clippy::too_many_arguments)]
+fn points_one_by_one(
+    sec: &ShellSection,
+    st: &mut [Shell4State],
+    sig: &mut [[f64; 5]],
+    eps_p: &mut [f64],
+    dmg: &mut [PointHistory],
+    nip: usize,
+    r: &Rates<F4>,
+    dt: f64,
+    gm: &Geom<F4>,
+    ge: &Geom<F4>,
+) -> Points4 {
+    let zero = F4::splat(0.0);
+    let mut p4 = Points4 {
+        nr: [zero; 3],
+        mr: [zero; 3],
+        q: [zero; 2],
+        dezz: [0.0; 4],
+        deleted: [false; 4],
+        d_eint: [0.0; 4],
+        d_eplas: [0.0; 4],
+    };
+    for l in 0..4 {
+        let pts = l * nip..l * nip + sec.n_ip;
+        let (am, ae) = (gm.area.lane(l), ge.area.lane(l));
+        let (sg, ep, dm) = (
+            &mut sig[pts.clone()],
+            &mut eps_p[pts.clone()],
+            &mut dmg[pts],
+        );
+        let p = points(sec, &mut st[l], sg, ep, dm, &r.lane(l), dt, am, ae);
+        for c in 0..3 {
+            p4.nr[c].0[l] = p.nr[c];
+            p4.mr[c].0[l] = p.mr[c];
+        }
+        p4.q[0].0[l] = p.q[0];
+        p4.q[1].0[l] = p.q[1];
+        p4.dezz[l] = p.dezz;
+        p4.deleted[l] = p.deleted;
+        p4.d_eint[l] = p.d_eint;
+        p4.d_eplas[l] = p.d_eplas;
+    }
+    p4
+}
+
+#[path = "shell4_batch_points.rs"]
+mod lane_points;
+use lane_points::{points4, Points4};
 
 #[cfg(test)]
 #[path = "shell4_batch_tests.rs"]

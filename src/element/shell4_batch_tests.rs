@@ -110,6 +110,19 @@ fn four_at_once_equal_one_by_one() {
     }
 }
 
+/// Sections whose points need more than the law (here global integration
+/// with Ilyushin's yield condition) take the points one element at a time
+/// inside the batch: still the same bits.
+#[test]
+fn sections_beyond_the_plain_law_are_the_same_too() {
+    let jc = jc_mat(|_| {});
+    for m in [elastic(), jc] {
+        let s = ShellSection::build(&resolved(1, 0, 0.1), &m, N0Rule::Global).unwrap();
+        assert!(s.global);
+        same_both_ways(&s, 30.0, 40);
+    }
+}
+
 #[test]
 fn a_deleted_lane_stays_deleted_and_the_others_go_on() {
     let m = jc_mat(|j| j.eps_p_max = 0.05);

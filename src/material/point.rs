@@ -77,7 +77,6 @@ impl PointLaw<'_> {
         deps: [f64; 3],
         iplas: i64,
     ) -> PlaneStressResult {
-        let (e, nu, g) = (self.e, self.nu, self.g);
         if self.has_failed(*eps_p) {
             *sig = [0.0; 3];
             return PlaneStressResult {
@@ -85,11 +84,46 @@ impl PointLaw<'_> {
                 ..Default::default()
             };
         }
+        let (e, nu, g) = (self.e, self.nu, self.g);
         let a11 = e / (1.0 - nu * nu);
         sig[0] += a11 * (deps[0] + nu * deps[1]);
         sig[1] += a11 * (nu * deps[0] + deps[1]);
         sig[2] += g * deps[2];
         let ezz_el = -nu * (deps[0] + deps[1]);
+        self.plane_stress_after_trial(sig, eps_p, ezz_el, iplas)
+    }
+
+    /// E, ν and G of the elastic trial (for kernels that form the trial
+    /// σ += C Δε of [`PointLaw::plane_stress`] for several elements at once).
+    #[inline]
+    pub fn elastic_constants(&self) -> (f64, f64, f64) {
+        (self.e, self.nu, self.g)
+    }
+
+    /// Whether a trial stress of von Mises square `svm2` is certainly
+    /// elastic without evaluating the flow curve: an elastic law, or below
+    /// the curve's lower bound (what [`PointLaw::plane_stress_after_trial`]
+    /// tests first).
+    #[inline]
+    pub fn surely_elastic(&self, svm2: f64) -> bool {
+        match self.hardening {
+            None => true,
+            Some(flow) => flow.elastic_bound().is_some_and(|y| svm2 <= y * y),
+        }
+    }
+
+    /// The rest of [`PointLaw::plane_stress`] once the elastic trial is in
+    /// `sig` (`ezz_el` = −ν(Δεxx + Δεyy), the point not failed): the return
+    /// map, the plastic work, Δε_zz and failure.
+    #[inline]
+    pub fn plane_stress_after_trial(
+        &self,
+        sig: &mut [f64; 3],
+        eps_p: &mut f64,
+        ezz_el: f64,
+        iplas: i64,
+    ) -> PlaneStressResult {
+        let (e, nu, g) = (self.e, self.nu, self.g);
         let Some(flow) = self.hardening else {
             return PlaneStressResult {
                 d_ezz: ezz_el / (1.0 - nu),
