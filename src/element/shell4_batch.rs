@@ -40,7 +40,7 @@ pub fn shell4_step4(
         let mut t = [[F4::splat(0.0); 3]; 4];
         for (i, ti) in t.iter_mut().enumerate() {
             for (k, tik) in ti.iter_mut().enumerate() {
-                *tik = F4([a[0][i][k], a[1][i][k], a[2][i][k], a[3][i][k]]);
+                *tik = F4::new([a[0][i][k], a[1][i][k], a[2][i][k], a[3][i][k]]);
             }
         }
         t
@@ -89,19 +89,24 @@ pub fn shell4_step4(
     }
     let (h, hg, d_ehg) = hourglass_visco(sec, &ge, t, &r, hg, dt);
     let (f, m) = corner_forces(&ge, orth, nr, mr, q, h);
+    let (hg, d_ehg) = (hg.map(F4::to_array), d_ehg.to_array());
+    let (f, m) = (
+        f.map(|c| c.map(F4::to_array)),
+        m.map(|c| c.map(F4::to_array)),
+    );
     for (l, (out, s)) in out.iter_mut().zip(st.iter_mut()).enumerate() {
         if out.failed {
             continue;
         }
         for c in 0..N_HG {
-            s.hourglass[c] = hg[c].0[l];
+            s.hourglass[c] = hg[c][l];
         }
-        out.d_ehg = d_ehg.0[l];
+        out.d_ehg = d_ehg[l];
         s.ehg += out.d_ehg;
         for i in 0..4 {
             for c in 0..3 {
-                out.f[i][c] = f[i][c].0[l];
-                out.m[i][c] = m[i][c].0[l];
+                out.f[i][c] = f[i][c][l];
+                out.m[i][c] = m[i][c][l];
             }
         }
         if sec.ithick == 1 && dt > 0.0 {
@@ -125,16 +130,9 @@ fn points_one_by_one(
     gm: &Geom<F4>,
     ge: &Geom<F4>,
 ) -> Points4 {
-    let zero = F4::splat(0.0);
-    let mut p4 = Points4 {
-        nr: [zero; 3],
-        mr: [zero; 3],
-        q: [zero; 2],
-        dezz: [0.0; 4],
-        deleted: [false; 4],
-        d_eint: [0.0; 4],
-        d_eplas: [0.0; 4],
-    };
+    let (mut nr, mut mr, mut q) = ([[0.0; 4]; 3], [[0.0; 4]; 3], [[0.0; 4]; 2]);
+    let (mut dezz, mut deleted) = ([0.0; 4], [false; 4]);
+    let (mut d_eint, mut d_eplas) = ([0.0; 4], [0.0; 4]);
     for l in 0..4 {
         let pts = l * nip..l * nip + sec.n_ip;
         let (am, ae) = (gm.area.lane(l), ge.area.lane(l));
@@ -145,17 +143,23 @@ fn points_one_by_one(
         );
         let p = points(sec, &mut st[l], sg, ep, dm, &r.lane(l), dt, am, ae);
         for c in 0..3 {
-            p4.nr[c].0[l] = p.nr[c];
-            p4.mr[c].0[l] = p.mr[c];
+            nr[c][l] = p.nr[c];
+            mr[c][l] = p.mr[c];
         }
-        p4.q[0].0[l] = p.q[0];
-        p4.q[1].0[l] = p.q[1];
-        p4.dezz[l] = p.dezz;
-        p4.deleted[l] = p.deleted;
-        p4.d_eint[l] = p.d_eint;
-        p4.d_eplas[l] = p.d_eplas;
+        q[0][l] = p.q[0];
+        q[1][l] = p.q[1];
+        (dezz[l], deleted[l]) = (p.dezz, p.deleted);
+        (d_eint[l], d_eplas[l]) = (p.d_eint, p.d_eplas);
     }
-    p4
+    Points4 {
+        nr: nr.map(F4::new),
+        mr: mr.map(F4::new),
+        q: q.map(F4::new),
+        dezz,
+        deleted,
+        d_eint,
+        d_eplas,
+    }
 }
 
 #[path = "shell4_batch_points.rs"]

@@ -79,36 +79,39 @@ pub(super) fn points4(
         let svm2 = tr[0] * tr[0] + tr[1] * tr[1] - tr[0] * tr[1] + F4::splat(3.0) * tr[2] * tr[2];
         let elastic_ezz = ezz_el / (one - nu);
         let (mut wp, mut ez) = ([0.0; 4], [0.0; 4]);
+        let (tr, turned) = (tr.map(F4::to_array), turned.map(F4::to_array));
+        let (svm2, elastic_ezz, ezz_el) =
+            (svm2.to_array(), elastic_ezz.to_array(), ezz_el.to_array());
         for l in 0..4 {
             let ep = &mut eps_p[slot(l)];
             let out = &mut sig[slot(l)];
             let law = &laws[l];
-            let mut s3 = [tr[0].0[l], tr[1].0[l], tr[2].0[l]];
+            let mut s3 = [tr[0][l], tr[1][l], tr[2][l]];
             let res = if law.has_failed(*ep) {
                 s3 = [0.0; 3];
                 PlaneStressResult {
                     failed: true,
                     ..Default::default()
                 }
-            } else if law.surely_elastic(svm2.0[l]) {
+            } else if law.surely_elastic(svm2[l]) {
                 PlaneStressResult {
-                    d_ezz: elastic_ezz.0[l],
+                    d_ezz: elastic_ezz[l],
                     ..Default::default()
                 }
             } else {
-                law.plane_stress_after_trial(&mut s3, ep, ezz_el.0[l], sec.iplas)
+                law.plane_stress_after_trial(&mut s3, ep, ezz_el[l], sec.iplas)
             };
             if res.failed {
                 *out = [0.0; 5];
                 nfailed[l] += 1;
             } else {
-                *out = [s3[0], s3[1], s3[2], turned[3].0[l], turned[4].0[l]];
+                *out = [s3[0], s3[1], s3[2], turned[3][l], turned[4][l]];
             }
             (wp[l], ez[l]) = (res.d_wplas, res.d_ezz);
         }
         let wm = F4::splat(sec.w_mem[k]);
-        dwp = dwp + wm * F4(wp);
-        dezz = dezz + wm * F4(ez);
+        dwp = dwp + wm * F4::new(wp);
+        dezz = dezz + wm * F4::new(ez);
     }
     for k in 0..n_ip {
         let s: [F4; 5] = std::array::from_fn(|c| F4::from_fn(|l| sig[l * nip + k][c]));
@@ -118,18 +121,19 @@ pub(super) fn points4(
     let d_eplas = dwp * area_m * t;
     let first = sec.material.deletes_at_first_failed_point();
     let deleted = nfailed.map(|n| n == n_ip || (n > 0 && first));
+    let (d_eint, d_eplas) = (d_eint.to_array(), d_eplas.to_array());
     for (l, s) in st.iter_mut().enumerate() {
-        s.eint += d_eint.0[l];
-        s.eplas += d_eplas.0[l];
+        s.eint += d_eint[l];
+        s.eplas += d_eplas[l];
         s.deleted |= deleted[l];
     }
     Some(Points4 {
         nr: new.n.map(|c| c * t),
         mr: new.m.map(|c| c * (t * t)),
         q: [new.q[0] * t, new.q[1] * t],
-        dezz: dezz.0,
+        dezz: dezz.to_array(),
         deleted,
-        d_eint: d_eint.0,
-        d_eplas: d_eplas.0,
+        d_eint,
+        d_eplas,
     })
 }
