@@ -446,6 +446,9 @@ fn one_pair<T: InterfaceType>(
     if ns.off_segs.binary_search(&m).is_ok() {
         return true;
     }
+    if surely_free(ty, v, k, m, ns, st) {
+        return true;
+    }
     let Some(pv) = pair_values(v, k, m) else {
         return true;
     };
@@ -481,6 +484,37 @@ fn one_pair<T: InterfaceType>(
             out.step = Some((d, v.it.id));
         }
     }
+    true
+}
+
+/// Whether pair (k, m) of a secondary node is beyond its type's reach
+/// ([`InterfaceType::free_beyond`]), from the positions alone: its memory
+/// then takes [`InterfaceType::when_free`], as the kernel would do. A pair
+/// whose nodes are not all on this rank is left to `pair_values`, which
+/// skips it the same way.
+fn surely_free<T: InterfaceType>(
+    ty: &T,
+    v: &PassView,
+    k: usize,
+    m: u32,
+    ns: &NodeState,
+    st: &mut PairState,
+) -> bool {
+    let sec = v.p.sec_side(k);
+    if sec.count != 1 || v.p.segs.is_empty() {
+        return false;
+    }
+    let Some(reach) = ty.free_beyond(v.it, v.p, k, m as usize, ns, st) else {
+        return false;
+    };
+    let s = sec.nodes[0] as usize;
+    let Some(xm) = seg_values(&v.p.segs[m as usize], v.avail, v.cx) else {
+        return false;
+    };
+    if !geo::beyond_reach(v.cx[s], &xm, v.p.is_tri(m as usize), reach) {
+        return false;
+    }
+    ty.when_free(st);
     true
 }
 

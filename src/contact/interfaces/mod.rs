@@ -453,6 +453,28 @@ pub trait InterfaceType: Sync {
     /// The pair kernel: the force of one pair, and its memory.
     fn pair(&self, c: &PairContext, ns: &mut NodeState, st: &mut PairState) -> PairOutcome;
 
+    /// A reach beyond which pair (k, m) of a secondary node is free whatever
+    /// the velocities: a node farther than it from the ball holding segment
+    /// `m`'s nodes makes [`Self::pair`] return `Free`, having done to the
+    /// pair's memory only [`Self::when_free`]. The pass then skips the pair
+    /// without gathering its velocities (most candidates of a sort are out
+    /// of reach at a given cycle). `None`: every pair goes to the kernel.
+    fn free_beyond(
+        &self,
+        _it: &Interface,
+        _p: &Pass,
+        _k: usize,
+        _m: usize,
+        _ns: &NodeState,
+        _st: &PairState,
+    ) -> Option<f64> {
+        None
+    }
+
+    /// What [`Self::pair`] does to the memory of a pair beyond
+    /// [`Self::free_beyond`]'s reach.
+    fn when_free(&self, _st: &mut PairState) {}
+
     /// Its time step contribution: the kinematic step of a pair (EQ.
     /// 8.8.5.1), `None` when the type does not limit it. (Every pair limits
     /// the nodal step through its tangent stiffness `PairForce::kt`.)

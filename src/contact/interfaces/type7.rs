@@ -284,6 +284,27 @@ impl InterfaceType for Type7 {
         Some(f.dt_kin)
     }
 
+    /// The pair's gap, where [`pair`]'s own reach test decides alone: not
+    /// tied, no Inacti 5/6 gap to relax.
+    fn free_beyond(
+        &self,
+        it: &Interface,
+        p: &Pass,
+        k: usize,
+        m: usize,
+        ns: &NodeState,
+        st: &PairState,
+    ) -> Option<f64> {
+        let relaxing = ns.gap0.binary_search_by_key(&(m as u32), |e| e.0).is_ok();
+        (st.tie.is_none() && !relaxing).then(|| it.pair_gap(p, k, m))
+    }
+
+    /// [`pair`] beyond reach: the friction memory cleared.
+    fn when_free(&self, st: &mut PairState) {
+        st.ft = [0.0; 3];
+        st.ff = [0.0; 3];
+    }
+
     /// Penetration g − d on both sides; Inacti and Fpenmax decide.
     fn initial_penetration(
         &self,
