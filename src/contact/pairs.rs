@@ -33,6 +33,23 @@ struct NodeOut {
     body_loads: Vec<(usize, NodeLoad)>,
 }
 
+impl NodeOut {
+    /// Nothing to hand on: no contribution, reaction, step or penetration,
+    /// and zero sums. The pass drops such nodes (most nodes, most cycles):
+    /// adding a zero to a sum that starts at +0 changes no bit of it.
+    fn is_nothing(&self) -> bool {
+        let su = &self.sums;
+        self.contribs.is_empty()
+            && self.body_loads.is_empty()
+            && self.step.is_none()
+            && self.pen_max == 0.0
+            && self.pen_max.is_sign_positive()
+            && su.pairs == 0
+            && su.energy == 0.0
+            && su.f_normal.iter().chain(&su.f_tangent).all(|&f| f == 0.0)
+    }
+}
+
 /// What every node of one pass reads.
 struct PassView<'a> {
     it: &'a Interface,
@@ -209,7 +226,8 @@ impl TypeVisitor for PassPairs<'_, '_> {
     }
 }
 
-/// The pairs of every node this rank owns in one pass, in node order.
+/// The pairs of every node this rank owns in one pass, in node order (nodes
+/// with nothing to hand on left out).
 fn pass_pairs<T: InterfaceType>(ty: &T, v: &PassView, run: &mut PassRun) -> Vec<NodeOut> {
     let PassRun {
         mine,
@@ -243,6 +261,7 @@ fn pass_pairs<T: InterfaceType>(ty: &T, v: &PassView, run: &mut PassRun) -> Vec<
             let segs = &cand.segs[cand.ptr[j]..cand.ptr[j + 1]];
             node_pairs(ty, v, removal, k as usize, segs, mem)
         })
+        .filter(|o| !o.is_nothing())
         .collect()
 }
 
