@@ -79,6 +79,7 @@ pub(super) fn points4(
         let svm2 = tr[0] * tr[0] + tr[1] * tr[1] - tr[0] * tr[1] + F4::splat(3.0) * tr[2] * tr[2];
         let elastic_ezz = ezz_el / (one - nu);
         let (mut wp, mut ez) = ([0.0; 4], [0.0; 4]);
+        let mut fin = [[0.0; 4]; 5];
         let (tr, turned) = (tr.map(F4::to_array), turned.map(F4::to_array));
         let (svm2, elastic_ezz, ezz_el) =
             (svm2.to_array(), elastic_ezz.to_array(), ezz_el.to_array());
@@ -107,15 +108,15 @@ pub(super) fn points4(
             } else {
                 *out = [s3[0], s3[1], s3[2], turned[3][l], turned[4][l]];
             }
+            (0..5).for_each(|c| fin[c][l] = out[c]);
             (wp[l], ez[l]) = (res.d_wplas, res.d_ezz);
         }
         let wm = F4::splat(sec.w_mem[k]);
         dwp = dwp + wm * F4::new(wp);
         dezz = dezz + wm * F4::new(ez);
-    }
-    for k in 0..n_ip {
-        let s: [F4; 5] = std::array::from_fn(|c| F4::from_fn(|l| sig[l * nip + k][c]));
-        new.add(sec, k, [s[0], s[1], s[2]], s[4], s[3]);
+        // The new sums point by point, in the order `points` takes them.
+        let fin = fin.map(F4::new);
+        new.add(sec, k, [fin[0], fin[1], fin[2]], fin[4], fin[3]);
     }
     let d_eint = resultant_work(t, &old, &new, r, dt) * area_m;
     let d_eplas = dwp * area_m * t;

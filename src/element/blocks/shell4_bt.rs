@@ -5,7 +5,7 @@ use super::common::{
     decode_state, gather, hourglass_of, settle_common, von_mises_shell, HourglassEnergy,
 };
 use super::sections::shell_sections;
-use super::shell_block::{shell_block, BatchFn, NodalStiffnessFn};
+use super::shell_block::{corner_slots, shell_block, BatchFn, NodalStiffnessFn};
 use super::{Block, BlockInput, ElemOut, ElemRow, ElemStep};
 use crate::domain::LocalElements;
 use crate::element::shell4::{self, Shell4State};

@@ -102,12 +102,7 @@ macro_rules! shell_block {
                                     step4(sec, &g(x), &g(v), &g(vr), dt, st, sig, eps, dmg, nip);
                                 if let Some(o) = o {
                                     for (i, o) in o.iter().enumerate() {
-                                        for k in 0..$nn {
-                                            c[$nn * i + k] = [
-                                                o.f[k][0], o.f[k][1], o.f[k][2], o.m[k][0],
-                                                o.m[k][1], o.m[k][2],
-                                            ];
-                                        }
+                                        corner_slots(&mut c[$nn * i..$nn * (i + 1)], &o.f, &o.m);
                                         out[i] = ElemStep {
                                             dt: o.dt,
                                             failed: o.failed,
@@ -143,12 +138,7 @@ macro_rules! shell_block {
                                 &mut eps[pts.clone()],
                                 &mut dmg[pts],
                             );
-                            for k in 0..$nn {
-                                c[k] = [
-                                    o.f[k][0], o.f[k][1], o.f[k][2], o.m[k][0], o.m[k][1],
-                                    o.m[k][2],
-                                ];
-                            }
+                            corner_slots(c, &o.f, &o.m);
                             out[i] = ElemStep {
                                 dt: o.dt,
                                 failed: o.failed,
@@ -286,6 +276,17 @@ pub(super) use shell_block;
 /// nodal time step: its section, corners and thickness.
 pub(super) type NodalStiffnessFn<const N: usize> =
     fn(&crate::element::shell4::ShellSection, &[[f64; 3]; N], f64) -> (f64, f64);
+
+/// An element's corner forces and moments into its contribution slots.
+pub(super) fn corner_slots<const N: usize>(
+    c: &mut [[f64; crate::element::SLOT]],
+    f: &[[f64; 3]; N],
+    m: &[[f64; 3]; N],
+) {
+    for k in 0..N {
+        c[k] = [f[k][0], f[k][1], f[k][2], m[k][0], m[k][1], m[k][2]];
+    }
+}
 
 /// A formulation's step of four elements of one section (corners, velocities,
 /// rotational velocities, Δt, their states and `nip`-strided points), or
