@@ -62,6 +62,7 @@ pub fn choose(
 pub fn apply(choice: ThreadChoice) -> Result<(), String> {
     rayon::ThreadPoolBuilder::new()
         .num_threads(choice.threads)
+        .use_current_thread()
         .build_global()
         .map_err(|e| format!("cannot start {} thread(s): {e}", choice.threads))?;
     let _ = CHOSEN.set(choice);

@@ -2,7 +2,10 @@
 //! contact took over the step, positions at n+1, the clock, and the check
 //! that the state stayed finite.
 
+use super::kinematics::NODE_CHUNK;
 use super::setup::{Ctx, State};
+use crate::parallel::ExactSum;
+use rayon::prelude::*;
 
 /// External work over the step [t^n, t^{n+1}], f^n·v^{n+½}·Δt^{n+½} (the
 /// whole step: with the kinetic energy at t^n, a constant load's work is
@@ -19,30 +22,23 @@ use super::setup::{Ctx, State};
 pub(super) fn work(cx: &Ctx, s: &mut State, dt_v: f64) {
     let mass = cx.mass.read().unwrap();
     let imposed = imposed_by_node(&mut s.imposed_before);
-    let before_of = |l: usize, k: usize| {
-        imposed
-            .binary_search_by_key(&(l as u32, k as u8), |e| (e.0, e.1))
-            .ok()
-            .map(|i| imposed[i].2)
+    let nodes = WorkNodes {
+        st: &*s,
+        mass: &mass,
+        owned: &cx.owned,
+        tied_tr: &cx.tied_tr,
+        in_body: &cx.in_body,
+        imposed: &imposed,
     };
-    for l in 0..cx.n {
-        if !cx.owned[l] {
-            continue;
-        }
-        for k in 0..3 {
-            s.w_ext.add(s.fext[l][k] * s.v[l][k] * s.dt);
-            s.w_ext.add(s.fext[l][3 + k] * s.vr[l][k] * s.dt);
-            let v = s.v[l][k];
-            let mean = if s.fixed[l][k] || mass[l] <= 0.0 || cx.tied_tr[l] || cx.in_body[l] {
-                v
-            } else if let Some(before) = before_of(l, k) {
-                0.5 * (before + v)
-            } else {
-                v - 0.5 * (s.fext[l][k] - s.fint[l][k] + s.fcont[l][k] + s.ftie[l][k]) / mass[l]
-                    * dt_v
-            };
-            s.e_contact.add(-s.fcont[l][k] * mean * dt_v);
-        }
+    // Exact sums: the chunks' sums merge to the bits of one loop's.
+    let n = cx.n;
+    let sums: Vec<[ExactSum; 2]> = (0..n.div_ceil(NODE_CHUNK))
+        .into_par_iter()
+        .map(|c| nodes.work(c * NODE_CHUNK..((c + 1) * NODE_CHUNK).min(n), dt_v))
+        .collect();
+    for [ext, contact] in &sums {
+        s.w_ext.merge(ext);
+        s.e_contact.merge(contact);
     }
     s.imposed_before = imposed;
     s.imposed_before.clear();
@@ -61,6 +57,52 @@ pub(super) fn work(cx: &Ctx, s: &mut State, dt_v: f64) {
     }
 }
 
+/// What the work of a cycle reads, node by node.
+struct WorkNodes<'a> {
+    st: &'a State,
+    mass: &'a [f64],
+    owned: &'a [bool],
+    tied_tr: &'a [bool],
+    in_body: &'a [bool],
+    imposed: &'a [(u32, u8, f64)],
+}
+
+impl WorkNodes<'_> {
+    /// The external work and the contact's energy of the owned nodes of
+    /// `range` over the step.
+    fn work(&self, range: std::ops::Range<usize>, dt_v: f64) -> [ExactSum; 2] {
+        let s = self.st;
+        let mut sums = [ExactSum::default(), ExactSum::default()];
+        for l in range.filter(|&l| self.owned[l]) {
+            for k in 0..3 {
+                sums[0].add(s.fext[l][k] * s.v[l][k] * s.dt);
+                sums[0].add(s.fext[l][3 + k] * s.vr[l][k] * s.dt);
+                let v = s.v[l][k];
+                let m = self.mass[l];
+                let mean = if s.fixed[l][k] || m <= 0.0 || self.tied_tr[l] || self.in_body[l] {
+                    v
+                } else if let Some(before) = self.imposed_before(l, k) {
+                    0.5 * (before + v)
+                } else {
+                    v - 0.5 * (s.fext[l][k] - s.fint[l][k] + s.fcont[l][k] + s.ftie[l][k]) / m
+                        * dt_v
+                };
+                sums[1].add(-s.fcont[l][k] * mean * dt_v);
+            }
+        }
+        sums
+    }
+
+    /// The velocity before the step of direction `k` of node `l`, where
+    /// this cycle imposed it.
+    fn imposed_before(&self, l: usize, k: usize) -> Option<f64> {
+        self.imposed
+            .binary_search_by_key(&(l as u32, k as u8), |e| (e.0, e.1))
+            .ok()
+            .map(|i| self.imposed[i].2)
+    }
+}
+
 /// This cycle's imposed directions sorted by (node, direction); where a
 /// direction was imposed twice, the last imposition's velocity before it.
 fn imposed_by_node(list: &mut Vec<(u32, u8, f64)>) -> Vec<(u32, u8, f64)> {
@@ -74,15 +116,19 @@ fn imposed_by_node(list: &mut Vec<(u32, u8, f64)>) -> Vec<(u32, u8, f64)> {
 /// Positions at n+1: nodes by their velocity, rigid-body main nodes at
 /// their body's centre, tied secondary nodes at their place on the moved segment.
 pub(super) fn positions(cx: &Ctx, s: &mut State) {
-    let dt = s.dt;
-    for l in 0..cx.n {
-        if cx.is_main[l] {
-            continue;
-        }
-        for k in 0..3 {
-            s.x[l][k] += dt * s.v[l][k];
-        }
-    }
+    let (dt, is_main) = (s.dt, &cx.is_main);
+    s.x.par_chunks_mut(NODE_CHUNK)
+        .zip(s.v.par_chunks(NODE_CHUNK))
+        .enumerate()
+        .for_each(|(c, (x, v))| {
+            for (i, (x, v)) in x.iter_mut().zip(v).enumerate() {
+                if !is_main[c * NODE_CHUNK + i] {
+                    for k in 0..3 {
+                        x[k] += dt * v[k];
+                    }
+                }
+            }
+        });
     for (b, lb) in cx.local_bodies.iter().enumerate() {
         if let Some(l) = lb.main_local {
             s.x[l as usize] = s.bodies[b].center;

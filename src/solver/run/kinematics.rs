@@ -4,9 +4,11 @@
 //! nodes follow their main nodes.
 
 use super::setup::{Ctx, State};
+use crate::element::SLOT;
 use crate::kinematics::rigid_body::NodeLoad;
 use crate::kinematics::rigid_wall::wall_velocity;
 use crate::output;
+use rayon::prelude::*;
 
 /// Every velocity phase of one cycle, with the velocity step `dt_v` =
 /// ½(Δt^{n−½}+Δt^{n+½}). Returns, on this rank, the lowest (node id, wall
@@ -64,38 +66,108 @@ fn tied_transfer(cx: &Ctx, s: &mut State) {
     }
 }
 
-/// Accelerations (damped where a /DAMP asks) and velocities at n+½.
+/// Nodes per chunk of the nodal loops a rank's threads share: large enough
+/// that a chunk costs far more than handing it to a thread.
+pub(super) const NODE_CHUNK: usize = 2048;
+
+/// What moves the nodes: forces of every kind, masses, inertias, fixities.
+#[derive(Clone, Copy)]
+struct Movers<'a> {
+    fext: &'a [[f64; SLOT]],
+    fint: &'a [[f64; SLOT]],
+    fcont: &'a [[f64; 3]],
+    ftie: &'a [[f64; 6]],
+    fixed: &'a [[bool; 6]],
+    mass: &'a [f64],
+    inertia: &'a [f64],
+    is_main: &'a [bool],
+    tied_tr: &'a [bool],
+    tied_rot: &'a [bool],
+}
+
+/// The forces' and masses' fields of the state, borrowed one by one (so
+/// that the velocities can be borrowed beside them).
+macro_rules! movers {
+    ($cx:expr, $s:expr, $mass:expr, $inertia:expr) => {
+        Movers {
+            fext: &$s.fext,
+            fint: &$s.fint,
+            fcont: &$s.fcont,
+            ftie: &$s.ftie,
+            fixed: &$s.fixed,
+            mass: &$mass,
+            inertia: &$inertia,
+            is_main: &$cx.is_main,
+            tied_tr: &$cx.tied_tr,
+            tied_rot: &$cx.tied_rot,
+        }
+    };
+}
+
+/// Accelerations (damped where a /DAMP asks) and velocities at n+½: node
+/// by node, in chunks over the rank's threads (each node's update is its
+/// own, so the bits do not depend on the chunks); a model with /DAMP keeps
+/// one loop (its damping state and work go node by node).
 fn accelerate(cx: &Ctx, s: &mut State, dt_v: f64) {
     let (mass, inertia) = (cx.mass.read().unwrap(), cx.inertia.read().unwrap());
-    for l in 0..cx.n {
-        if cx.is_main[l] {
-            continue;
+    if cx.damp_of.iter().any(Option::is_some) {
+        for l in 0..cx.n {
+            if cx.is_main[l] {
+                continue;
+            }
+            let (m, mut a) = node_acceleration(&movers!(cx, s, mass, inertia), l);
+            if cx.damp_of[l].is_some() && !cx.in_body[l] {
+                let (v, w) = (s.v[l], s.vr[l]);
+                let v6 = [v[0], v[1], v[2], w[0], w[1], w[2]];
+                super::damping::damp(cx, s, l, &mut a, v6, m, dt_v);
+            }
+            advance_node(&mut s.v[l], &mut s.vr[l], m, a, dt_v);
         }
-        // Per degree of freedom: the mass that moves it (0: it does not move).
-        let mut m = [0.0; 6];
-        let mut a = [0.0; 6];
-        for k in 0..3 {
-            if mass[l] > 0.0 && !cx.tied_tr[l] && !s.fixed[l][k] {
-                m[k] = mass[l];
-                a[k] = (s.fext[l][k] - s.fint[l][k] + s.fcont[l][k] + s.ftie[l][k]) / mass[l];
+        return;
+    }
+    let mv = movers!(cx, s, mass, inertia);
+    s.v.par_chunks_mut(NODE_CHUNK)
+        .zip(s.vr.par_chunks_mut(NODE_CHUNK))
+        .enumerate()
+        .for_each(|(c, (v, vr))| {
+            for (i, (v, vr)) in v.iter_mut().zip(vr).enumerate() {
+                let l = c * NODE_CHUNK + i;
+                if !mv.is_main[l] {
+                    let (m, a) = node_acceleration(&mv, l);
+                    advance_node(v, vr, m, a, dt_v);
+                }
             }
-            if inertia[l] > 0.0 && !cx.tied_rot[l] && !s.fixed[l][3 + k] {
-                m[3 + k] = inertia[l];
-                a[3 + k] = (s.fext[l][3 + k] - s.fint[l][3 + k] + s.ftie[l][3 + k]) / inertia[l];
-            }
+        });
+}
+
+/// Per degree of freedom of local node `l`: the mass that moves it (0: it
+/// does not move) and its undamped acceleration.
+#[inline(always)]
+fn node_acceleration(mv: &Movers, l: usize) -> ([f64; 6], [f64; 6]) {
+    let mut m = [0.0; 6];
+    let mut a = [0.0; 6];
+    let (mass, inertia) = (mv.mass[l], mv.inertia[l]);
+    for k in 0..3 {
+        if mass > 0.0 && !mv.tied_tr[l] && !mv.fixed[l][k] {
+            m[k] = mass;
+            a[k] = (mv.fext[l][k] - mv.fint[l][k] + mv.fcont[l][k] + mv.ftie[l][k]) / mass;
         }
-        if cx.damp_of[l].is_some() && !cx.in_body[l] {
-            let (v, w) = (s.v[l], s.vr[l]);
-            let v6 = [v[0], v[1], v[2], w[0], w[1], w[2]];
-            super::damping::damp(cx, s, l, &mut a, v6, m, dt_v);
+        if inertia > 0.0 && !mv.tied_rot[l] && !mv.fixed[l][3 + k] {
+            m[3 + k] = inertia;
+            a[3 + k] = (mv.fext[l][3 + k] - mv.fint[l][3 + k] + mv.ftie[l][3 + k]) / inertia;
         }
-        for k in 0..3 {
-            if m[k] > 0.0 {
-                s.v[l][k] += a[k] * dt_v;
-            }
-            if m[3 + k] > 0.0 {
-                s.vr[l][k] += a[3 + k] * dt_v;
-            }
+    }
+    (m, a)
+}
+
+/// v^{n+½} = v^{n−½} + a·Δt for the degrees of freedom that move.
+fn advance_node(v: &mut [f64; 3], vr: &mut [f64; 3], m: [f64; 6], a: [f64; 6], dt_v: f64) {
+    for k in 0..3 {
+        if m[k] > 0.0 {
+            v[k] += a[k] * dt_v;
+        }
+        if m[3 + k] > 0.0 {
+            vr[k] += a[3 + k] * dt_v;
         }
     }
 }
@@ -436,22 +508,42 @@ fn wall_nodes(
     // impulses is external work (EXT-WORK), as Radioss counts it.
     let mass = cx.mass.read().unwrap();
     let free = wall.node.is_some() && cx.wall_driver[w].is_empty() && wall.card.mass > 0.0;
+    let (x, v, dt, tied) = (&s.x, &s.v, s.dt, &s.walls.tied[w]);
+    let (p, vw) = (s.walls.p[w], s.walls.v[w]);
+    let mass_of = &mass[..];
+    // The nodes the wall acts on (most nodes, most cycles: none), found
+    // over the rank's threads, then applied in the list's order.
+    let acted: Vec<(usize, [f64; 3], bool, [f64; 3])> = nodes
+        .par_iter()
+        .with_min_len(NODE_CHUNK)
+        .enumerate()
+        .filter_map(|(i, &l)| {
+            let l = l as usize;
+            let (nv, now_tied, f) = wall_velocity(
+                x[l],
+                v[l],
+                mass_of[l],
+                dt,
+                p,
+                wall.normal,
+                vw,
+                wall.card.slide,
+                wall.card.fric,
+                tied[i],
+            );
+            // The same bits (a zero keeps its sign; NaN != NaN: a
+            // non-finite velocity is kept as acted on).
+            let same = nv == v[l]
+                && nv.map(f64::to_bits) == v[l].map(f64::to_bits)
+                && now_tied == tied[i]
+                && f == [0.0; 3];
+            (!same).then_some((i, nv, now_tied, f))
+        })
+        .collect();
     let mut push: Vec<(u32, [f64; 3])> = Vec::new();
     let mut hit: Option<u64> = None;
-    for (i, &l) in nodes.iter().enumerate() {
-        let l = l as usize;
-        let (nv, now_tied, f) = wall_velocity(
-            s.x[l],
-            s.v[l],
-            mass[l],
-            s.dt,
-            s.walls.p[w],
-            wall.normal,
-            s.walls.v[w],
-            wall.card.slide,
-            wall.card.fric,
-            s.walls.tied[w][i],
-        );
+    for (i, nv, now_tied, f) in acted {
+        let l = nodes[i] as usize;
         let v = s.v[l];
         if cx.owned[l] && !free {
             s.wall_work.add(impulse_work(mass[l], (before[i], v), nv));
