@@ -7,6 +7,7 @@ use crate::contact::ContactStep;
 use crate::element::blocks::Block;
 use crate::error::RunError;
 use crate::model::ElementKind;
+use rayon::prelude::*;
 
 /// Largest growth of the step from one cycle to the next.
 const GROWTH: f64 = 1.1;
@@ -52,14 +53,33 @@ fn smallest_element_step(
     let (mut free, mut body) = (none, none);
     for (b, inside) in blocks.iter().zip(in_body) {
         let ki = b.kind().index();
-        let le = b.local();
-        for (e, st) in b.steps().iter().enumerate() {
-            if b.alive(e) {
-                let id = cx.g.element_ids[ki][le.global[e] as usize];
-                let best = if inside[e] { &mut body } else { &mut free };
-                *best = smaller(*best, (st.dt, ki, id));
-            }
-        }
+        let (global, ids) = (&b.local().global, &cx.g.element_ids[ki]);
+        // Over the rank's threads: `smaller` is a total order on the
+        // candidates (a NaN step never enters a fold started at `none`),
+        // so the chunks' minima give the one loop's.
+        let (f, bo) = b
+            .steps()
+            .par_iter()
+            .enumerate()
+            .with_min_len(4096)
+            .filter(|(e, _)| b.alive(*e))
+            .fold(
+                || (none, none),
+                |(f, bo), (e, st)| {
+                    let c = (st.dt, ki, ids[global[e] as usize]);
+                    if inside[e] {
+                        (f, smaller(bo, c))
+                    } else {
+                        (smaller(f, c), bo)
+                    }
+                },
+            )
+            .reduce(
+                || (none, none),
+                |a, c| (smaller(a.0, c.0), smaller(a.1, c.1)),
+            );
+        free = smaller(free, f);
+        body = smaller(body, bo);
     }
     (free, body)
 }
