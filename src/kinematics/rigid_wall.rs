@@ -9,6 +9,16 @@ type V3 = [f64; 3];
 
 use crate::vec3::dot;
 
+/// Whether a node not tied to the wall stays on its side over the step
+/// (the gap at the end of the step, at the relative velocity, is not
+/// negative): the wall leaves it as it is.
+#[inline]
+pub fn stays_off(x: V3, v: V3, dt: f64, p: V3, n: V3, vw: V3) -> bool {
+    let rel = [v[0] - vw[0], v[1] - vw[1], v[2] - vw[2]];
+    let gap = dot([x[0] - p[0], x[1] - p[1], x[2] - p[2]], n);
+    gap + dot(rel, n) * dt >= 0.0
+}
+
 /// The velocity a node leaves the step with and the wall force it exerted.
 /// `x`: position at the start of the step, `v`: velocity after the
 /// unconstrained update, `p`, `n`: a point of the wall and its unit normal
@@ -31,12 +41,11 @@ pub fn wall_velocity(
         let f = [0, 1, 2].map(|k| m * (v[k] - vw[k]) / dt);
         return (vw, true, f);
     }
-    let rel = [v[0] - vw[0], v[1] - vw[1], v[2] - vw[2]];
-    let gap = dot([x[0] - p[0], x[1] - p[1], x[2] - p[2]], n);
-    let gap_next = gap + dot(rel, n) * dt;
-    if gap_next >= 0.0 {
+    if stays_off(x, v, dt, p, n, vw) {
         return (v, false, [0.0; 3]);
     }
+    let rel = [v[0] - vw[0], v[1] - vw[1], v[2] - vw[2]];
+    let gap = dot([x[0] - p[0], x[1] - p[1], x[2] - p[2]], n);
     // Normal velocity that lands the node on the wall at the end of the step.
     let vn_new = -gap.max(0.0) / dt;
     let vn = dot(rel, n);
