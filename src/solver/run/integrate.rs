@@ -2,9 +2,8 @@
 //! contact took over the step, positions at n+1, the clock, and the check
 //! that the state stayed finite.
 
-use super::kinematics::NODE_CHUNK;
+use super::kinematics::{divided, NODE_CHUNK};
 use super::setup::{Ctx, State};
-use crate::element::lanes::F4;
 use crate::parallel::ExactSum;
 use rayon::prelude::*;
 
@@ -77,15 +76,8 @@ impl WorkNodes<'_> {
         for l in range.filter(|&l| self.owned[l]) {
             let m = self.mass[l];
             let (fe, fi, fc, ft) = (&s.fext[l], &s.fint[l], &s.fcont[l], &s.ftie[l]);
-            // Half the accelerations, ½F/m: the three divisions as one
-            // vector division (IEEE lane by lane, the same bits).
-            let half_acc = (F4::new([
-                0.5 * (fe[0] - fi[0] + fc[0] + ft[0]),
-                0.5 * (fe[1] - fi[1] + fc[1] + ft[1]),
-                0.5 * (fe[2] - fi[2] + fc[2] + ft[2]),
-                0.0,
-            ]) / F4::new([m; 4]))
-            .to_array();
+            // Half the accelerations, ½F/m.
+            let half_acc = divided([0, 1, 2].map(|k| 0.5 * (fe[k] - fi[k] + fc[k] + ft[k])), m);
             for k in 0..3 {
                 sums[0].add(s.fext[l][k] * s.v[l][k] * s.dt);
                 sums[0].add(s.fext[l][3 + k] * s.vr[l][k] * s.dt);

@@ -141,28 +141,23 @@ fn accelerate(cx: &Ctx, s: &mut State, dt_v: f64) {
         });
 }
 
+/// Three quotients n_k / m as one vector division: IEEE division lane by
+/// lane, the bits of the three scalar divisions (the nodal loops' time went
+/// largely to their divisions).
+#[inline(always)]
+pub(super) fn divided(n: [f64; 3], m: f64) -> [f64; 3] {
+    let q = (F4::new([n[0], n[1], n[2], 0.0]) / F4::new([m; 4])).to_array();
+    [q[0], q[1], q[2]]
+}
+
 /// Per degree of freedom of local node `l`: the mass that moves it (0: it
-/// does not move) and its undamped acceleration. The three translations'
-/// divisions are one vector division, the rotations' another: IEEE
-/// division lane by lane, the bits of the six scalar ones (a fourth of the
-/// node's time went to them).
+/// does not move) and its undamped acceleration.
 #[inline(always)]
 fn node_acceleration(mv: &Movers, l: usize) -> ([f64; 6], [f64; 6]) {
     let (mass, inertia) = (mv.mass[l], mv.inertia[l]);
     let (fe, fi, fc, ft) = (&mv.fext[l], &mv.fint[l], &mv.fcont[l], &mv.ftie[l]);
-    let tr = F4::new([
-        fe[0] - fi[0] + fc[0] + ft[0],
-        fe[1] - fi[1] + fc[1] + ft[1],
-        fe[2] - fi[2] + fc[2] + ft[2],
-        0.0,
-    ]) / F4::new([mass; 4]);
-    let rot = F4::new([
-        fe[3] - fi[3] + ft[3],
-        fe[4] - fi[4] + ft[4],
-        fe[5] - fi[5] + ft[5],
-        0.0,
-    ]) / F4::new([inertia; 4]);
-    let (tr, rot) = (tr.to_array(), rot.to_array());
+    let tr = divided([0, 1, 2].map(|k| fe[k] - fi[k] + fc[k] + ft[k]), mass);
+    let rot = divided([3, 4, 5].map(|k| fe[k] - fi[k] + ft[k]), inertia);
     let mut m = [0.0; 6];
     let mut a = [0.0; 6];
     for k in 0..3 {

@@ -196,3 +196,23 @@ fn contact_cycles_on_two_in_process_ranks_match_one_rank_bit_for_bit() {
     assert_eq!(one.len(), two.len());
     assert!(one == two, "the final states differ between 1 and 2 ranks");
 }
+
+#[test]
+fn the_nodal_loops_vector_division_gives_the_bits_of_three_scalar_ones() {
+    use super::kinematics::divided;
+    // Ordinary forces and masses, a denormal quotient, a huge one, a zero
+    // mass (infinite and NaN quotients): lane by lane as the scalar `/`.
+    let cases: [([f64; 3], f64); 5] = [
+        ([1.234_567_89e3, -9.876e-4, 3.0], 7.3e-6),
+        ([1e-300, -2.5e-310, 0.0], 3.0e7),
+        ([1e300, -1e300, 1.0], 1e-10),
+        ([1.0, -1.0, 0.0], 0.0),
+        ([f64::NAN, f64::INFINITY, -0.0], 2.0),
+    ];
+    for (n, m) in cases {
+        let q = divided(n, m);
+        for k in 0..3 {
+            assert_eq!(q[k].to_bits(), (n[k] / m).to_bits(), "{n:?} / {m}");
+        }
+    }
+}
