@@ -14,9 +14,16 @@ use crate::vec3::dot;
 /// negative): the wall leaves it as it is.
 #[inline]
 pub fn stays_off(x: V3, v: V3, dt: f64, p: V3, n: V3, vw: V3) -> bool {
+    approach(x, v, dt, p, n, vw).2 >= 0.0
+}
+
+/// A node's velocity relative to the wall, its gap now and its gap at the
+/// end of the step at that velocity.
+#[inline]
+fn approach(x: V3, v: V3, dt: f64, p: V3, n: V3, vw: V3) -> (V3, f64, f64) {
     let rel = [v[0] - vw[0], v[1] - vw[1], v[2] - vw[2]];
     let gap = dot([x[0] - p[0], x[1] - p[1], x[2] - p[2]], n);
-    gap + dot(rel, n) * dt >= 0.0
+    (rel, gap, gap + dot(rel, n) * dt)
 }
 
 /// The velocity a node leaves the step with and the wall force it exerted.
@@ -41,11 +48,10 @@ pub fn wall_velocity(
         let f = [0, 1, 2].map(|k| m * (v[k] - vw[k]) / dt);
         return (vw, true, f);
     }
-    if stays_off(x, v, dt, p, n, vw) {
+    let (rel, gap, gap_next) = approach(x, v, dt, p, n, vw);
+    if gap_next >= 0.0 {
         return (v, false, [0.0; 3]);
     }
-    let rel = [v[0] - vw[0], v[1] - vw[1], v[2] - vw[2]];
-    let gap = dot([x[0] - p[0], x[1] - p[1], x[2] - p[2]], n);
     // Normal velocity that lands the node on the wall at the end of the step.
     let vn_new = -gap.max(0.0) / dt;
     let vn = dot(rel, n);

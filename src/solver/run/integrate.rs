@@ -79,8 +79,8 @@ impl WorkNodes<'_> {
             // Half the accelerations, ½F/m.
             let half_acc = divided([0, 1, 2].map(|k| 0.5 * (fe[k] - fi[k] + fc[k] + ft[k])), m);
             for k in 0..3 {
-                sums[0].add(s.fext[l][k] * s.v[l][k] * s.dt);
-                sums[0].add(s.fext[l][3 + k] * s.vr[l][k] * s.dt);
+                sums[0].add(fe[k] * s.v[l][k] * s.dt);
+                sums[0].add(fe[3 + k] * s.vr[l][k] * s.dt);
                 let v = s.v[l][k];
                 let mean = if s.fixed[l][k] || m <= 0.0 || self.tied_tr[l] || self.in_body[l] {
                     v
@@ -89,7 +89,7 @@ impl WorkNodes<'_> {
                 } else {
                     v - half_acc[k] * dt_v
                 };
-                sums[1].add(-s.fcont[l][k] * mean * dt_v);
+                sums[1].add(-fc[k] * mean * dt_v);
             }
         }
         sums
