@@ -25,6 +25,18 @@ Units: kg, mm, ms (force kN, stress GPa). Steel shells: E = 210, nu = 0.3.
                Stif = 1): it penetrates to the depth where the curve's work
                equals its kinetic energy, then rebounds with all of it (one
                curve for loading and unloading: no loss without Visc).
+* type15_drop   a rigid sphere (/SURF/ELLIPS, R = 50 mm, on an /RBODY of 1 kg
+               with no elements) dropped at 5 mm/ms on a fixed plate of 2 x 2
+               shells of 400 mm through /INTER/TYPE15 (Stif = 0.05 kN/mm, no
+               friction), over the middle of one of a quad's four triangles,
+               no node near: the force Stif·[R/(R - p)]²·p stops it at the depth
+               where its work equals the kinetic energy, and it rebounds
+               with all of it (the same law unloads).
+* type15_roll   the sphere pressed on the shell by W = 0.05 kN at the
+               penetration where TYPE15's force balances W, sliding at
+               1 mm/ms without spin, Fric = 0.5: friction slows it and spins
+               it up until it rolls, at 5/7 of its speed after
+               2 v0 / (7 mu W / M).
 """
 import os
 import sys
@@ -263,7 +275,101 @@ def type14_slide(name="type14_slide"):
     return name, S, N
 
 
-DECKS = {"type6_rest": type6_rest, "type14_damped": type14_damped, "type14_slide": type14_slide, "type14_sphere": type14_sphere, "type6_drop": type6_drop,
+# type15_drop, type15_roll
+R15, M15, STIF15 = 50.0, 1.0, 0.05      # mm, kg, kN/mm
+V0_15 = 5.0                             # mm/ms: the drop
+W15, MU15, V0_15R, STIF15R = 0.05, 0.5, 1.0, 10.0  # kN, -, mm/ms, kN/mm: the roll
+FOOT15 = (-200.0, -333.0)               # over the bottom triangle (G, n1, n2) of the first quad
+
+
+def rest15(stif, w):
+    """p with stif (R/(R - p))^2 p = w (bisection)."""
+    lo, hi = 0.0, R15
+    for _ in range(200):
+        p = 0.5 * (lo + hi)
+        if stif * (R15 / (R15 - p)) ** 2 * p < w:
+            lo = p
+        else:
+            hi = p
+    return 0.5 * (lo + hi)
+
+
+def inter15(iid, title, surf_s, surf_m, stif, fric=0.0):
+    """/INTER/TYPE15 (src/deck/interfaces.rs read_type15)."""
+    return [f"/INTER/TYPE15/{iid}", title,
+            "#  surf_IDs  surf_IDm", i10(surf_s) + i10(surf_m),
+            "#               Stif                Fric", r20(stif) + r20(fric)]
+
+
+def sphere15(zc, x0, y0):
+    """The sphere's rigid body (main node 1000 at its centre, six frame
+    nodes 10 mm around it), its ellipsoid (/SURF/10) and groups 2 (frame)
+    and 3 (every sphere node)."""
+    frame = [(1001 + k, *[10.0 * s if i == k // 2 else 0.0 for i in range(3)]) for k, s in
+             enumerate([1, -1] * 3)]
+    frame = [(n, x + x0, y + y0, z + zc) for n, x, y, z in frame]
+    body = [(1000, x0, y0, zc)] + frame
+    j = 0.4 * M15 * R15 ** 2
+    S = ellipsoid(10, "sphere", (x0, y0, zc), (R15,) * 3)
+    S += [f"/RBODY/1", "sphere",
+          "#  node_ID   sens_ID   Skew_ID    Ispher                Mass  grnd_ID     Ikrem      ICoG   surf_ID",
+          i10(1000) + i10(0) * 3 + r20(M15) + i10(2) + i10(0) * 2 + i10(10),
+          "#                Jxx                 Jyy                 Jzz", r20(j) * 3,
+          "#                Jxy                 Jyz                 Jxz", r20(0) * 3]
+    return body, frame, S
+
+
+def plate15():
+    """A fixed plate of 2 x 2 shells of 400 mm (part 1, /SURF/1) and a small
+    soft pad far below (part 2) whose 5 mm shell sets the step (about
+    0.03 ms)."""
+    nodes, sh = plate(1, 1, (-400.0, -400.0), 800.0, 800.0, 2, 2, 0.0)
+    pad, pad_sh = plate(101, 5, (-2.5, -2.5), 5.0, 5.0, 1, 1, -500.0)
+    S = law1(1, "soft", e=0.21) + prop_shell(1, "t = 1 mm", 1.0)
+    S += part(1, "plate", 1, 1) + part(2, "pad", 1, 1)
+    S += shells_block(1, sh) + shells_block(2, pad_sh)
+    S += group(1, "plate and pad nodes", [n[0] for n in nodes + pad])
+    S += bcs(1, "plate and pad fixed", "111 111", 1) + surf_part(1, "plate", [1])
+    return nodes + pad, S
+
+
+def sphere_over_plate15(zc):
+    """The plate and the sphere, its centre at height zc over FOOT15: nodes,
+    parts, groups 1 (plate and pad), 2 (sphere frame), 3 (sphere nodes)."""
+    body, frame, SB = sphere15(zc, *FOOT15)
+    nodes, SP = plate15()
+    S = nodes_block(nodes + body) + SP + SB
+    return S + group(2, "sphere frame", [n[0] for n in frame]) + group(3, "sphere nodes", [n[0] for n in body])
+
+
+def type15_drop(name="type15_drop"):
+    S = header(name, "TYPE15: a rigid sphere dropped on a coarse shell", [
+        "A rigid sphere (an ellipsoid surface on a rigid body) dropped inside a large shell",
+        "through /INTER/TYPE15 (decks/make_rigid.py)."])
+    S += sphere_over_plate15(R15 + 1.0)
+    S += inivel(1, "drop", (0.0, 0.0, -V0_15), 3)
+    S += inter15(1, "sphere on shell", 1, 10, STIF15)
+    S += ["/END"]
+    N = engine(name, 30.0, -1, comments=["30 ms: impact at 0.2 ms, rebound by about 12 ms."])
+    return name, S, N
+
+
+def type15_roll(name="type15_roll"):
+    S = header(name, "TYPE15 Fric: a sliding sphere starts rolling", [
+        "A rigid sphere pressed on a shell slides without spin; /INTER/TYPE15's friction",
+        "brings it to rolling at 5/7 of its speed (decks/make_rigid.py)."])
+    S += sphere_over_plate15(R15 - rest15(STIF15R, W15))
+    S += group(4, "sphere main node", [1000])
+    S += inivel(1, "sliding", (V0_15R, 0.0, 0.0), 3)
+    S += funct(1, "constant", [(0.0, 1.0), (1000.0, 1.0)])
+    S += cload(1, "pressed down", 1, "Z", 4, -W15)
+    S += inter15(1, "sphere on shell", 1, 10, STIF15R, MU15)
+    S += ["/END"]
+    N = engine(name, 20.0, -20, comments=[f"20 ms: rolling from {2 * V0_15R / (7 * MU15 * W15 / M15):.4g} ms."])
+    return name, S, N
+
+
+DECKS = {"type15_drop": type15_drop, "type15_roll": type15_roll, "type6_rest": type6_rest, "type14_damped": type14_damped, "type14_slide": type14_slide, "type14_sphere": type14_sphere, "type6_drop": type6_drop,
          "type6_drop_ul": type6_drop_ul}
 
 if __name__ == "__main__":

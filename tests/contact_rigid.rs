@@ -59,15 +59,9 @@ fn rest_penetration() -> f64 {
     unreachable!("W is within the curve")
 }
 
-/// How far the energy balance, contact energy included, closes (%): the
-/// listing's final ENERGY BALANCE line.
+/// How far the energy balance, contact energy included, closes (%).
 fn energy_closes(r: &Run, name: &str) -> f64 {
-    let out = std::fs::read_to_string(r.dir.join(format!("{name}.out"))).unwrap();
-    out.lines()
-        .find(|l| l.contains("ENERGY BALANCE"))
-        .and_then(|l| l.split("closes to ").nth(1))
-        .and_then(|t| t.trim().trim_end_matches('%').parse::<f64>().ok())
-        .expect("ENERGY BALANCE line")
+    energy_balance(r, name).1
 }
 
 #[test]

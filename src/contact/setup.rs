@@ -536,7 +536,7 @@ fn add_secondary_segments(
     kw: &str,
 ) -> Result<(), String> {
     pass.self_contact = sides.self_contact;
-    for s in sides.sec_segs {
+    for s in sides.sec_segs.iter() {
         let d = segment_data(m, &surfaces.faces, s, ty, None).map_err(|e| format!("{kw}: {e}"))?;
         let x = s.map(|n| m.nodes.x[n as usize]);
         pass.sec_segs.push(s.map(|g| surfaces.cn(g)));

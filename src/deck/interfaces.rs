@@ -708,6 +708,30 @@ fn read_type14(cards: &mut Cards) -> InputResult<Type14> {
 }
 
 // ---------------------------------------------------------------------------
+// TYPE15
+// ---------------------------------------------------------------------------
+
+/// /INTER/TYPE15: Stif and Fric have no default (reference guide): a blank
+/// Stif is an error, a blank Fric no friction.
+fn read_type15(cards: &mut Cards) -> InputResult<Type15> {
+    let c1 = cards.next("the card with surf_IDs, surf_IDm")?;
+    let c2 = cards.next("the card with Stif, Fric")?;
+    let stif = real_ge0(&c2, 1, "Stif", 0.0, "the stiffness")?;
+    if stif <= 0.0 {
+        return Err(c2.err(
+            "Stif",
+            "blank or 0 in columns 1-20: expected the stiffness > 0 (it has no default)",
+        ));
+    }
+    Ok(Type15 {
+        surf_ids: c1.id(1, "surf_IDs")?,
+        surf_idm: c1.id(11, "surf_IDm")?,
+        stif,
+        fric: real_ge0(&c2, 21, "Fric", 0.0, "the friction coefficient")?,
+    })
+}
+
+// ---------------------------------------------------------------------------
 // TYPE25
 // ---------------------------------------------------------------------------
 
@@ -915,6 +939,7 @@ pub(super) fn parse_interface(block: &Block, deck: &mut Deck) -> InputResult<boo
         "TYPE7" => 7,
         "TYPE11" => 11,
         "TYPE14" => 14,
+        "TYPE15" => 15,
         "TYPE19" => 19,
         "TYPE24" => 24,
         "TYPE25" => 25,
@@ -935,6 +960,7 @@ pub(super) fn parse_interface(block: &Block, deck: &mut Deck) -> InputResult<boo
             InterfaceKind::Type11(read_type11(&mut cards, invers > 0 && invers < 110)?)
         }
         14 => InterfaceKind::Type14(read_type14(&mut cards)?),
+        15 => InterfaceKind::Type15(read_type15(&mut cards)?),
         19 => InterfaceKind::Type19(read_type19(&mut cards)?),
         24 => InterfaceKind::Type24(read_type24(&mut cards)?),
         _ => InterfaceKind::Type25(read_type25(&mut cards)?),

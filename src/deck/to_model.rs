@@ -639,12 +639,12 @@ fn read_interfaces(
                 }),
                 Side::Surface(sid) => {
                     let s = &surfaces[refs.surf_index.resolve(sid, loc, &kw, field)? as usize];
-                    let ellipsoid_side = c.type_number() == 14 && field == "surf_IDm";
+                    let ellipsoid_side = matches!(c.type_number(), 14 | 15) && field == "surf_IDm";
                     if s.ellipsoid.is_some() != ellipsoid_side {
                         let msg = if ellipsoid_side {
                             format!("/SURF/{sid} is not a /SURF/ELLIPS: expected a hyper-ellipsoid surface")
                         } else {
-                            format!("/SURF/ELLIPS/{sid} is a hyper-ellipsoid: expected a surface of segments (an ellipsoid is only the main side of /INTER/TYPE14)")
+                            format!("/SURF/ELLIPS/{sid} is a hyper-ellipsoid: expected a surface of segments (an ellipsoid is only the main side of /INTER/TYPE14 and /INTER/TYPE15)")
                         };
                         return Err(InputError::new(loc.clone(), &kw, field, msg));
                     }

@@ -141,7 +141,7 @@ impl RigidBodyState {
     }
 
     /// Advances the body over one step from the gathered node loads (any
-    /// order: they are sorted by node here), the main-node external force
+    /// order: they are sorted here, by node and then by value), the main-node external force
     /// `f_main` (e.g. gravity on the added MASS), the velocity step `dt_v`
     /// (from v^{n−1/2} to v^{n+1/2}) and the position step `dt_x`.
     pub fn advance(
@@ -159,7 +159,11 @@ impl RigidBodyState {
     /// The velocities at n+½ from the loads (see [`advance`](Self::advance));
     /// returns the resultant force and moment.
     pub fn accelerate(&mut self, loads: &mut [NodeLoad], f_main: V3, dt_v: f64) -> (V3, V3) {
-        loads.sort_by_key(|l| l.node);
+        // By node, then (loads keyed by the same node: the contact reactions
+        // of a node's several facets) by their bits: one order whatever
+        // order the ranks gathered them in.
+        let bits = |l: &NodeLoad| [l.x, l.f, l.m].map(|v| v.map(f64::to_bits));
+        loads.sort_by(|a, b| a.node.cmp(&b.node).then_with(|| bits(a).cmp(&bits(b))));
         let mut f = f_main;
         let mut t = [0.0; 3];
         for l in loads.iter() {

@@ -482,3 +482,22 @@ pub fn quadratic_fit(t: &[f64], y: &[f64]) -> [f64; 3] {
     }
     [a[0][3], a[1][3], a[2][3]]
 }
+
+/// The listing's final ENERGY BALANCE line of run `r` (listing NAME.out):
+/// (the Radioss-style ERROR %, and how far the balance with the contact
+/// energy included closes, %).
+pub fn energy_balance(r: &Run, name: &str) -> (f64, f64) {
+    let out = std::fs::read_to_string(r.dir.join(format!("{name}.out"))).unwrap();
+    let line = out
+        .lines()
+        .find(|l| l.contains("ENERGY BALANCE"))
+        .expect("ENERGY BALANCE line");
+    let number = |after: &str| -> f64 {
+        line.split(after)
+            .nth(1)
+            .and_then(|t| t.split('%').next())
+            .and_then(|t| t.trim().parse().ok())
+            .unwrap_or_else(|| panic!("{after} in {line}"))
+    };
+    (number("ERROR"), number("closes to "))
+}

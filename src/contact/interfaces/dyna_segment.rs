@@ -314,7 +314,7 @@ impl InterfaceType for DynaSegment {
             main: &i.main_segments,
             sec_edges: &[],
             main_edges: &[],
-            sec_segs,
+            sec_segs: std::borrow::Cow::Borrowed(sec_segs),
             self_contact,
         }]
     }

@@ -34,6 +34,7 @@
 //! Each kernel turns one measured pair into the force on the secondary side;
 //! the main side takes −N_i times it (EQ. 8.6.6.4–6).
 
+pub mod ellipsoid;
 pub mod layout;
 pub mod type2;
 
@@ -44,6 +45,7 @@ use crate::model;
 use crate::model::InterfaceKind;
 use layout::{Interface, Pass};
 use serde::{Deserialize, Serialize};
+use std::borrow::Cow;
 
 /// What a pair is made of: the entity on each side.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -54,8 +56,10 @@ pub enum CandidateKind {
     EdgeToEdge,
     /// A segment against a segment (LS-DYNA's SOFT = 2).
     SegmentToSegment,
-    /// A node against an ellipsoid (TYPE14, 15).
+    /// A node against an ellipsoid (TYPE14).
     NodeToEllipsoid,
+    /// A segment's triangle against an ellipsoid (TYPE15).
+    SegmentToEllipsoid,
 }
 
 /// How a type finds the candidates of its secondary nodes.
@@ -222,7 +226,7 @@ pub struct PassSides<'a> {
     pub main_edges: &'a [[u32; 2]],
     /// Segment-to-segment passes (empty otherwise): the secondary segments
     /// (global node indices) against `main`.
-    pub sec_segs: &'a [[u32; 4]],
+    pub sec_segs: Cow<'a, [[u32; 4]]>,
     /// Both sides are the same edges (self-contact): each pair of edges is
     /// computed once.
     pub self_contact: bool,
@@ -311,7 +315,7 @@ pub trait InterfaceType: Sync {
             main: &i.main_segments,
             sec_edges: &[],
             main_edges: &[],
-            sec_segs: &[],
+            sec_segs: Cow::Borrowed(&[]),
             self_contact: false,
         }]
     }
@@ -602,6 +606,7 @@ registry! {
     7 => type7::Type7,
     11 => type11::Type11,
     14 => type14::Type14,
+    15 => type15::Type15,
     24 => type24::Type24,
     25 => type25::Type25,
     // LS-DYNA's segment-based contact (SOFT = 2): keyword decks only, no
@@ -650,7 +655,10 @@ mod tests {
 
     #[test]
     fn every_registered_number_resolves_to_its_type_and_candidate_kind() {
-        assert_eq!(TypeOptions::NUMBERS, &[3, 5, 6, 7, 11, 14, 24, 25, 1002]);
+        assert_eq!(
+            TypeOptions::NUMBERS,
+            &[3, 5, 6, 7, 11, 14, 15, 24, 25, 1002]
+        );
         let expect = [
             (3, CandidateKind::NodeToSegment, CandidateSearch::Walk),
             (5, CandidateKind::NodeToSegment, CandidateSearch::Walk),
@@ -660,6 +668,11 @@ mod tests {
             (
                 14,
                 CandidateKind::NodeToEllipsoid,
+                CandidateSearch::Analytic,
+            ),
+            (
+                15,
+                CandidateKind::SegmentToEllipsoid,
                 CandidateSearch::Analytic,
             ),
             (24, CandidateKind::NodeToSegment, CandidateSearch::Sort),

@@ -43,6 +43,7 @@
 //! deactivation: edges that cross release the pair), damped by VDC % of
 //! critical, 2·√(K·M).
 
+use std::borrow::Cow;
 use super::{
     CandidateKind, CandidateSearch, CardCommon, InterfaceType, NodeState, PairContext, PairForce,
     PairOutcome, PairState, SurfaceSizes,
@@ -154,7 +155,7 @@ impl InterfaceType for Type11 {
             main: &[],
             sec_edges: &i.secondary_edges,
             main_edges: &i.main_edges,
-            sec_segs: &[],
+            sec_segs: Cow::Borrowed(&[]),
             self_contact,
         }]
     }

@@ -40,16 +40,16 @@
 //!   the body's, √(2M/K) with K the larger of the tangent and the secant of
 //!   Stif·f at p_max, the global minimum as an interface step.
 
+use super::ellipsoid::{self, distance, shape_value, Pose};
 use super::layout::{Interface, Pass};
 use super::{
     CandidateKind, CandidateSearch, CardCommon, InterfaceType, NodeState, PairContext, PairForce,
     PairOutcome, PairState, SurfaceSizes, NODE_SHAPE,
 };
-use crate::contact::friction::{self, FrictionLaw};
 use crate::contact::gap::GapRule;
 use crate::contact::geometry::{self as geo, V3};
 use crate::kinematics::function;
-use crate::kinematics::rigid_body::{mat_vec, transpose, RigidBodyState};
+use crate::kinematics::rigid_body::RigidBodyState;
 use crate::model::{self, Ellipsoid, Function, InterfaceKind};
 use serde::{Deserialize, Serialize};
 
@@ -84,88 +84,10 @@ pub struct Type14 {
     pub damping_of_force: Option<Function>,
 }
 
-/// Where the ellipsoid is: its centre and the rotation from its axes to
-/// the global ones (row-major).
-struct Pose {
-    center: V3,
-    rot: [[f64; 3]; 3],
-}
-
-/// F(ξ) = Σ|ξ_k/a_k|^n.
-pub fn shape_value(xi: V3, axes: V3, n: u32) -> f64 {
-    (0..3).map(|k| (xi[k] / axes[k]).abs().powi(n as i32)).sum()
-}
-
-/// ∇F/n = (sgn ξ_k·|ξ_k|^{n−1}/a_k^n)_k.
-pub fn shape_gradient(xi: V3, axes: V3, n: u32) -> V3 {
-    [0, 1, 2].map(|k| xi[k].signum() * xi[k].abs().powi(n as i32 - 1) / axes[k].powi(n as i32))
-}
-
-/// The signed distance of ξ (local) to the ellipsoid, d = (s − 1)·h with
-/// s = F^{1/n} and h = 1/|∇F(ξ/s)/n| (the distance from the centre to the
-/// tangent plane at ξ/s; Euler's identity ∇F·ξ = n·F), and the outward
-/// unit normal at ξ. `None` at the centre.
-pub fn distance(xi: V3, axes: V3, n: u32) -> Option<(f64, V3)> {
-    let f = shape_value(xi, axes, n);
-    if f <= 0.0 {
-        return None;
-    }
-    let s = f.powf(1.0 / n as f64);
-    let on = geo::scale(xi, 1.0 / s);
-    let h = 1.0 / geo::norm(shape_gradient(on, axes, n));
-    let g = shape_gradient(xi, axes, n);
-    let gn = geo::norm(g);
-    if gn == 0.0 {
-        return None;
-    }
-    Some(((s - 1.0) * h, geo::scale(g, 1.0 / gn)))
-}
-
 impl Type14 {
     fn pose(&self, bodies: &[RigidBodyState]) -> Option<Pose> {
         let e = self.ellipsoid.as_ref()?;
-        Some(match self.body.and_then(|b| bodies.get(b)) {
-            Some(b) => {
-                let r = mat_vec(&b.rot, self.offset);
-                Pose {
-                    center: geo::add(b.center, r),
-                    rot: b.rot,
-                }
-            }
-            None => Pose {
-                center: e.center,
-                rot: [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
-            },
-        })
-    }
-
-    /// Coulomb friction of one penetrated node (§8.9: "a local friction
-    /// coefficient is computed at each impacted node from the elastic
-    /// force there"; the reference engine's form, docs/notes/
-    /// type6_type14_type15_research.md §2.2): an elastic tangential spring
-    /// of the node's normal stiffness `k` on its slip relative to the
-    /// surface, capped at Fric·max(F_n, 0); only for a node already in
-    /// contact at the last cycle (the impact's cycle takes none). `law` is
-    /// the interface's (Fric, incremental); `st.ft` keeps the force,
-    /// `st.side` marks the contact.
-    #[allow(clippy::too_many_arguments)]
-    fn friction(
-        law: &FrictionLaw,
-        mu: f64,
-        k: f64,
-        f_n: f64,
-        v_rel: V3,
-        n: V3,
-        dt: f64,
-        st: &mut PairState,
-    ) -> V3 {
-        let impacted_before = st.side != 0;
-        st.side = 1;
-        if !law.active() || !impacted_before {
-            return [0.0; 3];
-        }
-        let vt = friction::tangential(v_rel, n);
-        friction::tangential_force(law, mu, f_n.max(0.0), vt, n, k, 0.0, dt, &mut st.ft)
+        Some(ellipsoid::pose(e, self.body, self.offset, bodies))
     }
 
     /// The normal damper's coefficient for stiffness `k`, mass `m`, normal
@@ -204,20 +126,7 @@ impl InterfaceType for Type14 {
         let InterfaceKind::Type14(t) = kind else {
             return None;
         };
-        let common = CardCommon {
-            stfac: 1.0,
-            friction: FrictionLaw {
-                fric: t.fric,
-                iform: 2,
-                ..FrictionLaw::none()
-            },
-            gap_card: t.gap,
-            tstart: 0.0,
-            tstop: model::contact::EP30,
-            ibc: [false; 3],
-            inacti: 0,
-            idel: 0,
-        };
+        let common = ellipsoid::card_common(t.fric, t.gap);
         let own = Type14 {
             surf_idm: t.surf_idm,
             fct_id_ld: t.fct_id_ld,
@@ -234,49 +143,25 @@ impl InterfaceType for Type14 {
     /// The ellipsoid (surf_IDm), the rigid body whose /RBODY names it
     /// (none: the ellipsoid stays where it is), and the load curve.
     fn bind(&mut self, m: &model::Model, i: &model::Interface, kw: &str) -> Result<(), String> {
-        let e = m
-            .surfaces
-            .iter()
-            .find(|s| s.id == self.surf_idm)
-            .and_then(|s| s.ellipsoid.clone())
-            .ok_or_else(|| {
-                format!(
-                    "{kw}, field surf_IDm: /SURF/{} is not a /SURF/ELLIPS",
-                    self.surf_idm
-                )
-            })?;
-        if e.skew_id != 0 {
-            return Err(format!(
-                "{kw}, field surf_IDm: /SURF/ELLIPS/{} with a skew system (skew_ID) \
-                 is not supported by the engine yet",
-                self.surf_idm
-            ));
-        }
+        let carried = ellipsoid::bind(m, self.surf_idm, kw)?;
         if self.stif <= 0.0 {
             return Err(format!(
                 "{kw}, field Stif: 0: expected the stiffness (with fct_IDld, the scale of its force) > 0"
             ));
         }
-        self.body = m
-            .rigid_bodies
-            .iter()
-            .position(|b| b.card.surf_id == self.surf_idm);
+        self.body = carried.body;
         if let Some(b) = self.body.map(|b| &m.rigid_bodies[b]) {
-            if let Some(n) = i
-                .secondary_nodes
-                .iter()
-                .find(|&&n| b.holds(n))
-            {
+            if let Some(n) = i.secondary_nodes.iter().find(|&&n| b.holds(n)) {
                 return Err(format!(
                     "{kw}, field grnd_IDs: node {} is on /RBODY/{}, which carries the \
                      ellipsoid: expected nodes off the ellipsoid's body",
                     m.nodes.ids[*n as usize], b.card.id
                 ));
             }
-            self.body_mass = b.mass;
-            self.offset = geo::sub(e.center, b.center);
         }
-        self.ellipsoid = Some(e);
+        self.body_mass = carried.body_mass;
+        self.offset = carried.offset;
+        self.ellipsoid = Some(carried.ellipsoid);
         if self.fct_id_ld != 0 {
             self.load = Some(super::bound_curve(m, self.fct_id_ld, kw, "fct_IDld")?);
         }
@@ -338,7 +223,7 @@ impl InterfaceType for Type14 {
         let (Some(pose), Some(e)) = (self.pose(c.bodies), self.ellipsoid.as_ref()) else {
             return PairOutcome::Free;
         };
-        let xi = mat_vec(&transpose(&pose.rot), geo::sub(c.xs, pose.center));
+        let xi = pose.local(c.xs);
         // Screen: the node within the ellipsoid grown by the gap.
         let a_min = e.axes.iter().copied().fold(f64::INFINITY, f64::min);
         let reach = (1.0 + self.gap / a_min).powi(e.n as i32);
@@ -355,8 +240,8 @@ impl InterfaceType for Type14 {
             }
             return PairOutcome::Free;
         }
-        let n = mat_vec(&pose.rot, n_local);
-        let point = geo::add(pose.center, mat_vec(&pose.rot, geo::sub(xi, geo::scale(n_local, d))));
+        let n = pose.turn(n_local);
+        let point = pose.global(geo::sub(xi, geo::scale(n_local, d)));
         let k = match (&self.load, c.scale) {
             (None, _) => self.stif,
             (Some(_), Some(fac)) => fac,
@@ -377,10 +262,7 @@ impl InterfaceType for Type14 {
         };
         // The normal damper against the surface's velocity at the node's
         // contact point (the body's motion there; a fixed ellipsoid's is 0).
-        let v_surface = match self.body.and_then(|b| c.bodies.get(b)) {
-            Some(b) => geo::add(b.v, geo::cross(b.omega, geo::sub(point, b.center))),
-            None => [0.0; 3],
-        };
+        let v_surface = ellipsoid::surface_velocity(self.body, c.bodies, point);
         let v_rel = geo::sub(c.vs, v_surface);
         let v_n = geo::dot(v_rel, n);
         let f_e = k * pen;
@@ -392,7 +274,7 @@ impl InterfaceType for Type14 {
             Some(g) => law.fric * function::eval(g, f_e),
             None => law.fric,
         };
-        let f_t = Self::friction(law, mu, k, f_n, v_rel, n, c.dt, st);
+        let f_t = ellipsoid::friction(law, mu, k, f_n, v_rel, n, c.dt, st);
         PairOutcome::Force(PairForce {
             fs: geo::add(geo::scale(n, f_n), f_t),
             sec_shape: NODE_SHAPE,
@@ -405,23 +287,5 @@ impl InterfaceType for Type14 {
             dir: n,
             point,
         })
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn the_distance_is_exact_on_a_sphere_and_on_the_axes_of_an_ellipsoid() {
-        let (d, n) = distance([3.0, 4.0, 0.0], [2.0; 3], 2).unwrap();
-        assert!((d - 3.0).abs() < 1e-14);
-        assert!((n[0] - 0.6).abs() < 1e-14 && (n[1] - 0.8).abs() < 1e-14);
-        let (d, n) = distance([0.0, 0.0, 1.5], [3.0, 2.0, 1.0], 2).unwrap();
-        assert!((d - 0.5).abs() < 1e-14, "{d}");
-        assert_eq!(n, [0.0, 0.0, 1.0]);
-        let (d, _) = distance([0.0, -1.0, 0.0], [3.0, 2.0, 1.0], 4).unwrap();
-        assert!((d + 1.0).abs() < 1e-14, "{d}");
-        assert!(distance([0.0; 3], [1.0; 3], 2).is_none());
     }
 }

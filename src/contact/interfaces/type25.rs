@@ -39,6 +39,7 @@
 //! - Time step: no kinematic step (the penalty is constant); K + C/Δt per
 //!   pair enters the nodal step (EQ. 8.8.5.2).
 
+use std::borrow::Cow;
 use super::layout::{Interface, Pass};
 use super::{
     CandidateKind, CandidateSearch, CardCommon, InterfaceType, NodeState, PairContext, PairForce,
@@ -153,7 +154,7 @@ impl InterfaceType for Type25 {
             main,
             sec_edges: &[],
             main_edges: &[],
-            sec_segs: &[],
+            sec_segs: Cow::Borrowed(&[]),
             self_contact: false,
         };
         if i.secondary_segments.is_empty() {

@@ -5,6 +5,7 @@
 //! series, K = s·K1·K2/(K1 + K2) (EQ. 8.5.3.1), K1 the stiffness of the
 //! secondary node's own surface and K2 the main segment's.
 
+use std::borrow::Cow;
 use super::type5;
 use super::{
     CandidateKind, CandidateSearch, CardCommon, InterfaceType, NodeState, PairContext, PairOutcome,
@@ -72,7 +73,7 @@ impl InterfaceType for Type3 {
                 main: &i.main_segments,
                 sec_edges: &[],
                 main_edges: &[],
-                sec_segs: &[],
+                sec_segs: Cow::Borrowed(&[]),
                 self_contact: false,
             },
             PassSides {
@@ -81,7 +82,7 @@ impl InterfaceType for Type3 {
                 main: &i.secondary_segments,
                 sec_edges: &[],
                 main_edges: &[],
-                sec_segs: &[],
+                sec_segs: Cow::Borrowed(&[]),
                 self_contact: false,
             },
         ]

@@ -5,6 +5,7 @@
 
 mod type11;
 mod type14;
+mod type15;
 mod type19;
 mod type2;
 mod type24;
@@ -16,6 +17,7 @@ mod type7;
 
 pub use type11::*;
 pub use type14::*;
+pub use type15::*;
 pub use type19::*;
 pub use type2::*;
 pub use type24::*;
@@ -63,6 +65,7 @@ pub enum InterfaceKind {
     Type7(Type7),
     Type11(Type11),
     Type14(Type14),
+    Type15(Type15),
     Type19(Type19),
     Type24(Type24),
     Type25(Type25),
@@ -83,7 +86,7 @@ pub enum Side {
 }
 
 impl InterfaceSpec {
-    /// 2, 3, 5, 6, 7, 11, 14, 19, 24 or 25.
+    /// 2, 3, 5, 6, 7, 11, 14, 15, 19, 24 or 25.
     pub fn type_number(&self) -> u32 {
         match self.kind {
             InterfaceKind::Type2(_) => 2,
@@ -93,6 +96,7 @@ impl InterfaceSpec {
             InterfaceKind::Type7(_) => 7,
             InterfaceKind::Type11(_) => 11,
             InterfaceKind::Type14(_) => 14,
+            InterfaceKind::Type15(_) => 15,
             InterfaceKind::Type19(_) => 19,
             InterfaceKind::Type24(_) => 24,
             InterfaceKind::Type25(_) => 25,
@@ -111,6 +115,7 @@ impl InterfaceSpec {
             InterfaceKind::Type7(_) => "general node to segment",
             InterfaceKind::Type11(_) => "edge to edge",
             InterfaceKind::Type14(_) => "nodes against a rigid hyper-ellipsoid",
+            InterfaceKind::Type15(_) => "segments against a rigid hyper-ellipsoid",
             InterfaceKind::Type19(_) => {
                 "general contact: node to surface both ways and edge to edge"
             }
@@ -137,6 +142,7 @@ impl InterfaceSpec {
             }
             InterfaceKind::Type11(t) => Side::Line(t.line_ids),
             InterfaceKind::Type14(t) => Side::NodeGroup(t.grnd_ids),
+            InterfaceKind::Type15(t) => Side::Surface(t.surf_ids),
             InterfaceKind::Type19(t) => Side::Surface(t.surfaces().0),
             InterfaceKind::Type24(_) | InterfaceKind::Type25(_) => {
                 let (s1, s2, grnd) = self.penalty_ids().unwrap_or_default();
@@ -156,6 +162,7 @@ impl InterfaceSpec {
         match &self.kind {
             InterfaceKind::Type3(_) | InterfaceKind::Type6(_) => ("surf_ID1", "surf_ID2"),
             InterfaceKind::Type11(_) => ("line_IDs", "line_IDm"),
+            InterfaceKind::Type15(_) => ("surf_IDs", "surf_IDm"),
             InterfaceKind::Type19(_) => ("surf_IDs", "surf_IDm"),
             InterfaceKind::Type24(_) | InterfaceKind::Type25(_) => {
                 match self.penalty_ids().unwrap_or_default() {
@@ -205,6 +212,7 @@ impl InterfaceSpec {
                 }
             }
             InterfaceKind::Type14(t) => Side::Surface(t.surf_idm),
+            InterfaceKind::Type15(t) => Side::Surface(t.surf_idm),
             InterfaceKind::Type19(t) => Side::Surface(t.surfaces().1),
             InterfaceKind::Type24(_) | InterfaceKind::Type25(_) => {
                 let (s1, s2, _) = self.penalty_ids().unwrap_or_default();

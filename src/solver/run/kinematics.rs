@@ -188,9 +188,10 @@ fn advance_node(v: &mut [f64; 3], vr: &mut [f64; 3], m: [f64; 6], a: [f64; 6], d
 /// This rank's owned loads of each rigid body: its members', then its main
 /// node's (a load on the main node acts on the body, as in Radioss; the main
 /// node sits at the centre, so its force adds no moment), then the
-/// reactions of the contacts on its analytic surfaces (TYPE14), keyed by
-/// their secondary nodes (a node's pairs are all computed by its owner, in
-/// interface order, so the gathered order does not depend on the ranks).
+/// reactions of the contacts on its analytic surfaces (TYPE14, TYPE15),
+/// keyed by their secondary node (a TYPE15 facet's: its first node); the
+/// body sorts them by key and value, so the order the ranks gather them
+/// in does not matter.
 fn rigid_body_loads(cx: &Ctx, s: &State) -> Vec<Vec<NodeLoad>> {
     let mut loads = own_body_loads(cx, s);
     for &(b, l) in &s.contact.body_loads {

@@ -1,0 +1,213 @@
+//! Hyper-ellipsoid to segment contact (theory manual §8.10, /INTER/TYPE15)
+//! on decks/make_rigid.py's type15_drop and type15_roll: a rigid sphere
+//! (/SURF/ELLIPS, R = 50 mm, on a 1 kg /RBODY) against a fixed plate of
+//! 400 mm shells, over the middle of one of a quad's four triangles with no
+//! node near.
+//!
+//! - Dropped at v0 = 5 mm/ms (type15_drop): the force
+//!   F(p) = Stif·[R/(R − p)]²·p stops it at the depth p* where
+//!   ∫₀^p* F = ½Mv0², the largest force is F(p*) within 1%; the same law
+//!   unloads, so it rebounds at v0 within 1%, and the energy closes.
+//! - TYPE14 (nodes) on the same plate misses it: the sphere falls through
+//!   between the nodes (the case TYPE15 exists for).
+//! - Pressed by W on the plate and sliding at v0 without spin, Fric μ
+//!   (type15_roll): while it slides the friction is μ·W (the ball's
+//!   reaction turns it), and it ends rolling at 5/7·v0, its rim speed ω·R
+//!   equal to its speed, within 1%; the energy lost to friction is the
+//!   2/7 of the kinetic energy the law predicts.
+//! - Identical on 1, 2 and 4 ranks (the plate's segments on several ranks)
+//!   and on 2 threads; a run stopped on 2 ranks in the middle of the
+//!   contact and restarted on 1 ends identically.
+//! - A blank Stif and an ellipsoid as surf_IDs are deck errors at their line.
+
+mod common;
+#[path = "contact_common/mod.rs"]
+mod contact_common;
+use contact_common::*;
+
+const R: f64 = 50.0;
+const M: f64 = 1.0;
+
+/// F(p) = Stif·[R/(R − p)]²·p (§8.10, D = R on a sphere).
+fn force(stif: f64, p: f64) -> f64 {
+    stif * (R / (R - p)).powi(2) * p
+}
+
+/// ∫₀^p F = Stif·R²·[p/(R − p) + ln((R − p)/R)].
+fn work(stif: f64, p: f64) -> f64 {
+    stif * R * R * (p / (R - p) + ((R - p) / R).ln())
+}
+
+/// The depth where the work of F is `e` (bisection: the work grows with p).
+fn depth_of(stif: f64, e: f64) -> f64 {
+    let (mut lo, mut hi) = (0.0, R);
+    for _ in 0..200 {
+        let p = 0.5 * (lo + hi);
+        if work(stif, p) < e {
+            lo = p;
+        } else {
+            hi = p;
+        }
+    }
+    0.5 * (lo + hi)
+}
+
+#[test]
+fn a_type15_sphere_stops_where_the_stiffening_law_takes_its_energy_and_rebounds() {
+    let (stif, v0) = (0.05, 5.0);
+    let r = run(
+        &deck("type15_drop"),
+        &scratch("type15_drop_1"),
+        &RunArgs::default(),
+    );
+    assert!(r.listing.normal_termination());
+    let p = depth_of(stif, 0.5 * M * v0 * v0);
+    // The law stiffens: the depth is well below the linear spring's.
+    let linear = (M * v0 * v0 / stif).sqrt();
+    assert!(p < 0.8 * linear, "{p} against {linear}");
+    let expect = force(stif, p);
+    let lines = r.listing.of(1);
+    let peak = lines.iter().map(|l| -l.normal[2]).fold(0.0, f64::max);
+    assert!(
+        (peak - expect).abs() < 0.01 * expect,
+        "peak force {peak}, expected {expect} at the depth {p}"
+    );
+    // One facet at a time: the contact stayed inside one triangle.
+    assert!(lines.iter().all(|l| l.pairs <= 1));
+    let v = r.final_state()[&1000][5];
+    assert!((v - v0).abs() < 0.01 * v0, "rebound {v}, expected {v0}");
+    assert_eq!(lines.last().unwrap().pairs, 0, "the sphere left the plate");
+    let closes = energy_balance(&r, "type15_drop").1;
+    assert!(closes.abs() < 1.0, "energy closes to {closes}%");
+}
+
+#[test]
+fn type14_on_the_same_plate_lets_the_sphere_fall_between_the_nodes() {
+    let dir = scratch("type15_as_type14");
+    // The TYPE15 block (header, title, two comment/data pairs) as a TYPE14
+    // of the plate's nodes (group 1) with the same stiffness.
+    let d = common::deck_variant("type15_drop", &dir, |i, lines| {
+        let at = lines.iter().position(|l| l.starts_with("/INTER/TYPE15"))?;
+        match i.checked_sub(at)? {
+            0 => Some("/INTER/TYPE14/1".into()),
+            3 => Some(format!("{:>10}{:>10}{:>10}", 1, 10, 0)),
+            5 => Some(format!("{:>20}", "0.05")),
+            _ => None,
+        }
+    });
+    let r = run(&d, &dir.join("run"), &RunArgs::default());
+    assert!(r.listing.normal_termination());
+    assert!(r.listing.of(1).iter().all(|l| l.pairs == 0));
+    let z = r.final_state()[&1000][2];
+    assert!(
+        z < -R,
+        "the sphere's centre at z = {z}: it fell through the plate"
+    );
+}
+
+#[test]
+fn a_sliding_sphere_is_turned_by_type15_friction_until_it_rolls_at_five_sevenths() {
+    let (w, mu, v0) = (0.05, 0.5, 1.0);
+    let r = run(
+        &deck("type15_roll"),
+        &scratch("type15_roll_1"),
+        &RunArgs::default(),
+    );
+    assert!(r.listing.normal_termination());
+    // Sliding until t* = 2·v0/(7·μ·g): the friction is μ·W.
+    let t_roll = 2.0 * v0 / (7.0 * mu * w / M);
+    let sliding: Vec<_> = r
+        .listing
+        .of(1)
+        .into_iter()
+        .filter(|l| l.t > 0.5 && l.t < 0.9 * t_roll)
+        .collect();
+    assert!(sliding.len() > 5);
+    for l in &sliding {
+        assert!(
+            (l.tangent[0] - mu * w).abs() < 0.01 * mu * w && (-l.normal[2] - w).abs() < 0.01 * w,
+            "t = {}: friction {:?}, normal {:?}",
+            l.t,
+            l.tangent,
+            l.normal
+        );
+    }
+    let s = r.final_state();
+    let (v, spin) = (s[&1000][3], r_spin(&r));
+    let rolling = 5.0 / 7.0 * v0;
+    assert!(
+        (v - rolling).abs() < 0.01 * rolling,
+        "v = {v}, expected {rolling}"
+    );
+    assert!(
+        (spin * R - rolling).abs() < 0.01 * rolling,
+        "rim speed {}, expected {rolling}",
+        spin * R
+    );
+    // Friction took 2/7 of the kinetic energy: the Radioss-style balance
+    // lists it as the error, the balance with contact energy closes.
+    let (error, closes) = energy_balance(&r, "type15_roll");
+    assert!((error + 100.0 * 2.0 / 7.0).abs() < 0.5, "ERROR {error}%");
+    assert!(closes.abs() < 0.5, "closes to {closes}%");
+}
+
+/// The sphere's spin about y at the end (its main node's rotational
+/// velocity, from the final-state CSV's vry column).
+fn r_spin(r: &Run) -> f64 {
+    let (head, rows) = read_csv(&r.dir.join("final_state.csv"));
+    let id = head.iter().position(|h| h == "id").unwrap();
+    let vry = head.iter().position(|h| h == "vry").unwrap();
+    rows.iter().find(|row| row[id] == 1000.0).unwrap()[vry]
+}
+
+#[test]
+fn type15_is_identical_on_1_2_4_ranks_and_2_threads_with_the_plate_on_several_ranks() {
+    let d = deck("type15_drop");
+    for np in [2, 4] {
+        let sec = interface_ranks(&d, np, 0).0.len();
+        assert!(
+            sec >= 2,
+            "{np} ranks: the plate's segments on {sec} rank(s)"
+        );
+    }
+    let one = run(&d, &scratch("type15_ranks_1"), &RunArgs::default());
+    assert_same_final_state_on_ranks_and_2_threads(&d, "type15_ranks", &one, &[2, 4]);
+}
+
+#[test]
+fn a_type15_run_restarted_on_another_rank_count_ends_identically() {
+    let d = deck("type15_roll");
+    let whole = run(&d, &scratch("type15_restart_whole"), &RunArgs::default());
+    // Cycle 200 is in the middle of the sliding (its friction memory travels).
+    assert_restart_2_to_1_ends_as(&d, "type15_restart_stop", 200, &whole);
+}
+
+#[test]
+fn a_blank_stiffness_and_an_ellipsoid_of_secondary_segments_are_deck_errors() {
+    let dir = scratch("type15_bad_stif");
+    let d = common::deck_variant("type15_drop", &dir, |i, lines| {
+        let at = lines.iter().position(|l| l.starts_with("/INTER/TYPE15"))?;
+        (i == at + 5).then(String::new)
+    });
+    let out = common::crashsim(&["check", d.to_str().unwrap()]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("type15_drop_0000.rad:") && err.contains("Stif") && err.contains("> 0"),
+        "{err}"
+    );
+    let dir = scratch("type15_bad_side");
+    let d = common::deck_variant("type15_drop", &dir, |i, lines| {
+        let at = lines.iter().position(|l| l.starts_with("/INTER/TYPE15"))?;
+        (i == at + 3).then(|| format!("{:>10}{:>10}", 10, 10))
+    });
+    let out = common::crashsim(&["check", d.to_str().unwrap()]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("type15_drop_0000.rad:")
+            && err.contains("surf_IDs")
+            && err.contains("hyper-ellipsoid"),
+        "{err}"
+    );
+}
