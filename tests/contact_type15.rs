@@ -160,6 +160,51 @@ fn r_spin(r: &Run) -> f64 {
     rows.iter().find(|row| row[id] == 1000.0).unwrap()[vry]
 }
 
+/// A light sphere (0.05 kg, J scaled with it, the same W: it starts at its
+/// rest penetration and rolls from 0.57 ms) on the plate without the
+/// small pad that set the step: its contact stiffness
+/// then sets the step (the body's √(2M/K) and √(2J/K_r), reported as the
+/// interface's), the run stays stable where the plate's step alone let it
+/// blow up (650% energy error by cycle 20), and it still ends rolling at
+/// 5/7·v0 (within the elastic friction's oscillation, a few % for so light
+/// a body).
+#[test]
+fn a_light_sphere_s_contact_stiffness_sets_the_time_step() {
+    let dir = scratch("type15_roll_light");
+    let pad = |l: &str| l.starts_with("/SHELL/2") || l.starts_with("/PART/2");
+    let d = common::deck_variant("type15_roll", &dir, |i, lines| {
+        let back = |k: usize| i.checked_sub(k).map_or("", |j| lines[j]);
+        let l = lines[i];
+        if pad(l) || pad(back(1)) || pad(back(2)) {
+            Some("#".into())
+        } else if back(1).starts_with("#  node_ID   sens_ID") {
+            Some(format!("{}{:>20}{}", &l[..40], "0.05", &l[60..]))
+        } else if back(1).starts_with("#                Jxx") {
+            Some(format!("{:>20}{:>20}{:>20}", "50", "50", "50"))
+        } else {
+            None
+        }
+    });
+    let r = run(&d, &dir.join("run"), &RunArgs::default());
+    assert!(r.listing.normal_termination());
+    let first = &r.listing.cycles[0];
+    assert!(
+        first.what == "INTER" && first.id == 1,
+        "step set by {} {}",
+        first.what,
+        first.id
+    );
+    let v = r.final_state()[&1000][3];
+    let rolling = 5.0 / 7.0;
+    assert!((v - rolling).abs() < 0.05 * rolling, "v = {v}");
+    let (error, closes) = energy_balance(&r, "type15_roll");
+    assert!((error + 100.0 * 2.0 / 7.0).abs() < 1.0, "ERROR {error}%");
+    // About four steps per period of the friction spring on so light a
+    // body: the balance closes to a few %, where the run without the
+    // body's step left it at 650% by cycle 20.
+    assert!(closes.abs() < 5.0, "closes to {closes}%");
+}
+
 #[test]
 fn type15_is_identical_on_1_2_4_ranks_and_2_threads_with_the_plate_on_several_ranks() {
     let d = deck("type15_drop");

@@ -29,8 +29,11 @@ struct NodeOut {
     sums: InterfaceSums,
     /// The largest penetration of its pairs.
     pen_max: f64,
-    /// Reactions on rigid bodies (analytic main surfaces).
+    /// Reactions on rigid bodies (analytic main surfaces), and the sums of
+    /// their pairs' tangent stiffnesses k and of k·r² (r the contact point's
+    /// distance to the body's centre).
     body_loads: Vec<(usize, NodeLoad)>,
+    body_k: [f64; 2],
 }
 
 impl NodeOut {
@@ -119,10 +122,13 @@ impl ContactSystem {
                     best = Some((step, self.setup.interfaces[ii].id));
                 }
             }
+            let mut body_k = [ExactSum::default(); 2];
             for pi in 0..self.setup.interfaces[ii].passes.len() {
                 let results = self.run_pass(ii, pi, mass, dt, bodies, scale);
                 let acc = &mut self.sums[ii];
                 for r in results {
+                    body_k[0].add(r.body_k[0]);
+                    body_k[1].add(r.body_k[1]);
                     out.extend(r.contribs);
                     self.body_loads.extend(r.body_loads);
                     if let Some(st) = r.step {
@@ -136,6 +142,15 @@ impl ContactSystem {
                     }
                     acc.pairs += r.sums.pairs;
                     acc.energy += r.sums.energy * dt;
+                }
+            }
+            let it = &self.setup.interfaces[ii];
+            if let (false, Some(b)) = (it.ty().is_total_force(), it.ty().reaction_body()) {
+                let step = bodies
+                    .get(b)
+                    .map_or(f64::INFINITY, |b| body_step(world, body_k, b));
+                if step < best.map_or(f64::INFINITY, |b| b.0) {
+                    best = Some((step, it.id));
                 }
             }
         }
@@ -211,6 +226,24 @@ impl ContactSystem {
         let fac = if resultant > 0.0 { f / resultant } else { 0.0 };
         (fac, step)
     }
+}
+
+/// The stable step of a rigid body carrying an analytic surface: the
+/// smaller of √(2M/K) and √(2J/K_r), K the sum over every rank of its
+/// pairs' tangent stiffnesses, K_r = Σ k·r² their rotational stiffness
+/// about its centre, J its smallest principal inertia (the reference adds
+/// them to the body's main node, STIFN and STIFR: its nodal step, EQ.
+/// 8.8.5.2); ∞ without contact. Collective.
+fn body_step(world: &World, mut k: [ExactSum; 2], body: &RigidBodyState) -> f64 {
+    sum_over_ranks(world, &mut k);
+    let step = |m: f64, k: f64| {
+        if k > 0.0 && m > 0.0 {
+            (2.0 * m / k).sqrt()
+        } else {
+            f64::INFINITY
+        }
+    };
+    step(body.mass, k[0].value()).min(step(body.smallest_inertia(), k[1].value()))
 }
 
 /// One pass's pairs, for the pass's interface type.
@@ -488,6 +521,12 @@ fn one_pair<T: InterfaceType>(
     let vrel = geo::sub(vs, geo::interpolate(&f.shape, &pv.vm));
     emit(out, key, &nodes, &f, v.ibc, vrel);
     if let Some(b) = ty.reaction_body() {
+        let r = v
+            .bodies
+            .get(b)
+            .map_or([0.0; 3], |b| geo::sub(f.point, b.center));
+        out.body_k[0] += f.kt;
+        out.body_k[1] += f.kt * geo::dot(r, r);
         out.body_loads.push((
             b,
             NodeLoad {

@@ -38,7 +38,10 @@
 //!   and moment about its centre). A fixed ellipsoid (no /RBODY) takes none.
 //! - Time step: each node's stiffness enters its nodal step (EQ. 8.8.5.2);
 //!   the body's, √(2M/K) with K the larger of the tangent and the secant of
-//!   Stif·f at p_max, the global minimum as an interface step.
+//!   Stif·f at p_max, the global minimum as an interface step; without
+//!   fct_IDld, the smaller of √(2M/K) and √(2J/K_r) with K the sum of the
+//!   node springs' stiffnesses and K_r = Σ k·r² about the body's centre
+//!   (`contact::pairs`, for every analytic surface on a body).
 
 use super::ellipsoid::{self, distance, shape_value, Pose};
 use super::layout::{Interface, Pass};

@@ -38,7 +38,10 @@
 //!   n̂, 0.5·h_V/|v_n| (h_V its distance to L_t, v_n its normal speed
 //!   relative to the surface), an interface step in the global minimum;
 //!   the tangent stiffness dF/dp = Stif·D²·(D + p)/(D − p)³ enters the
-//!   facet nodes' nodal step (EQ. 8.8.5.2).
+//!   facet nodes' nodal step (EQ. 8.8.5.2), and the body's: the smaller of
+//!   √(2M/K) and √(2J/K_r) over its facets in contact (K = Σ k, K_r =
+//!   Σ k·r² about its centre, J its smallest principal inertia), as the
+//!   reference adds them to the body's main node.
 
 use super::ellipsoid::{self, Pose};
 use super::layout::{Interface, Pass};
