@@ -30,6 +30,10 @@ and then held, pushes A down; A's nodes move along z only.
                     penetrated pair is switched off and A falls through; the
                     tests rewrite Inacti to 2 (the main edge off for it: the
                     same) and 0 (pushed out, then resting as in edge_cross).
+* edge_cross_t25    TYPE25 self-contact on both plates with Iedge = 1 (the
+                    free shell edges): its node part sees nothing, its edge
+                    part stops A where TYPE25's edge penalty ½·K·(p − P0)
+                    balances the load (P0 the penetration at the impact).
 * edge_cross_t19    TYPE19 between the two plates' surfaces (defaults): its
                     two TYPE7s see nothing, its TYPE11 (all edges, constant
                     gap = the default Gapmin = 1 mm) stops A as edge_cross does.
@@ -165,12 +169,18 @@ def edge_cross_t7():
                 inter7(1, "node-to-surface self-contact", 0, 3, igap=1))
 
 
+def edge_cross_t25():
+    from make_type25 import inter25
+    return deck("edge_cross_t25", "TYPE25 Iedge 1: crossing edges",
+                inter25(1, "self-contact with free edges", 3, 0, 0, iedge=1))
+
+
 def edge_cross_t19():
     return deck("edge_cross_t19", "TYPE19: node-to-surface both ways and edge-to-edge",
                 inter19(1, "general contact of the two plates", 1, 2))
 
 
-MAKERS = dict(edge_cross=edge_cross, edge_cross_self=edge_cross_self, edge_cross_t7=edge_cross_t7,
+MAKERS = dict(edge_cross=edge_cross, edge_cross_t25=edge_cross_t25, edge_cross_self=edge_cross_self, edge_cross_t7=edge_cross_t7,
               edge_cross_t19=edge_cross_t19, edge_cross_idel=edge_cross_idel,
               edge_cross_inacti=edge_cross_inacti)
 

@@ -52,11 +52,11 @@ TEND = 0.3      # ms
 
 
 def inter25(iid, title, surf1, surf2, grnod, istf=0, fric=0.0, viss=0.0, inacti=0,
-            stfac=0.0, ipstif=0, stfac_mdt=0.0, dtstif=0.0, igap0=0, idel=0):
+            stfac=0.0, ipstif=0, stfac_mdt=0.0, dtstif=0.0, igap0=0, idel=0, iedge=0):
     """/INTER/TYPE25 in the 2023 layout (src/deck/interfaces.rs read_type25)."""
     return [f"/INTER/TYPE25/{iid}", title,
             "#  surf_ID1  surf_ID2      Istf      Ithe      Igap   Irem_i2                Idel     Iedge    IPSTIF",
-            i10(surf1) + i10(surf2) + i10(istf) + i10(0) * 3 + " " * 10 + i10(idel) + i10(0) + i10(ipstif),
+            i10(surf1) + i10(surf2) + i10(istf) + i10(0) * 3 + " " * 10 + i10(idel) + i10(iedge) + i10(ipstif),
             "#  grnd_IDs                     Gap_scale          %mesh_size           Gap_max_s           Gap_max_m",
             i10(grnod) + " " * 10 + r20(0) * 4,
             "#              Stmin               Stmax     Igap0    Ishape          Edge_angle           Stfac_mdt",

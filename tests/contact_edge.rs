@@ -10,6 +10,11 @@
 //! - self-contact on both plates' edges gives the same answer (each pair once);
 //! - node-to-surface contact (TYPE7) alone lets the edges pass through, the
 //!   case TYPE11 exists for (Theory Manual §8.4.2.1);
+//! - TYPE25 with Iedge = 1 (self-contact of both plates, edge_cross_t25)
+//!   stops the edges with its edge penalty: ½·K·(p − P0) balances the load
+//!   (K the main edge's E·t, Istf 1000; P0 the penetration at the impact,
+//!   under 1e-3 here), identical on 1, 2 and 4 ranks and 2 threads; without
+//!   Iedge it lets them pass; Iedge 11 is refused by name;
 //! - the final state is byte-identical on 1, 2 and 4 ranks, with partitions
 //!   that put the two edges of the crossing pair on different ranks, and on
 //!   1 and 2 threads; a restart on another rank count continues it exactly.
@@ -218,6 +223,50 @@ fn node_to_surface_contact_alone_lets_the_edges_pass_through() {
         d < -3.0,
         "A's edge went through B (below B's bottom at z = -3): {d}"
     );
+}
+
+#[test]
+fn type25_with_free_edges_stops_crossing_edges_with_its_edge_penalty() {
+    let d = deck("edge_cross_t25");
+    let r = run(&d, &scratch("edge_cross_t25_1"), &RunArgs::default());
+    assert!(r.listing.normal_termination());
+    // The edge part is interface 2, after the deck's ids.
+    let last = r.listing.last(2);
+    assert_eq!(last.pairs, 1);
+    assert!(
+        (last.normal[2] - LOAD).abs() < 0.01 * LOAD,
+        "{:?}",
+        last.normal
+    );
+    assert!(
+        r.listing.of(1).iter().all(|l| l.pairs == 0),
+        "the node part"
+    );
+    let p = 0.5 * T + 0.5 * T - edge_height(&r);
+    let expect = 2.0 * LOAD / (E * T);
+    assert!(
+        (p - expect).abs() < 0.01 * expect,
+        "p = {p}, expected {expect}"
+    );
+    assert_same_final_state_on_ranks_and_2_threads(&d, "edge_t25_ranks", &r, &[2, 4]);
+    // Without Iedge the node part alone lets A through; Iedge 11 is refused.
+    for (iedge, tag) in [(0, "edge_t25_off"), (11, "edge_t25_11")] {
+        let dir = scratch(tag);
+        let v = common::deck_variant("edge_cross_t25", &dir, |i, lines| {
+            let at = lines.iter().position(|l| l.starts_with("/INTER/TYPE25"))?;
+            (i == at + 3).then(|| format!("{}{iedge:>10}{}", &lines[i][..80], &lines[i][90..]))
+        });
+        if iedge == 0 {
+            let r = run(&v, &dir.join("run"), &RunArgs::default());
+            assert!(edge_height(&r) < -3.0, "A went through B");
+        } else {
+            let out =
+                common::crashsim(&["run", v.to_str().unwrap(), "--out", dir.to_str().unwrap()]);
+            let err = String::from_utf8_lossy(&out.stderr);
+            assert_eq!(out.status.code(), Some(2), "{err}");
+            assert!(err.contains("Iedge 11, 13, 22"), "{err}");
+        }
+    }
 }
 
 /// Ranks of the crossing pair's two shells (A's middle shell 2 and B's

@@ -567,6 +567,7 @@ fn read_type11(cards: &mut Cards, old_layout: bool) -> InputResult<Type11> {
         fric_id,
         thermal,
         dyna: None,
+        penalty25: None,
     })
 }
 

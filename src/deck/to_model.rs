@@ -7,7 +7,7 @@
 use super::id_index::IdIndex;
 use super::resolve_sets::{node_groups, shell_groups, surfaces, SetContext};
 use super::{Deck, ElementCard, Elements};
-use crate::model::contact::Type19;
+use crate::model::contact::{Type19, Type25};
 use crate::model::*;
 
 /// Builds the model from a deck.
@@ -699,8 +699,71 @@ fn read_interfaces(
             secondary_edges: sec.edges,
             main_edges: main.edges,
         });
+        if let InterfaceKind::Type25(t) = &c.kind {
+            let nodes_part = interfaces.last().unwrap();
+            if let Some(e) = type25_edge_part(c, t, nodes_part, &mut next_id, warnings) {
+                interfaces.push(e);
+            }
+        }
     }
     Ok(interfaces)
+}
+
+/// The edge-to-edge part of a /INTER/TYPE25 with Iedge = 1 (reference card:
+/// "shell external border edges"): the free edges of surf_ID1 against
+/// those of surf_ID2 (of surf_ID1 itself in self-contact), as an interface
+/// with an id after the deck's largest running TYPE25's penalty on edge
+/// pairs (`Type25::edge_part`). A side with no free edge, or a node group as
+/// the secondary side, leaves the edge part out, with a warning. Other
+/// Iedge values are the engine's to refuse by name.
+fn type25_edge_part(
+    c: &InterfaceSpec,
+    t: &Type25,
+    nodes_part: &Interface,
+    next_id: &mut Id,
+    warnings: &mut Vec<Warning>,
+) -> Option<Interface> {
+    if t.iedge != 1 {
+        return None;
+    }
+    let kw = format!("/INTER/TYPE25/{}", c.id);
+    let main_edges = super::lines::segment_edges(&nodes_part.main_segments, true);
+    let self_contact = t.surf_id2 == 0 || t.surf_id2 == t.surf_id1;
+    let sec_edges = if self_contact {
+        main_edges.clone()
+    } else {
+        super::lines::segment_edges(&nodes_part.secondary_segments, true)
+    };
+    if t.surf_id1 == 0 || sec_edges.is_empty() || main_edges.is_empty() {
+        warnings.push(Warning {
+            loc: c.loc.clone(),
+            keyword: kw,
+            message: "Iedge = 1: a side has no free shell edge (or is a node group): \
+                      the edge-to-edge part is left out"
+                .into(),
+        });
+        return None;
+    }
+    let id = *next_id;
+    *next_id += 1;
+    // The surfaces' ids as the lines' (as TYPE19's edge part): the same
+    // on both sides, or 0, is self-contact.
+    let mut card = t.edge_part();
+    card.line_ids = t.surf_id1;
+    card.line_idm = if self_contact { 0 } else { t.surf_id2 };
+    Some(Interface {
+        card: InterfaceSpec {
+            id,
+            title: format!("{} ({kw}: edge to edge)", c.title),
+            kind: InterfaceKind::Type11(card),
+            ..c.clone()
+        },
+        secondary_nodes: distinct_nodes(sec_edges.iter().flatten().copied()),
+        main_segments: Vec::new(),
+        secondary_segments: Vec::new(),
+        secondary_edges: sec_edges,
+        main_edges,
+    })
 }
 
 /// The two surfaces of a /INTER/TYPE19 card.

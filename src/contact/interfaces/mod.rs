@@ -34,6 +34,7 @@
 //! Each kernel turns one measured pair into the force on the secondary side;
 //! the main side takes −N_i times it (EQ. 8.6.6.4–6).
 
+pub mod edge_pair;
 pub mod ellipsoid;
 pub mod layout;
 pub mod type2;

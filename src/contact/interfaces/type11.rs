@@ -42,17 +42,22 @@
 //! force is linear, F = K·p, through the whole gap (no 0.9 fraction, no
 //! deactivation: edges that cross release the pair), damped by VDC % of
 //! critical, 2·√(K·M).
+//!
+//! The edge part of a /INTER/TYPE25 with Iedge (`Type11::penalty25`) runs
+//! TYPE25's edge penalty (`type25::edge_pair`): its gap the two half
+//! thicknesses scaled and capped as TYPE25's, its stiffness by TYPE25's
+//! Istf.
 
 use std::borrow::Cow;
 use super::{
     CandidateKind, CandidateSearch, CardCommon, InterfaceType, NodeState, PairContext, PairForce,
     PairOutcome, PairState, SurfaceSizes,
 };
+use super::edge_pair::{closing, edge_force, EdgeOutcome, EdgePair};
 use super::layout::{Interface, Pass};
 use crate::contact::edge_geometry::closest_points_of_edges;
 use crate::contact::friction::{self, FrictionLaw};
 use crate::contact::gap::GapRule;
-use crate::contact::geometry::{self as geo, V3};
 use crate::contact::stiffness;
 use crate::model::InterfaceKind;
 use serde::{Deserialize, Serialize};
@@ -74,6 +79,9 @@ pub struct Type11 {
     pub mesh_size_pct: f64,
     /// A keyword deck's penalty (module comment).
     pub dyna: Option<crate::model::contact::DynaPenalty>,
+    /// The edge part of a TYPE25 with Iedge: TYPE25's penalty (module comment).
+    #[serde(default)]
+    pub penalty25: Option<crate::model::contact::Penalty25>,
 }
 
 impl InterfaceType for Type11 {
@@ -138,6 +146,7 @@ impl InterfaceType for Type11 {
             gapmin: t.gapmin,
             mesh_size_pct: t.mesh_size_pct,
             dyna: t.dyna,
+            penalty25: t.penalty25,
         };
         Some((own, common))
     }
@@ -165,6 +174,9 @@ impl InterfaceType for Type11 {
     }
 
     fn gap_rule(&self, _common: &CardCommon, sizes: &SurfaceSizes) -> GapRule {
+        if let Some(p) = &self.penalty25 {
+            return super::type25::gap_rule(p);
+        }
         GapRule {
             igap: if self.igap == 0 { 1000 } else { self.igap },
             gapmin: if self.gapmin > 0.0 {
@@ -195,10 +207,15 @@ impl InterfaceType for Type11 {
         Some(stiffness::dyna_soft0(f, el))
     }
 
-    /// By Istf; a keyword deck's: the smaller of the two edges'.
+    /// By Istf; a keyword deck's: the smaller of the two edges'; a TYPE25's
+    /// by its Istf (1000: the main edge's).
     fn pair_stiffness(&self, it: &Interface, p: &Pass, k: usize, m: usize) -> f64 {
         if self.dyna.is_some() {
             return p.sec_k[k].min(p.seg_k[m]);
+        }
+        if let Some(q) = &self.penalty25 {
+            let (ks, km) = (it.stfac * p.sec_k[k], it.stfac * p.seg_k[m]);
+            return super::type25::pair_stiffness_of(q, ks, km);
         }
         edge_pair_stiffness(self.istf, it.stfac, p.sec_k[k], p.seg_k[m], self.stmin, self.stmax)
     }
@@ -221,7 +238,14 @@ impl InterfaceType for Type11 {
             dt: c.dt,
             soft: self.dyna.map(|d| if d.soft == 1 { d.sofscl } else { 0.0 }),
         };
-        match edge_pair(&inp, st) {
+        let out = match &self.penalty25 {
+            Some(q) => {
+                let gap = super::type25::pair_gap(q, p.sec_gap[k], p.seg_gap[m]);
+                super::type25::edge_pair(&EdgePair { gap, ..inp }, q, st)
+            }
+            None => edge_pair(&inp, st),
+        };
+        match out {
             EdgeOutcome::Free => PairOutcome::Free,
             EdgeOutcome::Force(f) => PairOutcome::Force(f),
             EdgeOutcome::Deactivate => {
@@ -250,32 +274,6 @@ pub fn edge_pair_stiffness(istf: i64, stfac: f64, ks: f64, km: f64, stmin: f64, 
     stmin.max(stmax.min(k))
 }
 
-/// One edge pair's inputs: the secondary edge S1–S2 and main edge M1–M2.
-pub struct EdgePair<'a> {
-    pub xs: [V3; 2],
-    pub vs: [V3; 2],
-    pub ms: [f64; 2],
-    pub xm: [V3; 2],
-    pub vm: [V3; 2],
-    pub mm: [f64; 2],
-    /// Pair stiffness K (Istf).
-    pub k: f64,
-    pub gap: f64,
-    pub viss: f64,
-    pub friction: &'a FrictionLaw,
-    pub dt: f64,
-    /// LS-DYNA's linear penalty (a keyword deck's edges), with SOFSCL when
-    /// SOFT = 1 (0 for SOFT = 0); `None`: the Radioss law.
-    pub soft: Option<f64>,
-}
-
-pub enum EdgeOutcome {
-    Free,
-    Force(PairForce),
-    /// The pair reached the law's gap: its secondary edge leaves the interface.
-    Deactivate,
-}
-
 /// The elastic force and tangent stiffness at penetration `p` of the law's
 /// gap `gl` = 0.9·g with pair stiffness `k`: ½·K·gl·p/(gl − p) and
 /// ½·K·gl²/(gl − p)².
@@ -298,12 +296,7 @@ pub fn edge_pair(e: &EdgePair, st: &mut PairState) -> EdgeOutcome {
     if (gl - pen) <= 1e-10 * gl {
         return EdgeOutcome::Deactivate;
     }
-    let n = geo::scale(ep.n, 1.0 / ep.dist);
-    let (ws, wm) = ep.weights();
-    let lerp = |w: [f64; 2], a: [V3; 2]| geo::add(geo::scale(a[0], w[0]), geo::scale(a[1], w[1]));
-    let vrel = geo::sub(lerp(ws, e.vs), lerp(wm, e.vm));
-    // Penetration rate: the two points closing on each other.
-    let dpdt = -geo::dot(vrel, n);
+    let (n, ws, wm, vrel, dpdt) = closing(e, &ep);
     let (f_el, kt) = edge_reaction(e.k, gl, pen);
     let ks = f_el / pen;
     let mass = (ws[0] * e.ms[0] + ws[1] * e.ms[1]).min(wm[0] * e.mm[0] + wm[1] * e.mm[1]);
@@ -345,11 +338,7 @@ fn linear_edge_pair(e: &EdgePair, sofscl: f64, st: &mut PairState) -> EdgeOutcom
         return EdgeOutcome::Free;
     }
     let pen = e.gap - ep.dist;
-    let n = geo::scale(ep.n, 1.0 / ep.dist);
-    let (ws, wm) = ep.weights();
-    let lerp = |w: [f64; 2], a: [V3; 2]| geo::add(geo::scale(a[0], w[0]), geo::scale(a[1], w[1]));
-    let vrel = geo::sub(lerp(ws, e.vs), lerp(wm, e.vm));
-    let dpdt = -geo::dot(vrel, n);
+    let (n, ws, wm, vrel, dpdt) = closing(e, &ep);
     let mass = (ws[0] * e.ms[0] + ws[1] * e.ms[1]).min(wm[0] * e.mm[0] + wm[1] * e.mm[1]);
     let k = if sofscl > 0.0 {
         e.k.max(stiffness::soft_constraint(sofscl, mass, e.dt))
@@ -375,54 +364,10 @@ fn linear_edge_pair(e: &EdgePair, sofscl: f64, st: &mut PairState) -> EdgeOutcom
     edge_force(e, &ep, (f_n, f_t), k_step, dt_kin, pen)
 }
 
-/// The pair force of normal `f_n` (along the unit common normal) and
-/// tangential `f_t` on the closest points `ep` of the edges of `e`.
-fn edge_force(
-    e: &EdgePair,
-    ep: &crate::contact::edge_geometry::EdgePoints,
-    (f_n, f_t): (f64, V3),
-    k_step: f64,
-    dt_kin: f64,
-    pen: f64,
-) -> EdgeOutcome {
-    let n = geo::scale(ep.n, 1.0 / ep.dist);
-    let (ws, wm) = ep.weights();
-    EdgeOutcome::Force(PairForce {
-        fs: geo::add(geo::scale(n, f_n), f_t),
-        sec_shape: [ws[0], ws[1], 0.0, 0.0],
-        shape: [wm[0], wm[1], 0.0, 0.0],
-        kt: k_step,
-        dt_kin,
-        f_n,
-        f_t,
-        pen,
-        dir: n,
-        point: geo::add(geo::scale(e.xs[0], ws[0]), geo::scale(e.xs[1], ws[1])),
-    })
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    fn crossing(z: f64, vz: f64) -> EdgePair<'static> {
-        static NONE: std::sync::OnceLock<FrictionLaw> = std::sync::OnceLock::new();
-        EdgePair {
-            // Secondary along x at height z over the main edge along y.
-            xs: [[-1.0, 0.25, z], [1.0, 0.25, z]],
-            vs: [[0.0, 0.0, vz]; 2],
-            ms: [1.0, 1.0],
-            xm: [[0.5, -1.0, 0.0], [0.5, 1.0, 0.0]],
-            vm: [[0.0; 3]; 2],
-            mm: [1.0, 1.0],
-            k: 1000.0,
-            gap: 0.1,
-            viss: 0.0,
-            friction: NONE.get_or_init(FrictionLaw::none),
-            dt: 1e-3,
-            soft: None,
-        }
-    }
+    use crate::contact::interfaces::edge_pair::tests::crossing;
 
     /// A keyword deck's edges: F = K·p through the whole gap (no 0.9
     /// fraction, no deactivation), SOFT 1 at least 0.5·SOFSCL·m*/Δt², the

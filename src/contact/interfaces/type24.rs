@@ -26,6 +26,7 @@
 
 use super::layout::{Interface, Pass};
 use super::type25::{penalty_common, Impact, Type25 as Kernel};
+use crate::model::contact::Penalty25;
 use super::{
     CandidateKind, CandidateSearch, CardCommon, InterfaceType, NodeState, PairContext, PairForce,
     PairOutcome, PairState, SurfaceSizes,
@@ -83,14 +84,16 @@ impl InterfaceType for Type24 {
         let common = penalty_common(t.stfac, t.fric, (t.tstart, t.tstop), t.ibc, t.inacti, t.idel);
         let mass_stiffness = t.ipstif == 1 || t.istf == 7;
         let kernel = Kernel {
-            istf: t.istf,
-            stmin: t.stmin,
-            stmax: t.stmax,
-            viss: t.viss,
-            ivis2: 1,
-            gap_scale: 1.0,
-            gap_max_s: t.gap_max_s,
-            gap_max_m: t.gap_max_m,
+            law: Penalty25 {
+                istf: t.istf,
+                stmin: t.stmin,
+                stmax: t.stmax,
+                viss: t.viss,
+                ivis2: 1,
+                gap_scale: 1.0,
+                gap_max_s: t.gap_max_s,
+                gap_max_m: t.gap_max_m,
+            },
             mass_stiffness: mass_stiffness.then_some((t.stfac_mdt, t.dtstif)),
             igap0: t.igap0 == 1,
             impact: if t.inacti == 5 {

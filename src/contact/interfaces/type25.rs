@@ -1,7 +1,10 @@
 //! TYPE25 penalty contact without an activation gap, node to surface
 //! (reference card /INTER/TYPE25; the reference engine's law as gathered in
 //! docs/notes/type24_type25_research.md §2–3). Its edge-to-edge part
-//! (Iedge) is refused by name.
+//! with Iedge = 1 (the free shell edges) is an added interface of edge
+//! pairs (`deck::to_model`, a TYPE11 card carrying `Penalty25`) that
+//! runs TYPE25's edge penalty (`edge_pair`, below); Iedge 11, 13, 22 (solid
+//! and sharp edges) are refused by name.
 //!
 //! - Gap: only the shells' half thicknesses, g = g_s + g_m (each times
 //!   Gap_scale, each at most Gap_max_s, Gap_max_m); a solid face has none;
@@ -45,25 +48,22 @@ use super::{
     CandidateKind, CandidateSearch, CardCommon, InterfaceType, NodeState, PairContext, PairForce,
     PairOutcome, PairState, SurfaceSizes, NODE_SHAPE,
 };
+use super::edge_pair::{closing, edge_force, EdgeOutcome, EdgePair};
+use crate::contact::edge_geometry::closest_points_of_edges;
 use crate::contact::friction::{self, FrictionLaw};
 use crate::contact::gap::GapRule;
 use crate::contact::geometry::{self as geo, V3};
 use crate::contact::stiffness;
 use crate::model::contact::EP30;
+use crate::model::contact::Penalty25;
 use crate::model::{self, InterfaceKind};
 use serde::{Deserialize, Serialize};
 
 /// TYPE25's own options.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct Type25 {
-    pub istf: i64,
-    pub stmin: f64,
-    pub stmax: f64,
-    pub viss: f64,
-    pub ivis2: i64,
-    pub gap_scale: f64,
-    pub gap_max_s: f64,
-    pub gap_max_m: f64,
+    /// Istf, Stmin, Stmax, VISs, IVIS2, Gap_scale, Gap_max_s, Gap_max_m.
+    pub law: Penalty25,
     /// IPSTIF = 1: Stfac_mdt and DTstif (0: the run's step); None when off.
     pub mass_stiffness: Option<(f64, f64)>,
     /// Igap0 = 1: secondary nodes on a free shell edge have no gap.
@@ -103,7 +103,10 @@ impl InterfaceType for Type25 {
             (t.ithe != 0, "heat transfer (Ithe)"),
             (t.fric_id != 0, "friction from /FRICTION (fric_ID)"),
             (t.ifric != 0 || t.ifiltr != 0, "a friction law or filter (Ifric, Ifiltr)"),
-            (!matches!(t.iedge, 0 | 1000), "edge-to-edge contact (Iedge)"),
+            (
+                !matches!(t.iedge, 0 | 1 | 1000),
+                "edge-to-edge contact of solid and sharp edges (Iedge 11, 13, 22)",
+            ),
             (!matches!(t.igap, 0 | 1), "a gap option other than the half thicknesses (Igap 2, 3, 5)"),
             (t.ishape == 2, "the rounded gap shape along free edges (Ishape = 2)"),
             (
@@ -130,14 +133,7 @@ impl InterfaceType for Type25 {
         };
         let common = penalty_common(t.stfac, t.fric, (t.tstart, t.tstop), t.ibc, t.inacti, t.idel);
         let own = Type25 {
-            istf: t.istf,
-            stmin: t.stmin,
-            stmax: t.stmax,
-            viss: t.viss,
-            ivis2: t.ivis2,
-            gap_scale: t.gap_scale,
-            gap_max_s: t.gap_max_s,
-            gap_max_m: t.gap_max_m,
+            law: t.penalty(),
             mass_stiffness: (t.ipstif == 1).then_some((t.stfac_mdt, t.dtstif)),
             igap0: t.igap0 == 1,
             impact: Impact::Baseline,
@@ -169,13 +165,7 @@ impl InterfaceType for Type25 {
 
     /// For the search reach only (the kernel sums the capped half thicknesses).
     fn gap_rule(&self, _common: &CardCommon, _sizes: &SurfaceSizes) -> GapRule {
-        GapRule {
-            igap: 2,
-            gapmin: 0.0,
-            fscalegap: self.gap_scale,
-            gapmax: (self.gap_max_s + self.gap_max_m).min(EP30),
-            mesh_size_pct: 0.4,
-        }
+        gap_rule(&self.law)
     }
 
     fn sorting_margin(&self) -> f64 {
@@ -220,16 +210,7 @@ impl InterfaceType for Type25 {
     fn pair_stiffness(&self, it: &Interface, p: &Pass, k: usize, m: usize) -> f64 {
         let km = 2.0 * it.stfac * p.seg_k[m];
         let ks = it.stfac * p.sec_k[k];
-        let kn = match self.istf {
-            2 => 0.5 * (km + ks),
-            3 => km.max(ks),
-            4 => km.min(ks),
-            5 => stiffness::series(km, ks),
-            // TYPE24's Istf 7: only the mass and time-step stiffness.
-            7 => return 0.0,
-            _ => return km,
-        };
-        self.stmin.max(self.stmax.min(kn))
+        pair_stiffness_of(&self.law, ks, km)
     }
 
     #[inline]
@@ -273,14 +254,14 @@ impl InterfaceType for Type25 {
             st.pen_memory[1] = 0.0;
             return PairOutcome::Free;
         }
-        let mass = match self.ivis2 {
+        let mass = match self.law.ivis2 {
             6 => c.ms,
             _ => c.ms * mm / (c.ms + mm).max(1e-30),
         };
         let law = Law {
             k_new,
             ramp_new: self.impact == Impact::Baseline,
-            viss: if self.ivis2 == 4 { 0.0 } else { self.viss },
+            viss: if self.law.ivis2 == 4 { 0.0 } else { self.law.viss },
             mass,
             friction: &it.friction,
             dt: c.dt,
@@ -323,11 +304,107 @@ pub fn penalty_common(
     }
 }
 
+/// A pair's stiffness by Istf from the secondary and main stiffnesses
+/// (Stfac included): 2 mean, 3 max, 4 min, 5 in series, each held in
+/// [Stmin, Stmax]; 1000 (and 0) the main side's; TYPE24's 7 none (only
+/// the mass and time-step stiffness).
+pub fn pair_stiffness_of(q: &Penalty25, ks: f64, km: f64) -> f64 {
+    let kn = match q.istf {
+        2 => 0.5 * (km + ks),
+        3 => km.max(ks),
+        4 => km.min(ks),
+        5 => stiffness::series(km, ks),
+        7 => return 0.0,
+        _ => return km,
+    };
+    q.stmin.max(q.stmax.min(kn))
+}
+
+/// The gap rule, for the search reach (the kernels sum the capped half
+/// thicknesses, `edge_gap`).
+pub fn gap_rule(q: &Penalty25) -> GapRule {
+    GapRule {
+        igap: 2,
+        gapmin: 0.0,
+        fscalegap: q.gap_scale,
+        gapmax: (q.gap_max_s + q.gap_max_m).min(EP30),
+        mesh_size_pct: 0.4,
+    }
+}
+
+/// A pair's gap from the two sides' half shell thicknesses: each times
+/// Gap_scale and at most Gap_max_s, Gap_max_m.
+pub fn pair_gap(q: &Penalty25, gs: f64, gm: f64) -> f64 {
+    (q.gap_scale * gs).min(q.gap_max_s) + (q.gap_scale * gm).min(q.gap_max_m)
+}
+
+/// TYPE25's penalty on an edge pair (Iedge; the reference engine's
+/// i25for3e as gathered in docs/notes/type24_type25_research.md §3):
+/// p = g − d between the edges' closest points (g the two half
+/// thicknesses); the baseline P0 is the penetration at the impact and then
+/// relaxes toward a smaller one, P0 ← min(P0, 0.95·P0 + 0.05·p), so only
+/// further penetration p − P0 pushes: F_n = ½·K·(p − P0) + C·dp/dt, C =
+/// VISs·√(2·½K·m*) with m* the harmonic mean of the two sides' masses at
+/// the closest points (IVIS2 1; 6: the secondary side's; 4: none);
+/// incremental Coulomb friction with the full K as tangential penalty; no
+/// kinematic step, K + C/Δt to the nodal step. Edges that cross (d → 0)
+/// release the pair.
+pub fn edge_pair(e: &EdgePair, q: &Penalty25, st: &mut PairState) -> EdgeOutcome {
+    let ep = closest_points_of_edges(e.xs[0], e.xs[1], e.xm[0], e.xm[1]);
+    let p_raw = e.gap - ep.dist;
+    if p_raw <= 0.0 || ep.dist < 1e-10 * e.gap || e.k <= 0.0 {
+        *st = PairState::default();
+        return EdgeOutcome::Free;
+    }
+    if st.side == 0 {
+        st.side = 1;
+        st.pen_memory[0] = p_raw;
+    }
+    let p0 = st.pen_memory[0].min(0.95 * st.pen_memory[0] + 0.05 * p_raw);
+    st.pen_memory[0] = p0;
+    let pen = p_raw - p0;
+    if pen <= 0.0 {
+        return EdgeOutcome::Free;
+    }
+    let (n, ws, wm, vrel, dpdt) = closing(e, &ep);
+    let (m_s, m_m) = (
+        ws[0] * e.ms[0] + ws[1] * e.ms[1],
+        wm[0] * e.mm[0] + wm[1] * e.mm[1],
+    );
+    let mass = match q.ivis2 {
+        6 => m_s,
+        _ => m_s * m_m / (m_s + m_m).max(1e-30),
+    };
+    let kf = 0.5 * e.k;
+    let c = if q.ivis2 == 4 {
+        0.0
+    } else {
+        q.viss * (2.0 * kf * mass).sqrt()
+    };
+    let f_n = kf * pen + c * dpdt;
+    let mut f_t = [0.0; 3];
+    if e.friction.active() && f_n != 0.0 {
+        let vt = friction::tangential(vrel, n);
+        f_t = friction::tangential_force(
+            e.friction,
+            e.friction.fric,
+            f_n.abs(),
+            vt,
+            n,
+            e.k,
+            mass,
+            e.dt,
+            &mut st.ft,
+        );
+    }
+    let kt = if e.dt > 0.0 { e.k + c / e.dt } else { e.k };
+    edge_force(e, &ep, (f_n, f_t), kt, f64::INFINITY, pen)
+}
+
 impl Type25 {
     /// The pair's gap: the half thicknesses, each scaled and capped.
     fn gap(&self, p: &Pass, k: usize, m: usize) -> f64 {
-        (self.gap_scale * p.sec_gap[k]).min(self.gap_max_s)
-            + (self.gap_scale * p.seg_gap[m]).min(self.gap_max_m)
+        pair_gap(&self.law, p.sec_gap[k], p.seg_gap[m])
     }
 }
 
@@ -460,5 +537,40 @@ mod tests {
         // Past the mid-plane from below: still pushed down, by g + depth.
         let (p, _, pr) = penetration([0.3, 0.4, 0.02], &x, false, 0.1, true, -1).unwrap();
         assert!((p - 0.12).abs() < 1e-15 && pr.dir == [0.0, 0.0, -1.0]);
+    }
+
+    /// TYPE25's edge penalty: the impact's penetration is the baseline,
+    /// further penetration pushes with ½K·(p − P0), and when the edges back
+    /// off the baseline follows at 5 % a cycle (P0 ← min(P0, 0.95·P0 +
+    /// 0.05·p)), so pushing back in is felt again from the lower baseline.
+    #[test]
+    fn an_edge_pair_pushes_only_against_penetration_beyond_its_baseline() {
+        let q = Penalty25 {
+            istf: 1000,
+            stmin: 0.0,
+            stmax: EP30,
+            viss: 0.0,
+            ivis2: 1,
+            gap_scale: 1.0,
+            gap_max_s: EP30,
+            gap_max_m: EP30,
+        };
+        let pair = |z: f64| super::super::edge_pair::tests::crossing(z, 0.0);
+        let force = |z: f64, st: &mut PairState| match edge_pair(&pair(z), &q, st) {
+            EdgeOutcome::Force(f) => f.f_n,
+            _ => 0.0,
+        };
+        let mut st = PairState::default();
+        // Impact at p = 0.02: the baseline, no force.
+        assert_eq!(force(0.08, &mut st), 0.0);
+        assert!((st.pen_memory[0] - 0.02).abs() < 1e-15);
+        // 0.03 further: ½·1000·0.03.
+        assert!((force(0.05, &mut st) - 15.0).abs() < 1e-9);
+        // Back to p = 0.01: the baseline moves 5 % of the way, 0.0195.
+        assert_eq!(force(0.09, &mut st), 0.0);
+        assert!((st.pen_memory[0] - 0.0195).abs() < 1e-15);
+        // Out of the gap: the memory goes.
+        assert_eq!(force(0.2, &mut st), 0.0);
+        assert_eq!(st, PairState::default());
     }
 }

@@ -77,6 +77,10 @@ pub struct Type11 {
     /// (`contact::interfaces::type11`, linear law).
     #[serde(default)]
     pub dyna: Option<super::DynaPenalty>,
+    /// Not a Radioss field: the edge-to-edge part of a /INTER/TYPE25 with
+    /// Iedge runs TYPE25's penalty (`super::Type25::edge_part`).
+    #[serde(default)]
+    pub penalty25: Option<super::Penalty25>,
 }
 
 /// TYPE11 thermal cards (Ithe > 0). The layout differs from TYPE7's.

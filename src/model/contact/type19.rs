@@ -109,6 +109,7 @@ impl Type19 {
             fric_id: t.fric_id,
             thermal,
             dyna: t.dyna,
+            penalty25: None,
         }
     }
 }

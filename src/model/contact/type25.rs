@@ -87,3 +87,71 @@ pub struct Type25 {
     /// DTstif: the time step of that stiffness; 0 = the run's current step.
     pub dtstif: f64,
 }
+
+/// TYPE25's penalty as its card sets it: the pair stiffness (Istf, Stmin,
+/// Stmax), the damper (VISs, IVIS2) and the gap's scale and caps; shared
+/// by its node part, its edge part (Iedge) and TYPE24's kernel
+/// (`contact::interfaces::type25`).
+#[derive(Clone, Copy, Debug, Default, Serialize, Deserialize, PartialEq)]
+pub struct Penalty25 {
+    pub istf: i64,
+    pub stmin: f64,
+    pub stmax: f64,
+    pub viss: f64,
+    pub ivis2: i64,
+    pub gap_scale: f64,
+    pub gap_max_s: f64,
+    pub gap_max_m: f64,
+}
+
+impl Type25 {
+    /// The penalty's options from the card.
+    pub fn penalty(&self) -> Penalty25 {
+        Penalty25 {
+            istf: self.istf,
+            stmin: self.stmin,
+            stmax: self.stmax,
+            viss: self.viss,
+            ivis2: self.ivis2,
+            gap_scale: self.gap_scale,
+            gap_max_s: self.gap_max_s,
+            gap_max_m: self.gap_max_m,
+        }
+    }
+
+    /// The edge-to-edge part of the card (Iedge 1: the surfaces' free
+    /// edges, the borders of their shells): a TYPE11 card of the same
+    /// stiffness, friction, times and Idel, carrying TYPE25's penalty; its
+    /// lines are set by the caller.
+    pub fn edge_part(&self) -> super::Type11 {
+        super::Type11 {
+            line_ids: 0,
+            line_idm: 0,
+            istf: self.istf,
+            ithe: 0,
+            igap: 2,
+            irem_gap: 1,
+            idel: self.idel,
+            stmin: self.stmin,
+            stmax: self.stmax,
+            mesh_size_pct: self.mesh_size_pct,
+            dtmin: 0.0,
+            iform: 2,
+            sens_id: self.sens_id,
+            stfac: self.stfac,
+            fric: self.fric,
+            gapmin: 0.0,
+            tstart: self.tstart,
+            tstop: self.tstop,
+            ibc: [false; 3],
+            inacti: 1000,
+            viss: self.viss,
+            visf: 0.0,
+            bumult: 0.2,
+            fric_id: self.fric_id,
+            thermal: None,
+            dyna: None,
+            penalty25: Some(self.penalty()),
+        }
+    }
+}
