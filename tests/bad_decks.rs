@@ -328,6 +328,26 @@ fn missing_file() {
     );
 }
 
+/// Found by `ci/fuzz` (deck_reader): a /DAMP header without its id
+/// indexed past the header's parts.
+#[test]
+fn damp_without_its_id() {
+    let c = Case::new("damp-no-id");
+    let mut d = base_deck();
+    let n = before_end(&mut d, &[s("/DAMP"), s("ramp"), r20(0)]);
+    let out = c.check(&d);
+    assert_error(
+        &out,
+        Expect {
+            file: DECK,
+            line: n,
+            keyword: "/DAMP",
+            field: "damp_ID",
+            phrases: &["missing damp_ID", "/DAMP/1"],
+        },
+    );
+}
+
 #[test]
 fn missing_include_target() {
     let c = Case::new("missing-include");

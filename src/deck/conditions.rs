@@ -30,7 +30,15 @@ pub(super) fn parse_condition(block: &Block, deck: &mut Deck) -> InputResult<boo
         "IMPVEL" | "IMPDISP" => imposed_motion(block, deck),
         "INIVEL" => initial_velocity(block, deck),
         "CLOAD" | "GRAV" => load(block, deck),
-        "DAMP" if block.parts.len() <= 3 && block.parts[1].trim().parse::<u64>().is_ok() => {
+        // /DAMP/damp_ID[/unit_ID] (a header without the id too: its
+        // reader names the missing field); /DAMP/VREL and others are not read.
+        "DAMP"
+            if block.parts.len() <= 3
+                && block
+                    .parts
+                    .get(1)
+                    .is_none_or(|p| p.trim().parse::<u64>().is_ok()) =>
+        {
             damping(block, deck)
         }
         "RWALL" => rigid_wall(block, deck),
