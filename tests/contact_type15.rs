@@ -205,6 +205,86 @@ fn a_light_sphere_s_contact_stiffness_sets_the_time_step() {
     assert!(closes.abs() < 5.0, "closes to {closes}%");
 }
 
+/// type15_drop with its sphere an oblate ellipsoid (semi-axis 25 along z,
+/// 50 across): given directly, or as (25, 50, 50) in a /SKEW/FIX whose X′
+/// is the global z, the same run; a skew that is not defined is an error
+/// naming the ellipsoid.
+fn drop_variant(tag: &str, skew: u64, axes: [&str; 3]) -> std::path::PathBuf {
+    let dir = scratch(tag);
+    common::deck_variant("type15_drop", &dir, |i, lines| {
+        let at = lines.iter().position(|l| l.starts_with("/SURF/ELLIPS"))?;
+        match i.checked_sub(at)? {
+            3 => Some(format!("{skew:>10}{:>10}", 2)),
+            6 => Some(format!("{:>20}{:>20}{:>20}", axes[0], axes[1], axes[2])),
+            _ if lines[i] == "/END" => Some(
+                [
+                    "/SKEW/FIX/7\nX' along z",
+                    &format!("{:>20}{:>20}{:>20}", 0, 0, 0),
+                    &format!("{:>20}{:>20}{:>20}", 0, 1, 0),
+                    &format!("{:>20}{:>20}{:>20}", -1, 0, 0),
+                    "/END",
+                ]
+                .join("\n"),
+            ),
+            _ => None,
+        }
+    })
+}
+
+#[test]
+fn an_ellipsoid_s_skew_sets_its_axes() {
+    let plain = drop_variant("type15_oblate", 0, ["50", "50", "25"]);
+    let skewed = drop_variant("type15_oblate_skew", 7, ["25", "50", "50"]);
+    let a = run(
+        &plain,
+        &plain.parent().unwrap().join("run"),
+        &RunArgs::default(),
+    );
+    let b = run(
+        &skewed,
+        &skewed.parent().unwrap().join("run"),
+        &RunArgs::default(),
+    );
+    let peak = |r: &Run| {
+        r.listing
+            .of(1)
+            .iter()
+            .map(|l| -l.normal[2])
+            .fold(0.0, f64::max)
+    };
+    assert!(
+        peak(&a) > 0.5,
+        "the oblate sphere hit the plate: {}",
+        peak(&a)
+    );
+    assert!(
+        (peak(&a) - peak(&b)).abs() <= 1e-9 * peak(&a),
+        "{} {}",
+        peak(&a),
+        peak(&b)
+    );
+    let (sa, sb) = (a.final_state(), b.final_state());
+    for k in [2, 5] {
+        assert!(
+            (sa[&1000][k] - sb[&1000][k]).abs() <= 1e-9 * sa[&1000][k].abs(),
+            "{k}"
+        );
+    }
+    let bad = drop_variant("type15_bad_skew", 8, ["25", "50", "50"]);
+    let out = common::crashsim(&[
+        "run",
+        bad.to_str().unwrap(),
+        "--out",
+        bad.parent().unwrap().to_str().unwrap(),
+    ]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("skew_ID 8") && err.contains("/SURF/ELLIPS/10"),
+        "{err}"
+    );
+}
+
 #[test]
 fn type15_is_identical_on_1_2_4_ranks_and_2_threads_with_the_plate_on_several_ranks() {
     let d = deck("type15_drop");

@@ -142,7 +142,7 @@ pub const SUPPORTED: &[Supported] = &[
         &["/SURF/PART/1", "/SURF/PART/EXT/1", "/SURF/GRSHEL/1", "/SURF/SEG/1"],
         "surfaces",
     ),
-    s("/SURF/ELLIPS", &["/SURF/ELLIPS/1"], "hyper-ellipsoid surfaces (degree n, centre, semi-axes; a skew system refused), the main side of /INTER/TYPE14 and /INTER/TYPE15"),
+    s("/SURF/ELLIPS", &["/SURF/ELLIPS/1"], "hyper-ellipsoid surfaces (degree n, centre, semi-axes along the axes of skew_ID at t = 0, then turning with the /RBODY that carries them), the main side of /INTER/TYPE14 and /INTER/TYPE15"),
     s("/LINE/SEG, /LINE/PART, /LINE/SURF, /LINE/EDGE", &["/LINE/SEG/1", "/LINE/PART/1", "/LINE/SURF/1", "/LINE/EDGE/1"], "lines (2-node segments) for edge-to-edge contact: explicit, the trusses and beams of parts, every edge of surfaces, the free edges of surfaces"),
     s("/SUBSET", &["/SUBSET/1"], "subsets of parts"),
     s("/BCS", &["/BCS/1"], "boundary conditions (a skew system refused)"),

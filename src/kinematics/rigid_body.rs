@@ -69,7 +69,8 @@ fn sym(j: &[f64; 6]) -> [[f64; 3]; 3] {
 pub fn mat_vec(a: &[[f64; 3]; 3], v: V3) -> V3 {
     [0, 1, 2].map(|i| a[i][0] * v[0] + a[i][1] * v[1] + a[i][2] * v[2])
 }
-fn mat_mul(a: &[[f64; 3]; 3], b: &[[f64; 3]; 3]) -> [[f64; 3]; 3] {
+/// The product a·b of two 3×3 matrices (row-major).
+pub fn mat_mul(a: &[[f64; 3]; 3], b: &[[f64; 3]; 3]) -> [[f64; 3]; 3] {
     let mut c = [[0.0; 3]; 3];
     for i in 0..3 {
         for j in 0..3 {

@@ -2,12 +2,14 @@
 //! as TYPE14 (nodes) and TYPE15 (segments) meet it: its geometry as pure
 //! functions of the local coordinates ξ (theory manual §8.9–8.10; docs/notes/
 //! type6_type14_type15_research.md §2.2–2.3), and where the rigid body
-//! that carries it (/RBODY surf_ID) has moved it.
+//! that carries it (/RBODY surf_ID) has moved it; its local axes are those
+//! of its skew_ID at t = 0 (reference guide /SURF/ELLIPS: the skew gives
+//! the initial orientation), then turn with the body.
 
 use super::{CardCommon, PairState};
 use crate::contact::friction::{self, FrictionLaw};
 use crate::contact::geometry::{self as geo, V3};
-use crate::kinematics::rigid_body::{mat_vec, transpose, RigidBodyState};
+use crate::kinematics::rigid_body::{mat_mul, mat_vec, transpose, RigidBodyState};
 use crate::model::{self, Ellipsoid};
 
 /// F(ξ) = Σ|ξ_k/a_k|^n.
@@ -87,10 +89,14 @@ pub struct Carried {
     pub body: Option<usize>,
     pub body_mass: f64,
     pub offset: V3,
+    /// The ellipsoid's axes at t = 0 (its skew_ID's, as columns; `None`:
+    /// the global axes).
+    pub axes0: Option<[[f64; 3]; 3]>,
 }
 
 /// The /SURF/ELLIPS `surf_idm` of card `kw` and its body; a surface of
-/// another kind, or a skew system, is an error naming the field.
+/// another kind, or a skew that is not defined or degenerate, is an error
+/// naming the field.
 pub fn bind(m: &model::Model, surf_idm: model::Id, kw: &str) -> Result<Carried, String> {
     let e = m
         .surfaces
@@ -98,12 +104,23 @@ pub fn bind(m: &model::Model, surf_idm: model::Id, kw: &str) -> Result<Carried, 
         .find(|s| s.id == surf_idm)
         .and_then(|s| s.ellipsoid.clone())
         .ok_or_else(|| format!("{kw}, field surf_IDm: /SURF/{surf_idm} is not a /SURF/ELLIPS"))?;
-    if e.skew_id != 0 {
-        return Err(format!(
-            "{kw}, field surf_IDm: /SURF/ELLIPS/{surf_idm} with a skew system (skew_ID) \
-             is not supported by the engine yet"
-        ));
-    }
+    let axes0 = match e.skew_id {
+        0 => None,
+        id => {
+            let rows = m
+                .skews
+                .iter()
+                .find(|s| s.id == id)
+                .and_then(|s| s.axes(&m.nodes.x))
+                .ok_or_else(|| {
+                    format!(
+                        "{kw}, field surf_IDm: /SURF/ELLIPS/{surf_idm} names skew_ID {id}, \
+                         which is not a defined /SKEW with independent axes"
+                    )
+                })?;
+            Some(transpose(&rows))
+        }
+    };
     let body = m
         .rigid_bodies
         .iter()
@@ -117,20 +134,30 @@ pub fn bind(m: &model::Model, surf_idm: model::Id, kw: &str) -> Result<Carried, 
         body,
         body_mass,
         offset,
+        axes0,
     })
 }
 
-/// The ellipsoid's pose now: carried by its body (centre = body centre +
-/// the turned offset, axes turned with it) or where the deck put it.
-pub fn pose(e: &Ellipsoid, body: Option<usize>, offset: V3, bodies: &[RigidBodyState]) -> Pose {
+/// The ellipsoid's pose now: its axes those of its skew at t = 0
+/// (`axes0`), carried by its body (centre = body centre + the turned
+/// offset, axes turned with it) or where the deck put it.
+pub fn pose(
+    e: &Ellipsoid,
+    body: Option<usize>,
+    offset: V3,
+    axes0: Option<&[[f64; 3]; 3]>,
+    bodies: &[RigidBodyState],
+) -> Pose {
+    const I: [[f64; 3]; 3] = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    let a0 = axes0.unwrap_or(&I);
     match body.and_then(|b| bodies.get(b)) {
         Some(b) => Pose {
             center: geo::add(b.center, mat_vec(&b.rot, offset)),
-            rot: b.rot,
+            rot: mat_mul(&b.rot, a0),
         },
         None => Pose {
             center: e.center,
-            rot: [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
+            rot: *a0,
         },
     }
 }

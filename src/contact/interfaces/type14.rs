@@ -72,6 +72,9 @@ pub struct Type14 {
     pub body: Option<usize>,
     pub body_mass: f64,
     pub offset: V3,
+    /// The ellipsoid's axes at t = 0 (its skew's; `None`: global).
+    #[serde(default)]
+    pub axes0: Option<[[f64; 3]; 3]>,
     /// Visc: the critical damping fraction of each penetrated node's normal
     /// damper, c = Visc·2·√(k·m) (k the node's stiffness, m its mass).
     #[serde(default)]
@@ -90,7 +93,7 @@ pub struct Type14 {
 impl Type14 {
     fn pose(&self, bodies: &[RigidBodyState]) -> Option<Pose> {
         let e = self.ellipsoid.as_ref()?;
-        Some(ellipsoid::pose(e, self.body, self.offset, bodies))
+        Some(ellipsoid::pose(e, self.body, self.offset, self.axes0.as_ref(), bodies))
     }
 
     /// The normal damper's coefficient for stiffness `k`, mass `m`, normal
@@ -164,6 +167,7 @@ impl InterfaceType for Type14 {
         }
         self.body_mass = carried.body_mass;
         self.offset = carried.offset;
+        self.axes0 = carried.axes0;
         self.ellipsoid = Some(carried.ellipsoid);
         if self.fct_id_ld != 0 {
             self.load = Some(super::bound_curve(m, self.fct_id_ld, kw, "fct_IDld")?);

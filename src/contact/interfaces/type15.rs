@@ -67,6 +67,9 @@ pub struct Type15 {
     /// centre relative to the body's centre at t = 0.
     pub body: Option<usize>,
     pub offset: V3,
+    /// The ellipsoid's axes at t = 0 (its skew's; `None`: global).
+    #[serde(default)]
+    pub axes0: Option<[[f64; 3]; 3]>,
 }
 
 /// The secondary entities of a surface: each 3-node segment as it is, each
@@ -169,7 +172,7 @@ fn node_weights(b: [f64; 3], quad: bool) -> [f64; 4] {
 impl Type15 {
     fn pose(&self, c: &PairContext) -> Option<Pose> {
         let e = self.ellipsoid.as_ref()?;
-        Some(ellipsoid::pose(e, self.body, self.offset, c.bodies))
+        Some(ellipsoid::pose(e, self.body, self.offset, self.axes0.as_ref(), c.bodies))
     }
 
     /// 0.5·h_V/|v_n| over the corners closing on the plane L_t through the
@@ -243,6 +246,7 @@ impl InterfaceType for Type15 {
         }
         self.body = carried.body;
         self.offset = carried.offset;
+        self.axes0 = carried.axes0;
         self.ellipsoid = Some(carried.ellipsoid);
         Ok(())
     }
