@@ -36,15 +36,16 @@ pub struct RigidBodyState {
 }
 
 impl RigidBodyState {
-    /// ½ ωᵀ J ω with J the body's inertia turned to its orientation.
     /// The smallest principal moment of inertia (the eigenvalues of j0:
     /// the body's turning does not change them).
     pub fn smallest_inertia(&self) -> f64 {
-        let [xx, yy, zz, xy, yz, xz] = self.j0;
-        let j = nalgebra::Matrix3::new(xx, xy, xz, xy, yy, yz, xz, yz, zz);
-        j.symmetric_eigenvalues().min()
+        let j = sym(&self.j0);
+        nalgebra::Matrix3::from_fn(|r, c| j[r][c])
+            .symmetric_eigenvalues()
+            .min()
     }
 
+    /// ½ ωᵀ J ω with J the body's inertia turned to its orientation.
     pub fn rotational_energy(&self) -> f64 {
         let (w, r) = (self.omega, &self.rot);
         // ω in the body's initial axes: Rᵀω.

@@ -11,6 +11,7 @@ use crate::contact::friction::{self, FrictionLaw};
 use crate::contact::geometry::{self as geo, V3};
 use crate::kinematics::rigid_body::{mat_mul, mat_vec, transpose, RigidBodyState};
 use crate::model::{self, Ellipsoid};
+use serde::{Deserialize, Serialize};
 
 /// F(ξ) = Σ|ξ_k/a_k|^n.
 pub fn shape_value(xi: V3, axes: V3, n: u32) -> f64 {
@@ -81,6 +82,7 @@ impl Pose {
 }
 
 /// The ellipsoid of an interface's main side and the rigid body carrying it.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Carried {
     pub ellipsoid: Ellipsoid,
     /// The /RBODY whose surf_ID names the ellipsoid (index; `None`: it stays
@@ -138,36 +140,32 @@ pub fn bind(m: &model::Model, surf_idm: model::Id, kw: &str) -> Result<Carried, 
     })
 }
 
-/// The ellipsoid's pose now: its axes those of its skew at t = 0
-/// (`axes0`), carried by its body (centre = body centre + the turned
-/// offset, axes turned with it) or where the deck put it.
-pub fn pose(
-    e: &Ellipsoid,
-    body: Option<usize>,
-    offset: V3,
-    axes0: Option<&[[f64; 3]; 3]>,
-    bodies: &[RigidBodyState],
-) -> Pose {
-    const I: [[f64; 3]; 3] = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
-    let a0 = axes0.unwrap_or(&I);
-    match body.and_then(|b| bodies.get(b)) {
-        Some(b) => Pose {
-            center: geo::add(b.center, mat_vec(&b.rot, offset)),
-            rot: mat_mul(&b.rot, a0),
-        },
-        None => Pose {
-            center: e.center,
-            rot: *a0,
-        },
+impl Carried {
+    /// The ellipsoid's pose now: its axes those of its skew at t = 0
+    /// (`axes0`), carried by its body (centre = body centre + the turned
+    /// offset, axes turned with it) or where the deck put it.
+    pub fn pose(&self, bodies: &[RigidBodyState]) -> Pose {
+        const I: [[f64; 3]; 3] = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+        let a0 = self.axes0.as_ref().unwrap_or(&I);
+        match self.body.and_then(|b| bodies.get(b)) {
+            Some(b) => Pose {
+                center: geo::add(b.center, mat_vec(&b.rot, self.offset)),
+                rot: mat_mul(&b.rot, a0),
+            },
+            None => Pose {
+                center: self.ellipsoid.center,
+                rot: *a0,
+            },
+        }
     }
-}
 
-/// The velocity of the surface at global point x: the body's motion there
-/// (a fixed ellipsoid's is 0).
-pub fn surface_velocity(body: Option<usize>, bodies: &[RigidBodyState], x: V3) -> V3 {
-    match body.and_then(|b| bodies.get(b)) {
-        Some(b) => geo::add(b.v, geo::cross(b.omega, geo::sub(x, b.center))),
-        None => [0.0; 3],
+    /// The velocity of the surface at global point x: the body's motion
+    /// there (a fixed ellipsoid's is 0).
+    pub fn surface_velocity(&self, bodies: &[RigidBodyState], x: V3) -> V3 {
+        match self.body.and_then(|b| bodies.get(b)) {
+            Some(b) => geo::add(b.v, geo::cross(b.omega, geo::sub(x, b.center))),
+            None => [0.0; 3],
+        }
     }
 }
 

@@ -232,17 +232,17 @@ impl InterfaceType for Type11 {
             vm: [c.vm[0], c.vm[1]],
             mm: [mass(&c.main, 0), mass(&c.main, 1)],
             k: self.pair_stiffness(it, p, k, m),
-            gap: it.pair_gap(p, k, m),
+            gap: match &self.penalty25 {
+                Some(q) => super::type25::pair_gap(q, p.sec_gap[k], p.seg_gap[m]),
+                None => it.pair_gap(p, k, m),
+            },
             viss: self.viss,
             friction: &it.friction,
             dt: c.dt,
             soft: self.dyna.map(|d| if d.soft == 1 { d.sofscl } else { 0.0 }),
         };
         let out = match &self.penalty25 {
-            Some(q) => {
-                let gap = super::type25::pair_gap(q, p.sec_gap[k], p.seg_gap[m]);
-                super::type25::edge_pair(&EdgePair { gap, ..inp }, q, st)
-            }
+            Some(q) => super::type25::edge_pair(&inp, q, st),
             None => edge_pair(&inp, st),
         };
         match out {

@@ -43,17 +43,16 @@
 //!   node springs' stiffnesses and K_r = Σ k·r² about the body's centre
 //!   (`contact::pairs`, for every analytic surface on a body).
 
-use super::ellipsoid::{self, distance, shape_value, Pose};
+use super::ellipsoid::{self, distance, shape_value, Carried};
 use super::layout::{Interface, Pass};
 use super::{
     CandidateKind, CandidateSearch, CardCommon, InterfaceType, NodeState, PairContext, PairForce,
     PairOutcome, PairState, SurfaceSizes, NODE_SHAPE,
 };
 use crate::contact::gap::GapRule;
-use crate::contact::geometry::{self as geo, V3};
+use crate::contact::geometry as geo;
 use crate::kinematics::function;
-use crate::kinematics::rigid_body::RigidBodyState;
-use crate::model::{self, Ellipsoid, Function, InterfaceKind};
+use crate::model::{self, Function, InterfaceKind};
 use serde::{Deserialize, Serialize};
 
 /// TYPE14's own options; the ellipsoid, its body and the load curve are
@@ -64,17 +63,10 @@ pub struct Type14 {
     pub fct_id_ld: model::Id,
     pub stif: f64,
     pub gap: f64,
-    pub ellipsoid: Option<Ellipsoid>,
+    /// The ellipsoid and the rigid body carrying it (bound from the model).
+    pub carried: Option<Carried>,
     /// The load curve f(p) (fct_IDld), `None`: linear node springs.
     pub load: Option<Function>,
-    /// The rigid body carrying the ellipsoid (index), its mass, and the
-    /// ellipsoid's centre relative to the body's centre at t = 0.
-    pub body: Option<usize>,
-    pub body_mass: f64,
-    pub offset: V3,
-    /// The ellipsoid's axes at t = 0 (its skew's; `None`: global).
-    #[serde(default)]
-    pub axes0: Option<[[f64; 3]; 3]>,
     /// Visc: the critical damping fraction of each penetrated node's normal
     /// damper, c = Visc·2·√(k·m) (k the node's stiffness, m its mass).
     #[serde(default)]
@@ -91,11 +83,6 @@ pub struct Type14 {
 }
 
 impl Type14 {
-    fn pose(&self, bodies: &[RigidBodyState]) -> Option<Pose> {
-        let e = self.ellipsoid.as_ref()?;
-        Some(ellipsoid::pose(e, self.body, self.offset, self.axes0.as_ref(), bodies))
-    }
-
     /// The normal damper's coefficient for stiffness `k`, mass `m`, normal
     /// speed `v_n` and elastic force `f_e` (module comment).
     fn damping(&self, k: f64, m: f64, v_n: f64, f_e: f64) -> f64 {
@@ -155,8 +142,7 @@ impl InterfaceType for Type14 {
                 "{kw}, field Stif: 0: expected the stiffness (with fct_IDld, the scale of its force) > 0"
             ));
         }
-        self.body = carried.body;
-        if let Some(b) = self.body.map(|b| &m.rigid_bodies[b]) {
+        if let Some(b) = carried.body.map(|b| &m.rigid_bodies[b]) {
             if let Some(n) = i.secondary_nodes.iter().find(|&&n| b.holds(n)) {
                 return Err(format!(
                     "{kw}, field grnd_IDs: node {} is on /RBODY/{}, which carries the \
@@ -165,10 +151,7 @@ impl InterfaceType for Type14 {
                 ));
             }
         }
-        self.body_mass = carried.body_mass;
-        self.offset = carried.offset;
-        self.axes0 = carried.axes0;
-        self.ellipsoid = Some(carried.ellipsoid);
+        self.carried = Some(carried);
         if self.fct_id_ld != 0 {
             self.load = Some(super::bound_curve(m, self.fct_id_ld, kw, "fct_IDld")?);
         }
@@ -203,7 +186,7 @@ impl InterfaceType for Type14 {
     }
 
     fn reaction_body(&self) -> Option<usize> {
-        self.body
+        self.carried.as_ref()?.body
     }
 
     fn is_total_force(&self) -> bool {
@@ -217,19 +200,19 @@ impl InterfaceType for Type14 {
         }
         let (f, tangent) = self.curve(p_max);
         let k = tangent.max(f / p_max);
-        let dt = if self.body.is_some() && k > 0.0 {
-            (2.0 * self.body_mass / k).sqrt()
-        } else {
-            f64::INFINITY
+        let dt = match &self.carried {
+            Some(c) if c.body.is_some() && k > 0.0 => (2.0 * c.body_mass / k).sqrt(),
+            _ => f64::INFINITY,
         };
         (f.max(0.0), dt)
     }
 
     #[inline]
     fn pair(&self, c: &PairContext, _ns: &mut NodeState, st: &mut PairState) -> PairOutcome {
-        let (Some(pose), Some(e)) = (self.pose(c.bodies), self.ellipsoid.as_ref()) else {
+        let Some(carried) = self.carried.as_ref() else {
             return PairOutcome::Free;
         };
+        let (pose, e) = (carried.pose(c.bodies), &carried.ellipsoid);
         let xi = pose.local(c.xs);
         // Screen: the node within the ellipsoid grown by the gap.
         let a_min = e.axes.iter().copied().fold(f64::INFINITY, f64::min);
@@ -269,7 +252,7 @@ impl InterfaceType for Type14 {
         };
         // The normal damper against the surface's velocity at the node's
         // contact point (the body's motion there; a fixed ellipsoid's is 0).
-        let v_surface = ellipsoid::surface_velocity(self.body, c.bodies, point);
+        let v_surface = carried.surface_velocity(c.bodies, point);
         let v_rel = geo::sub(c.vs, v_surface);
         let v_n = geo::dot(v_rel, n);
         let f_e = k * pen;

@@ -43,7 +43,7 @@
 //!   Σ k·r² about its centre, J its smallest principal inertia), as the
 //!   reference adds them to the body's main node.
 
-use super::ellipsoid::{self, Pose};
+use super::ellipsoid::{self, Carried, Pose};
 use super::layout::{Interface, Pass};
 use super::{
     CandidateKind, CandidateSearch, CardCommon, InterfaceType, NodeState, PairContext, PairForce,
@@ -51,7 +51,7 @@ use super::{
 };
 use crate::contact::gap::GapRule;
 use crate::contact::geometry::{self as geo, V3};
-use crate::model::{self, Ellipsoid, InterfaceKind};
+use crate::model::{self, InterfaceKind};
 use serde::{Deserialize, Serialize};
 use std::borrow::Cow;
 
@@ -62,14 +62,8 @@ pub struct Type15 {
     pub surf_idm: model::Id,
     /// Stif: the stiffness at zero penetration.
     pub stif: f64,
-    pub ellipsoid: Option<Ellipsoid>,
-    /// The rigid body carrying the ellipsoid (index), and the ellipsoid's
-    /// centre relative to the body's centre at t = 0.
-    pub body: Option<usize>,
-    pub offset: V3,
-    /// The ellipsoid's axes at t = 0 (its skew's; `None`: global).
-    #[serde(default)]
-    pub axes0: Option<[[f64; 3]; 3]>,
+    /// The ellipsoid and the rigid body carrying it (bound from the model).
+    pub carried: Option<Carried>,
 }
 
 /// The secondary entities of a surface: each 3-node segment as it is, each
@@ -170,11 +164,6 @@ fn node_weights(b: [f64; 3], quad: bool) -> [f64; 4] {
 }
 
 impl Type15 {
-    fn pose(&self, c: &PairContext) -> Option<Pose> {
-        let e = self.ellipsoid.as_ref()?;
-        Some(ellipsoid::pose(e, self.body, self.offset, self.axes0.as_ref(), c.bodies))
-    }
-
     /// 0.5·h_V/|v_n| over the corners closing on the plane L_t through the
     /// centre normal to n (global): the interface's kinematic step.
     fn kinematic(pose: &Pose, t: &[V3; 3], v: &[V3; 3], v_surface: V3, n: V3) -> f64 {
@@ -244,10 +233,7 @@ impl InterfaceType for Type15 {
                 ));
             }
         }
-        self.body = carried.body;
-        self.offset = carried.offset;
-        self.axes0 = carried.axes0;
-        self.ellipsoid = Some(carried.ellipsoid);
+        self.carried = Some(carried);
         Ok(())
     }
 
@@ -269,7 +255,7 @@ impl InterfaceType for Type15 {
     }
 
     fn reaction_body(&self) -> Option<usize> {
-        self.body
+        self.carried.as_ref()?.body
     }
 
     fn kinematic_step(&self, f: &PairForce) -> Option<f64> {
@@ -277,9 +263,10 @@ impl InterfaceType for Type15 {
     }
 
     fn pair(&self, c: &PairContext, ns: &mut NodeState, st: &mut PairState) -> PairOutcome {
-        let (Some(pose), Some(e)) = (self.pose(c), self.ellipsoid.as_ref()) else {
+        let Some(carried) = self.carried.as_ref() else {
             return PairOutcome::Free;
         };
+        let (pose, e) = (carried.pose(c.bodies), &carried.ellipsoid);
         let quad = c.sec.count == 4;
         let t = facet(c.xs_side, quad);
         let Some(fc) = facet_contact(t.map(|x| pose.local(x)), e.axes, e.n) else {
@@ -294,7 +281,7 @@ impl InterfaceType for Type15 {
         let n = pose.turn(fc.normal);
         let point = pose.global(fc.point);
         let (f_n, kt) = normal_force(self.stif, fc.depth, fc.pen);
-        let v_surface = ellipsoid::surface_velocity(self.body, c.bodies, point);
+        let v_surface = carried.surface_velocity(c.bodies, point);
         let v_rel = geo::sub(geo::interpolate(&sec_shape, c.vs_side), v_surface);
         let k = f_n / fc.pen;
         let f_t = ellipsoid::friction(&c.it.friction, c.it.friction.fric, k, f_n, v_rel, n, c.dt, st);
