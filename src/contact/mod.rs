@@ -37,6 +37,7 @@ use crate::parallel::World;
 use exchange::GhostPlan;
 use geometry::{self as geo, V3};
 use interfaces::{CandidateSearch, NodeState, PairState};
+use rayon::prelude::*;
 use search::{Aabb, Candidates};
 use setup::{ContactSetup, NONE};
 
@@ -93,6 +94,11 @@ struct PassRun {
     /// Sorting types: the candidate segments of each node and their pair memory.
     cand: Candidates,
     state: Vec<PairState>,
+    /// Node passes of sorting types: each candidate's distance to its
+    /// segment at the last sort, less a round-off allowance (`pairs::
+    /// sort_distance`), beside `cand.segs`; empty when not measured (after
+    /// a restart, until the next sort).
+    dist_sort: Vec<f64>,
     /// Walk types: one pair per node (its current segment and memory).
     walk_pair: Vec<(u32, PairState)>,
     /// Idel: removed segments and nodes (empty vectors when Idel is off).
@@ -200,6 +206,10 @@ pub struct ContactSystem {
     cv: Vec<V3>,
     avail: Vec<bool>,
     x_sort: Vec<V3>,
+    /// The largest motion of any contact node since the last sort, less a
+    /// common translation (`relative_motion`; all ranks; 0 in a sorting
+    /// cycle).
+    motion: f64,
     plan: GhostPlan,
     runs: Vec<Vec<PassRun>>,
     sorted_once: bool,
@@ -305,6 +315,7 @@ impl ContactSystem {
                                 segs: Vec::new(),
                             },
                             state: Vec::new(),
+                            dist_sort: Vec::new(),
                             walk_pair: vec![(NONE, PairState::default()); n],
                             removal,
                         }
@@ -355,6 +366,7 @@ impl ContactSystem {
             cv: vec![[0.0; 3]; nc],
             avail: vec![false; nc],
             x_sort: setup.x0.clone(),
+            motion: 0.0,
             plan: GhostPlan::default(),
             runs,
             sorted_once: false,
@@ -445,19 +457,22 @@ impl ContactSystem {
         }
         // Sort decision: largest motion since the last sort against half the smallest margin.
         // The same reduction tells whether any rank deleted an element this
-        // cycle (Idel): only then are the deleted ids gathered.
-        let mut motion = [0.0f64, deleted.len() as f64];
+        // cycle (Idel): only then are the deleted ids gathered; and it
+        // bounds the displacements since the sort (`relative_motion`).
+        let mut motion = [f64::NEG_INFINITY; 8];
+        motion[0] = 0.0;
+        motion[1] = deleted.len() as f64;
         for &c in &self.held {
             if self.owned[c as usize] {
-                let d = geo::norm(geo::sub(self.cx[c as usize], self.x_sort[c as usize]));
-                motion[0] = motion[0].max(d);
+                let d = geo::sub(self.cx[c as usize], self.x_sort[c as usize]);
+                motion[0] = motion[0].max(geo::norm(d));
+                for k in 0..3 {
+                    motion[2 + k] = motion[2 + k].max(d[k]);
+                    motion[5 + k] = motion[5 + k].max(-d[k]);
+                }
             }
         }
-        if self.tracks_deletion() {
-            world.max_f64(&mut motion);
-        } else {
-            world.max_f64(&mut motion[..1]);
-        }
+        world.max_f64(&mut motion);
         // A face woken by a deletion needs a sort to become a candidate.
         let mut woke = false;
         if self.tracks_deletion() && motion[1] > 0.0 {
@@ -484,6 +499,7 @@ impl ContactSystem {
         if sort {
             self.rebuild_plan(world);
         }
+        self.motion = if sort { 0.0 } else { relative_motion(&motion) };
         self.plan.exchange(world, &mut self.cx, &mut self.cv);
         self.timers.exchange_s += t0.elapsed().as_secs_f64();
         if sort {
@@ -617,6 +633,7 @@ impl ContactSystem {
                     segs: Vec::with_capacity(run.cand.segs.len()),
                 };
                 let mut state = Vec::with_capacity(run.state.len());
+                let mut dist = Vec::with_capacity(run.dist_sort.len());
                 for j in 0..run.mine.len() {
                     let node_off = run.sec_off(run.mine[j]);
                     for q in run.cand.ptr[j]..run.cand.ptr[j + 1] {
@@ -628,6 +645,9 @@ impl ContactSystem {
                         if let Some(st) = run.state.get(q) {
                             state.push(*st);
                         }
+                        if let Some(&d) = run.dist_sort.get(q) {
+                            dist.push(d);
+                        }
                     }
                     cand.ptr.push(cand.segs.len());
                 }
@@ -635,6 +655,7 @@ impl ContactSystem {
                 if !run.state.is_empty() {
                     run.state = state;
                 }
+                run.dist_sort = dist;
             }
             // Walk types: a node whose segment left starts a fresh pair.
             for wp in run.walk_pair.iter_mut() {
@@ -753,11 +774,40 @@ impl ContactSystem {
                         state.push(st);
                     }
                 }
+                let dist_sort = if p.is_edge_pass() || p.is_segment_pass() {
+                    Vec::new()
+                } else {
+                    self.sort_distances(p, run, &cand)
+                };
                 let run = &mut self.runs[ii][pi];
                 run.cand = cand;
                 run.state = state;
+                run.dist_sort = dist_sort;
             }
         }
+    }
+
+    /// Each candidate's distance to its segment now (`pairs::sort_distance`;
+    /// −∞ where a segment node is not on this rank or the pass has no
+    /// segments), for the pairs' motion bound.
+    fn sort_distances(&self, p: &setup::Pass, run: &PassRun, cand: &Candidates) -> Vec<f64> {
+        if p.segs.is_empty() {
+            return Vec::new();
+        }
+        (0..run.mine.len())
+            .into_par_iter()
+            .flat_map_iter(|j| {
+                let xs = self.cx[p.sec[run.mine[j] as usize] as usize];
+                cand.segs[cand.ptr[j]..cand.ptr[j + 1]]
+                    .iter()
+                    .map(move |&m| {
+                        self.seg_x(&p.segs[m as usize])
+                            .map_or(f64::NEG_INFINITY, |xm| {
+                                pairs::sort_distance(xs, &xm, p.is_tri(m as usize))
+                            })
+                    })
+            })
+            .collect()
     }
 
     /// The candidates of a node pass: the main segments within gap +
@@ -997,6 +1047,21 @@ fn edge_initial_penetrations(it: &setup::Interface, p: &setup::Pass, run: &mut P
             }
         }
         run.nodes[j].off_segs.sort_unstable();
+    }
+}
+
+/// How far any contact node has moved since the last sort, apart from a
+/// common translation T (a distance between nodes and segments does not
+/// see T): the smaller of the largest displacement (`m[0]`, T = 0) and
+/// half the diagonal of the displacements' box (T its centre; `m[2..5]`
+/// the largest components, `m[5..8]` the largest negated ones).
+fn relative_motion(m: &[f64; 8]) -> f64 {
+    let diag2: f64 = (0..3).map(|k| (m[2 + k] + m[5 + k]).powi(2)).sum();
+    let half = 0.5 * diag2.sqrt();
+    if half.is_finite() {
+        m[0].min(half)
+    } else {
+        m[0]
     }
 }
 

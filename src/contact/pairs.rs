@@ -76,6 +76,9 @@ struct PassView<'a> {
     scale: Option<f64>,
     /// The interface's memory this cycle (`PairContext::memory`).
     memory: [f64; 2],
+    /// The largest motion of a contact node since the last sort, less a
+    /// common translation.
+    motion: f64,
 }
 
 /// One owned secondary node's memory.
@@ -187,6 +190,7 @@ impl ContactSystem {
             bodies,
             scale,
             memory: self.total_memory[ii],
+            motion: self.motion,
         };
         it.options.visit(PassPairs {
             v: &view,
@@ -267,6 +271,7 @@ fn pass_pairs<T: InterfaceType>(ty: &T, v: &PassView, run: &mut PassRun) -> Vec<
         nodes,
         cand,
         state,
+        dist_sort,
         walk_pair,
         removal,
     } = run;
@@ -280,6 +285,7 @@ fn pass_pairs<T: InterfaceType>(ty: &T, v: &PassView, run: &mut PassRun) -> Vec<
     }
     let cand = &*cand;
     let removal = &*removal;
+    let dist_sort = &dist_sort[..];
     mine.par_iter()
         .zip(nodes.par_iter_mut())
         .zip(slices.into_par_iter())
@@ -291,21 +297,24 @@ fn pass_pairs<T: InterfaceType>(ty: &T, v: &PassView, run: &mut PassRun) -> Vec<
                 pairs,
                 walk_pair,
             };
-            let segs = &cand.segs[cand.ptr[j]..cand.ptr[j + 1]];
-            node_pairs(ty, v, removal, k as usize, segs, mem)
+            let r = cand.ptr[j]..cand.ptr[j + 1];
+            let dist = dist_sort.get(r.clone()).unwrap_or(&[]);
+            node_pairs(ty, v, removal, k as usize, &cand.segs[r], dist, mem)
         })
         .filter(|o| !o.is_nothing())
         .collect()
 }
 
 /// The pairs of secondary node k (index into the pass's `sec`): its sorted
-/// candidates `segs`, or the segment its walk reaches.
+/// candidates `segs` (with their distances at the sort, `dist`, or none),
+/// or the segment its walk reaches.
 fn node_pairs<T: InterfaceType>(
     ty: &T,
     v: &PassView,
     removal: &Removal,
     k: usize,
     segs: &[u32],
+    dist: &[f64],
     mem: NodeMemory,
 ) -> NodeOut {
     let mut out = NodeOut::default();
@@ -332,6 +341,10 @@ fn node_pairs<T: InterfaceType>(
         }
         CandidateSearch::Sort => {
             for (q, &m) in segs.iter().enumerate() {
+                let d = dist.get(q).copied().unwrap_or(f64::NEG_INFINITY);
+                if d - 2.0 * v.motion >= 0.0 && moved_free(ty, v, k, m, d, ns, &mut mem.pairs[q]) {
+                    continue;
+                }
                 if !one_pair(ty, v, k, m, ns, &mut mem.pairs[q], &mut out) {
                     return NodeOut::default();
                 }
@@ -546,10 +559,11 @@ fn one_pair<T: InterfaceType>(
 }
 
 /// Whether pair (k, m) of a secondary node is beyond its type's reach
-/// ([`InterfaceType::free_beyond`]), from the positions alone: its memory
-/// then takes [`InterfaceType::when_free`], as the kernel would do. A pair
-/// whose nodes are not all on this rank is left to `pair_values`, which
-/// skips it the same way.
+/// ([`InterfaceType::free_beyond`]), from the positions alone (outside the
+/// ball of the segment's nodes, else by the distance to its closest point,
+/// the kernel's own): its memory then takes [`InterfaceType::when_free`],
+/// as the kernel would do. A pair whose nodes are not all on this rank is
+/// left to `pair_values`, which skips it the same way.
 fn surely_free<T: InterfaceType>(
     ty: &T,
     v: &PassView,
@@ -569,11 +583,56 @@ fn surely_free<T: InterfaceType>(
     let Some(xm) = seg_values(&v.p.segs[m as usize], v.avail, v.cx) else {
         return false;
     };
-    if !geo::beyond_reach(v.cx[s], &xm, v.p.is_tri(m as usize), reach) {
+    let tri = v.p.is_tri(m as usize);
+    if !geo::beyond_reach(v.cx[s], &xm, tri, reach) && geo::project(v.cx[s], &xm, tri).dist < reach
+    {
         return false;
     }
     ty.when_free(st);
     true
+}
+
+/// A node's distance to a segment as the sort measures it for the motion
+/// bound of [`moved_free`]: the distance to the segment's closest point
+/// (`segment_geometry::project`), less an allowance for the round-off of
+/// this and of the kernel's own distance (10⁻⁹ of the largest coordinate,
+/// far above it, far below any gap).
+pub(super) fn sort_distance(xs: V3, xm: &[V3; 4], tri: bool) -> f64 {
+    let n = if tri { 3 } else { 4 };
+    let scale = xm[..n]
+        .iter()
+        .chain(std::iter::once(&xs))
+        .flat_map(|x| x.iter())
+        .fold(0.0f64, |a, &c| a.max(c.abs()));
+    geo::project(xs, xm, tri).dist - 1e-9 * scale
+}
+
+/// Whether pair (k, m) is beyond its type's reach ([`InterfaceType::
+/// free_beyond`]) by its distance at the sort alone, `d`: apart from a
+/// common translation, which no distance sees, no node has moved more than
+/// `v.motion` since, and every point of a segment is a convex combination
+/// of its nodes, so the distance now is at least d − 2·motion.
+/// Its memory then takes [`InterfaceType::when_free`], as the kernel would
+/// do; nothing is gathered.
+fn moved_free<T: InterfaceType>(
+    ty: &T,
+    v: &PassView,
+    k: usize,
+    m: u32,
+    d: f64,
+    ns: &NodeState,
+    st: &mut PairState,
+) -> bool {
+    if ns.off_segs.binary_search(&m).is_ok() {
+        return true;
+    }
+    match ty.free_beyond(v.it, v.p, k, m as usize, ns, st) {
+        Some(reach) if d - 2.0 * v.motion >= reach => {
+            ty.when_free(st);
+            true
+        }
+        _ => false,
+    }
 }
 
 /// Contributions of one pair: +w_j·F on the secondary side's nodes, −N_i·F
@@ -658,5 +717,67 @@ mod tests {
         assert_eq!(out.sums.pairs, 1);
         assert_eq!(out.sums.f_normal, [0.0, 0.0, 8.0]);
         assert_eq!(out.sums.energy, 8.0);
+    }
+
+    /// xorshift numbers in [−1, 1).
+    struct Rng(u64);
+    impl Rng {
+        fn next(&mut self) -> f64 {
+            self.0 ^= self.0 << 13;
+            self.0 ^= self.0 >> 7;
+            self.0 ^= self.0 << 17;
+            (self.0 >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+        }
+        fn v3(&mut self, s: f64) -> V3 {
+            [s * self.next(), s * self.next(), s * self.next()]
+        }
+    }
+
+    /// The motion bound of `moved_free`: after any motion of the node and
+    /// the segment's nodes that differs from a common translation by at
+    /// most `motion` (`relative_motion` of their displacements), the
+    /// kernel's distance is at least the sort's distance less 2·motion, for
+    /// quads and triangles, near and far, large coordinates included.
+    #[test]
+    fn the_distance_at_the_sort_less_twice_the_motion_bounds_the_distance_now() {
+        let mut r = Rng(0x2545_f491_4f6c_dd1d);
+        for case in 0..20000 {
+            let base = r.v3(if case % 2 == 0 { 1.0 } else { 1e4 });
+            let tri = case % 3 == 0;
+            let mut xm = [[0.0; 3]; 4];
+            for x in xm.iter_mut() {
+                *x = geo::add(base, r.v3(1.0));
+            }
+            let xs = geo::add(base, r.v3(1.5));
+            let d = sort_distance(xs, &xm, tri);
+            // Displacements: a translation t plus at most m each.
+            let t = r.v3(3.0);
+            let m = 0.2 * r.next().abs();
+            let mut ext = [f64::NEG_INFINITY; 8];
+            ext[0] = 0.0;
+            let mut moved = |x: V3, r: &mut Rng| {
+                let u = r.v3(1.0);
+                let u = geo::scale(u, m * r.next().abs() / geo::norm(u).max(1e-300));
+                let dx = geo::add(t, u);
+                ext[0] = ext[0].max(geo::norm(dx));
+                for k in 0..3 {
+                    ext[2 + k] = ext[2 + k].max(dx[k]);
+                    ext[5 + k] = ext[5 + k].max(-dx[k]);
+                }
+                geo::add(x, dx)
+            };
+            let xs2 = moved(xs, &mut r);
+            let mut xm2 = xm;
+            for x in xm2.iter_mut() {
+                *x = moved(*x, &mut r);
+            }
+            let motion = super::super::relative_motion(&ext);
+            assert!(motion <= 0.2 * 3f64.sqrt() + 1e-12, "case {case}: {motion}");
+            let now = geo::project(xs2, &xm2, tri).dist;
+            assert!(
+                now >= d - 2.0 * motion,
+                "case {case}: {now} < {d} - 2·{motion}"
+            );
+        }
     }
 }

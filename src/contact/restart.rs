@@ -310,6 +310,8 @@ impl ContactSystem {
                 }
                 run.cand = cand;
                 run.state = state;
+                // Measured again at the next sort.
+                run.dist_sort = Vec::new();
                 run.nodes = nodes;
                 run.walk_pair = walk_pair;
             }

@@ -459,11 +459,15 @@ pub trait InterfaceType: Sync {
     fn pair(&self, c: &PairContext, ns: &mut NodeState, st: &mut PairState) -> PairOutcome;
 
     /// A reach beyond which pair (k, m) of a secondary node is free whatever
-    /// the velocities: a node farther than it from the ball holding segment
-    /// `m`'s nodes makes [`Self::pair`] return `Free`, having done to the
-    /// pair's memory only [`Self::when_free`]. The pass then skips the pair
-    /// without gathering its velocities (most candidates of a sort are out
-    /// of reach at a given cycle). `None`: every pair goes to the kernel.
+    /// the velocities: a node at least this far from segment `m` (from its
+    /// closest point, `segment_geometry::project`, and so also one farther
+    /// than it from the ball holding the segment's nodes) makes
+    /// [`Self::pair`] return `Free`, having done to the pair's memory only
+    /// [`Self::when_free`]. The pass then skips the pair without gathering
+    /// its velocities, or even its positions while the distance at the last
+    /// sort less twice the motion since exceeds the reach (most candidates
+    /// of a sort are out of reach at a given cycle). `None`: every pair goes
+    /// to the kernel.
     fn free_beyond(
         &self,
         _it: &Interface,

@@ -444,8 +444,11 @@ fn final_block(
             s.contact.owned_secondary() as f64,
             s.contact.candidate_count() as f64,
         ];
-        cx.world.sum_f64(&mut nsec);
         let tm = s.contact.timers;
+        // The largest rank's force time and candidates: the balance.
+        let mut most = [tm.force_s, nsec[1]];
+        cx.world.sum_f64(&mut nsec);
+        cx.world.max_f64(&mut most);
         let per = |sec: f64| 1e6 * sec / (s.cycle.max(1) as f64 * nsec[0].max(1.0));
         (
             tm.sorts,
@@ -454,6 +457,7 @@ fn final_block(
             per(tm.force_s),
             per(tm.exchange_s),
             nsec[1] as u64,
+            (per(most[0]), most[1] as u64),
         )
     });
     // Peak resident memory: the sum over the ranks and the largest rank.
@@ -501,6 +505,12 @@ fn final_block(
             "     CONTACT                 : {} sorts, {} secondary nodes, {:.4} µs search + {:.4} µs forces + {:.4} µs exchange per secondary node-cycle (rank 0); {} candidate pairs after the last sort",
             c.0, c.1, c.2, c.3, c.4, c.5
         ));
+        if cx.world.size() > 1 {
+            l.line(&format!(
+                "                               the slowest rank: {:.4} µs forces; the most candidate pairs on one rank: {}",
+                c.6 .0, c.6 .1
+            ));
+        }
     }
     let (elapsed, looped) = (times.elapsed, times.looped);
     l.line(&format!(
