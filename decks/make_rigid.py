@@ -17,6 +17,11 @@ Units: kg, mm, ms (force kN, stress GPa). Steel shells: E = 210, nu = 0.3.
                sits on an edge of the other surface (block nodes at -10, 0,
                10 mm; ground nodes at -20, -12, -4, 4, 12, 20 mm): the block
                stays level, every node at the same penetration.
+* type6_slide  type6_rest pushed sideways by W/2 with Fric 0.4 and friction
+               curves of the node's normal force (0.5) and sliding speed
+               (0.75): it slides at (W/2 - 0.15 W)/M; its damper given by
+               the damping curves as Visc's. type6_slide_plain: the same
+               with Fric 0.15 and Visc on the card, no curves.
 * type14_sphere   a rigid sphere (/SURF/ELLIPS, R = 100 mm, on an /RBODY of
                10 kg with no elements) dropped at 2 mm/ms on a fixed shell
                plate (200 x 200 mm, 10 mm shells, a node under the impact
@@ -72,20 +77,22 @@ def rbody(rid, title, main, gid, mass=0.0):
 
 
 def inter6(iid, title, surf1, surf2, fct, fscale, ascale, visc, fric=0.0, gap=0.0,
-           iform=0, fct_ul=0, stiff=0.0, fscale_ul=0.0):
-    """/INTER/TYPE6 in the 2017 and later layout (src/deck/interfaces.rs read_type6)."""
+           iform=0, fct_ul=0, stiff=0.0, fscale_ul=0.0, node_fcts=(0, 0, 0, 0), fscalev=0.0):
+    """/INTER/TYPE6 in the 2017 and later layout (src/deck/interfaces.rs read_type6);
+    node_fcts: fct_IDff, fct_IDfv, fct_IDdv, fct_IDdf."""
+    ff, fv, dv, df = node_fcts
     return [f"/INTER/TYPE6/{iid}", title,
             "#  surf_ID1  surf_ID2", i10(surf1) + i10(surf2),
             "#              Sfric                Fric                 Gap              Tstart               Tstop",
             r20(0) + r20(fric) + r20(gap) + r20(0) + r20(0),
             "#                 IRS       IRm    Inacti  fct_IDff  fct_IDfv             Ascalef             Ascalev",
-            " " * 10 + i10(0) * 5 + r20(0) * 2,
+            " " * 10 + i10(0) * 3 + i10(ff) + i10(fv) + r20(0) * 2,
             "# fct_IDld     Iform             Ascalex            FscaleId      Icor",
             i10(fct) + i10(iform) + r20(ascale) + r20(fscale) + i10(0),
             "# fct_IDul                         Stiff            Fscaleul",
             i10(fct_ul) + " " * 10 + r20(stiff) + r20(fscale_ul),
             "#               Visc  fct_IDdv  fct_IDdf             Fscalev",
-            r20(visc) + i10(0) * 2 + r20(0)]
+            r20(visc) + i10(dv) + i10(df) + r20(fscalev)]
 
 
 def blocks():
@@ -119,6 +126,49 @@ def type6_rest(name="type6_rest"):
     S += ["/END"]
     N = engine(name, TEND, -500, comments=[f"{TEND:g} ms; rests at p* = {rest_penetration():.6g} mm."])
     return name, S, N
+
+
+# type6_slide
+FRIC6 = 0.4                     # Fric on the card
+G_FF6, G_FV6 = 0.5, 0.75        # the friction factors' constant values
+P6 = 0.5 * W                    # kN, the lateral push
+
+
+def type6_slide(name="type6_slide", curves=True):
+    """type6_rest pushed sideways by P6 with Fric FRIC6 and friction curves
+    g_ff = G_FF6 (of the node's normal force) and g_fv = G_FV6 (of its
+    sliding speed): it slides at (P6 - mu W)/M, mu = FRIC6 G_FF6 G_FV6; its
+    damper given as Fscalev g_dv(v_n) g_df(F), g_dv(v) = v, g_df = 1/2,
+    Fscalev = 2 VISC: VISC v_n, as type6_rest's Visc. Without `curves`
+    (type6_slide_plain) the card gives their products: Fric = mu, Visc."""
+    mu = FRIC6 * G_FF6 * G_FV6
+    what = ("with friction curves of the normal force and of the sliding speed, and damping curves"
+            if curves else f"Fric {mu:g} and Visc: type6_slide's curves as plain values")
+    S = header(name, "TYPE6 friction and damping: a rigid block slides on a rigid ground", [
+        f"type6_rest's block pushed sideways by {P6:g} kN through /INTER/TYPE6,",
+        f"{what} (decks/make_rigid.py)."])
+    S += blocks()
+    S += funct(1, "constant", [(0.0, 1.0), (1000.0, 1.0)])
+    S += funct(2, "loading force vs penetration", CURVE)
+    if curves:
+        S += funct(3, "friction factor vs normal force", [(0.0, G_FF6), (1000.0, G_FF6)])
+        S += funct(4, "friction factor vs sliding speed", [(0.0, G_FV6), (1000.0, G_FV6)])
+        S += funct(5, "damping force vs normal speed", [(-1000.0, -1000.0), (1000.0, 1000.0)])
+        S += funct(6, "damping factor vs normal force", [(0.0, 0.5), (1000.0, 0.5)])
+    S += cload(1, "weight on the block", 1, "Z", 4, -W)
+    S += cload(2, "push on the block", 1, "X", 4, P6)
+    if curves:
+        S += inter6(1, "block on ground", 1, 2, 2, FSCALE, ASCALE, 0.0, fric=FRIC6,
+                    node_fcts=(3, 4, 5, 6), fscalev=2.0 * VISC)
+    else:
+        S += inter6(1, "block on ground", 1, 2, 2, FSCALE, ASCALE, VISC, fric=mu)
+    S += ["/END"]
+    N = engine(name, TEND, -500, comments=[f"{TEND:g} ms; slides at (P - mu W)/M."])
+    return name, S, N
+
+
+def type6_slide_plain():
+    return type6_slide("type6_slide_plain", curves=False)
 
 
 # type14_sphere
@@ -369,7 +419,7 @@ def type15_roll(name="type15_roll"):
     return name, S, N
 
 
-DECKS = {"type15_drop": type15_drop, "type15_roll": type15_roll, "type6_rest": type6_rest, "type14_damped": type14_damped, "type14_slide": type14_slide, "type14_sphere": type14_sphere, "type6_drop": type6_drop,
+DECKS = {"type6_slide": type6_slide, "type6_slide_plain": type6_slide_plain, "type15_drop": type15_drop, "type15_roll": type15_roll, "type6_rest": type6_rest, "type14_damped": type14_damped, "type14_slide": type14_slide, "type14_sphere": type14_sphere, "type6_drop": type6_drop,
          "type6_drop_ul": type6_drop_ul}
 
 if __name__ == "__main__":

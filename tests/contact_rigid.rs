@@ -36,6 +36,9 @@
 //! friction (type14_slide): a node sliding on the ellipsoid is braked by
 //! μ·W; its functions (fct_IDd1, fct_IDd2 set the damper's coefficient,
 //! fct_IDf scales μ) on the same decks, against the same analytic answers.
+//!
+//! TYPE6's friction and damping curves (type6_slide): the products they
+//! give, and the sliding block's acceleration (P − μW)/M.
 
 mod common;
 #[path = "contact_common/mod.rs"]
@@ -161,6 +164,57 @@ fn type6_options_it_does_not_compute_stop_the_run_by_name() {
     assert!(
         err.contains("/INTER/TYPE6/1") && err.contains("Icor"),
         "{err}"
+    );
+}
+
+/// TYPE6's friction and damping curves (type6_slide, decks/make_rigid.py):
+/// the block pressed by W and pushed sideways by P = W/2, Fric 0.4 with a
+/// friction curve of the node's normal force (0.5) and one of its sliding
+/// speed (0.75), and a damper given as Fscalev·g_dv(v_n)·g_df(F) with
+/// g_dv(v) = v, g_df = ½, Fscalev = 2·Visc:
+///
+/// - it runs as the plain card with μ = 0.4·0.5·0.75 = 0.15 and Visc
+///   (type6_slide_plain), within round-off;
+/// - between 10 and 15 ms (settled, sliding at the cap) it accelerates at
+///   (P − μW)/M, within 1%.
+#[test]
+fn type6_friction_and_damping_curves_act_as_their_factors() {
+    let curves = run(
+        &deck("type6_slide"),
+        &scratch("type6_slide"),
+        &RunArgs::default(),
+    );
+    let plain = run(
+        &deck("type6_slide_plain"),
+        &scratch("type6_slide_plain"),
+        &RunArgs::default(),
+    );
+    let (a, b) = (curves.final_state(), plain.final_state());
+    assert_eq!(a.len(), b.len());
+    for (n, sa) in &a {
+        for k in 0..6 {
+            assert!(
+                (sa[k] - b[n][k]).abs() < 1e-9,
+                "node {n}, column {k}: {} with curves, {} plain",
+                sa[k],
+                b[n][k]
+            );
+        }
+    }
+    // The same run stopped at 10 ms.
+    let dir = scratch("type6_slide_10");
+    let d = common::deck_variant("type6_slide", &dir, |_, _| None);
+    let engine = d.with_file_name("type6_slide_0001.rad");
+    let text = std::fs::read_to_string(&engine).unwrap();
+    std::fs::write(&engine, text.replace("\n15\n", "\n10\n")).unwrap();
+    let early = run(&d, &dir.join("run"), &RunArgs::default());
+    assert!(early.listing.normal_termination());
+    let (mu, p, m) = (0.4 * 0.5 * 0.75, 0.5 * W, 1.0 + 7.85e-6 * 400.0);
+    let accel = (a[&2000][3] - early.final_state()[&2000][3]) / 5.0;
+    let expected = (p - mu * W) / m;
+    assert!(
+        (accel - expected).abs() < 0.01 * expected,
+        "acceleration {accel}, expected (P - mu W)/M = {expected}"
     );
 }
 

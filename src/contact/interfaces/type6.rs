@@ -63,6 +63,35 @@ pub struct Type6 {
     pub unload: Option<Function>,
     #[serde(default)]
     pub fscale_ul: f64,
+    /// The node curves' ids (fct_IDff, fct_IDfv, fct_IDdv, fct_IDdf; 0:
+    /// none) and the curves `bind` finds for them.
+    #[serde(default)]
+    pub node_fct_ids: [model::Id; 4],
+    #[serde(default)]
+    pub node_curves: NodeCurves,
+    /// Ascalef, Ascalev: the abscissa scales of the normal-force and the
+    /// velocity arguments; Fscalev: fct_IDdv's ordinate scale.
+    #[serde(default)]
+    pub ascalef: f64,
+    #[serde(default)]
+    pub ascalev: f64,
+    #[serde(default)]
+    pub fscalev: f64,
+}
+
+/// TYPE6's curves of a penetrated node's friction and damping (reference
+/// guide /INTER/TYPE6; research note type6_type14_type15_research.md §2.1),
+/// each of the node's normal force F (its share of the curve's force) over
+/// Ascalef or of a speed over Ascalev:
+/// μ = Fric·g_ff(F/Ascalef)·g_fv(v_t/Ascalev), and the normal damper
+/// −[Visc·v_n + Fscalev·g_dv(v_n/Ascalev)]·g_df(F/Ascalef). A missing
+/// factor counts 1, a missing g_dv 0.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct NodeCurves {
+    pub friction_of_force: Option<Function>,
+    pub friction_of_speed: Option<Function>,
+    pub damping_of_speed: Option<Function>,
+    pub damping_of_force: Option<Function>,
 }
 
 impl Type6 {
@@ -100,6 +129,33 @@ impl Type6 {
         };
         *memory = [p, f];
         (f, f == along)
+    }
+
+    /// A curve of the node curves at x over its abscissa scale, or `none`.
+    fn at(f: &Option<Function>, x: f64, ascale: f64, none: f64) -> f64 {
+        f.as_ref()
+            .map_or(none, |f| function::scaled(f, x, ascale, 1.0))
+    }
+
+    /// The normal damper of a penetrated node of elastic share `f_e` and
+    /// normal speed `v_n` (positive leaving): −[Visc·v_n +
+    /// Fscalev·g_dv(v_n/Ascalev)]·g_df(f_e/Ascalef), added to f_e.
+    fn damper(&self, f_e: f64, v_n: f64) -> f64 {
+        let c = &self.node_curves;
+        if self.visc == 0.0 && c.damping_of_speed.is_none() {
+            return 0.0;
+        }
+        let of_speed = self.fscalev * Self::at(&c.damping_of_speed, v_n, self.ascalev, 0.0);
+        let factor = Self::at(&c.damping_of_force, f_e, self.ascalef, 1.0);
+        -(self.visc * v_n + of_speed) * factor
+    }
+
+    /// μ's factor at a node of elastic share `f_e` sliding at `speed`:
+    /// g_ff(f_e/Ascalef)·g_fv(speed/Ascalev).
+    fn friction_factor(&self, f_e: f64, speed: f64) -> f64 {
+        let c = &self.node_curves;
+        Self::at(&c.friction_of_force, f_e, self.ascalef, 1.0)
+            * Self::at(&c.friction_of_speed, speed, self.ascalev, 1.0)
     }
 }
 
@@ -153,6 +209,11 @@ impl InterfaceType for Type6 {
             fct_id_ul: t.fct_id_ul,
             unload: None,
             fscale_ul: t.fscale_ul,
+            node_fct_ids: [t.fct_id_ff, t.fct_id_fv, t.fct_id_dv, t.fct_id_df],
+            node_curves: NodeCurves::default(),
+            ascalef: t.ascalef,
+            ascalev: t.ascalev,
+            fscalev: t.fscalev,
         };
         Some((own, common))
     }
@@ -163,14 +224,10 @@ impl InterfaceType for Type6 {
         };
         if t.sfric != 0.0 {
             Some("a static friction force (Sfric)")
-        } else if t.fct_id_ff != 0 || t.fct_id_fv != 0 {
-            Some("friction factor functions (fct_IDff, fct_IDfv)")
         } else if t.icor != 0 {
             Some("the force correction of an initial intersection (Icor = 1)")
         } else if t.inacti != 0 {
             Some("Inacti = 5 (variable gap for initial penetrations)")
-        } else if t.fct_id_dv != 0 || t.fct_id_df != 0 {
-            Some("damping functions (fct_IDdv, fct_IDdf)")
         } else if t.irs == 1 || t.irm == 1 {
             Some("reversed segment normals (IRS or IRm = 1)")
         } else {
@@ -185,6 +242,17 @@ impl InterfaceType for Type6 {
         if self.iform == 1 && self.fct_id_ul != 0 {
             self.unload = Some(super::bound_curve(m, self.fct_id_ul, kw, "fct_IDul")?);
         }
+        let [ff, fv, dv, df] = self.node_fct_ids;
+        let curve = |id: model::Id, field: &str| match id {
+            0 => Ok(None),
+            id => super::bound_curve(m, id, kw, field).map(Some),
+        };
+        self.node_curves = NodeCurves {
+            friction_of_force: curve(ff, "fct_IDff")?,
+            friction_of_speed: curve(fv, "fct_IDfv")?,
+            damping_of_speed: curve(dv, "fct_IDdv")?,
+            damping_of_force: curve(df, "fct_IDdf")?,
+        };
         let mut bodies = [0usize; 2];
         for (b, (segs, field)) in bodies.iter_mut().zip([
             (&i.secondary_segments, "surf_ID1"),
@@ -312,11 +380,13 @@ impl InterfaceType for Type6 {
             });
         };
         let vrel = geo::sub(c.vs, geo::interpolate(&pr.shape, c.vm));
-        let f_n = (fac * pen - self.visc * geo::dot(vrel, n)).max(0.0);
+        let f_e = fac * pen;
+        let f_n = (f_e + self.damper(f_e, geo::dot(vrel, n))).max(0.0);
         let law = &c.it.friction;
         let f_t = if law.active() && f_n > 0.0 {
             let vt = friction::tangential(vrel, n);
-            let mu = law.mu(0.0, geo::norm(vt));
+            let speed = geo::norm(vt);
+            let mu = law.mu(0.0, speed) * self.friction_factor(f_e, speed);
             friction::tangential_force(law, mu, f_n, vt, n, 0.1 * fac, 0.0, c.dt, &mut st.ft)
         } else {
             st.ft = [0.0; 3];
@@ -363,6 +433,11 @@ mod tests {
             fct_id_ul: 0,
             unload: None,
             fscale_ul: 1.0,
+            node_fct_ids: [0; 4],
+            node_curves: NodeCurves::default(),
+            ascalef: 1.0,
+            ascalev: 1.0,
+            fscalev: 1.0,
         }
     }
 
