@@ -287,6 +287,24 @@ fn type5_idel_2_removes_the_segments_idel_0_keeps_them() {
     assert!(r0b.final_state_bytes() == r0.final_state_bytes());
 }
 
+/// IRM = 1 (always reverse the main normals) is not computed: the run
+/// stops with exit 2 naming it, rather than penetrate the other way.
+#[test]
+fn type5_reversed_main_normals_stop_the_run_by_name() {
+    let dir = scratch("idel-t5-irm1");
+    let d = common::deck_variant("idel_gap_t5", &dir, |i, lines| {
+        (i >= 1 && lines[i - 1].starts_with("#      IBC                 IRM"))
+            .then(|| common::set_cols(lines[i], 20, 30, 1))
+    });
+    let out = common::crashsim(&["run", d.to_str().unwrap(), "--out", dir.to_str().unwrap()]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("/INTER/TYPE5/1") && err.contains("IRM = 1"),
+        "{err}"
+    );
+}
+
 #[test]
 fn type25_idel_2_removes_the_segments_idel_0_keeps_them() {
     let r0 = run_idel("idel_gap_t25", 0, "t25-0", 1);
