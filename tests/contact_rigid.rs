@@ -203,11 +203,15 @@ fn type6_friction_and_damping_curves_act_as_their_factors() {
     }
     // The same run stopped at 10 ms.
     let dir = scratch("type6_slide_10");
-    let d = common::deck_variant("type6_slide", &dir, |_, _| None);
-    let engine = d.with_file_name("type6_slide_0001.rad");
-    let text = std::fs::read_to_string(&engine).unwrap();
-    std::fs::write(&engine, text.replace("\n15\n", "\n10\n")).unwrap();
-    let early = run(&d, &dir.join("run"), &RunArgs::default());
+    let engine = engine_variant(&deck("type6_slide"), &dir.join("engine"), -500, Some(10.0));
+    let early = run(
+        &deck("type6_slide"),
+        &dir,
+        &RunArgs {
+            engine: Some(engine),
+            ..Default::default()
+        },
+    );
     assert!(early.listing.normal_termination());
     let (mu, p, m) = (0.4 * 0.5 * 0.75, 0.5 * W, 1.0 + 7.85e-6 * 400.0);
     let accel = (a[&2000][3] - early.final_state()[&2000][3]) / 5.0;

@@ -335,24 +335,30 @@ fn node_pairs<T: InterfaceType>(
                 wp.1.side = side;
             }
             wp.0 = m;
-            if !one_pair(ty, v, k, m, ns, &mut wp.1, &mut out) {
+            if !one_pair(ty, v, k, m, f64::NEG_INFINITY, ns, &mut wp.1, &mut out) {
                 return NodeOut::default();
             }
         }
         CandidateSearch::Sort => {
             for (q, &m) in segs.iter().enumerate() {
                 let d = dist.get(q).copied().unwrap_or(f64::NEG_INFINITY);
-                if d - 2.0 * v.motion >= 0.0 && moved_free(ty, v, k, m, d, ns, &mut mem.pairs[q]) {
-                    continue;
-                }
-                if !one_pair(ty, v, k, m, ns, &mut mem.pairs[q], &mut out) {
+                if !one_pair(ty, v, k, m, d, ns, &mut mem.pairs[q], &mut out) {
                     return NodeOut::default();
                 }
             }
         }
         CandidateSearch::Analytic => {
             // One pair per node, against main entity 0 (the analytic surface).
-            if !one_pair(ty, v, k, 0, ns, &mut mem.walk_pair.1, &mut out) {
+            if !one_pair(
+                ty,
+                v,
+                k,
+                0,
+                f64::NEG_INFINITY,
+                ns,
+                &mut mem.walk_pair.1,
+                &mut out,
+            ) {
                 return NodeOut::default();
             }
         }
@@ -378,7 +384,7 @@ fn node_pairs<T: InterfaceType>(
             if wp.0 != m {
                 *wp = (m, PairState::default());
             }
-            if !one_pair(ty, v, k, m, ns, &mut wp.1, &mut out) {
+            if !one_pair(ty, v, k, m, f64::NEG_INFINITY, ns, &mut wp.1, &mut out) {
                 return NodeOut::default();
             }
         }
@@ -499,11 +505,15 @@ fn nearest<T: InterfaceType>(
 
 /// Pair (secondary entity k, main entity m) through the type's kernel, its
 /// contributions added to `out`; false when the entity leaves the interface.
+/// `d_sort`: the pair's distance at the last sort (`sort_distance`), −∞
+/// when not measured.
+#[allow(clippy::too_many_arguments)]
 fn one_pair<T: InterfaceType>(
     ty: &T,
     v: &PassView,
     k: usize,
     m: u32,
+    d_sort: f64,
     ns: &mut NodeState,
     st: &mut PairState,
     out: &mut NodeOut,
@@ -511,7 +521,7 @@ fn one_pair<T: InterfaceType>(
     if ns.off_segs.binary_search(&m).is_ok() {
         return true;
     }
-    if surely_free(ty, v, k, m, ns, st) {
+    if surely_free(ty, v, k, m, d_sort, ns, st) {
         return true;
     }
     let Some(pv) = pair_values(v, k, m) else {
@@ -559,16 +569,22 @@ fn one_pair<T: InterfaceType>(
 }
 
 /// Whether pair (k, m) of a secondary node is beyond its type's reach
-/// ([`InterfaceType::free_beyond`]), from the positions alone (outside the
-/// ball of the segment's nodes, else by the distance to its closest point,
-/// the kernel's own): its memory then takes [`InterfaceType::when_free`],
-/// as the kernel would do. A pair whose nodes are not all on this rank is
-/// left to `pair_values`, which skips it the same way.
+/// ([`InterfaceType::free_beyond`]): its memory then takes
+/// [`InterfaceType::when_free`], as the kernel would do. First by its
+/// distance at the sort alone, `d_sort`, reading nothing: apart from a
+/// common translation, which no distance sees, no node has moved more than
+/// `v.motion` since, and every point of a segment is a convex combination
+/// of its nodes, so the distance now is at least d_sort − 2·motion. Then
+/// from the positions (outside the ball of the segment's nodes, else by the
+/// distance to its closest point, the kernel's own). A pair whose nodes are
+/// not all on this rank is left to `pair_values`, which skips it the same
+/// way.
 fn surely_free<T: InterfaceType>(
     ty: &T,
     v: &PassView,
     k: usize,
     m: u32,
+    d_sort: f64,
     ns: &NodeState,
     st: &mut PairState,
 ) -> bool {
@@ -579,21 +595,24 @@ fn surely_free<T: InterfaceType>(
     let Some(reach) = ty.free_beyond(v.it, v.p, k, m as usize, ns, st) else {
         return false;
     };
-    let s = sec.nodes[0] as usize;
-    let Some(xm) = seg_values(&v.p.segs[m as usize], v.avail, v.cx) else {
-        return false;
-    };
-    let tri = v.p.is_tri(m as usize);
-    if !geo::beyond_reach(v.cx[s], &xm, tri, reach) && geo::project(v.cx[s], &xm, tri).dist < reach
-    {
-        return false;
+    if d_sort - 2.0 * v.motion < reach {
+        let s = sec.nodes[0] as usize;
+        let Some(xm) = seg_values(&v.p.segs[m as usize], v.avail, v.cx) else {
+            return false;
+        };
+        let tri = v.p.is_tri(m as usize);
+        if !geo::beyond_reach(v.cx[s], &xm, tri, reach)
+            && geo::project(v.cx[s], &xm, tri).dist < reach
+        {
+            return false;
+        }
     }
     ty.when_free(st);
     true
 }
 
 /// A node's distance to a segment as the sort measures it for the motion
-/// bound of [`moved_free`]: the distance to the segment's closest point
+/// bound of [`surely_free`]: the distance to the segment's closest point
 /// (`segment_geometry::project`), less an allowance for the round-off of
 /// this and of the kernel's own distance (10⁻⁹ of the largest coordinate,
 /// far above it, far below any gap).
@@ -605,34 +624,6 @@ pub(super) fn sort_distance(xs: V3, xm: &[V3; 4], tri: bool) -> f64 {
         .flat_map(|x| x.iter())
         .fold(0.0f64, |a, &c| a.max(c.abs()));
     geo::project(xs, xm, tri).dist - 1e-9 * scale
-}
-
-/// Whether pair (k, m) is beyond its type's reach ([`InterfaceType::
-/// free_beyond`]) by its distance at the sort alone, `d`: apart from a
-/// common translation, which no distance sees, no node has moved more than
-/// `v.motion` since, and every point of a segment is a convex combination
-/// of its nodes, so the distance now is at least d − 2·motion.
-/// Its memory then takes [`InterfaceType::when_free`], as the kernel would
-/// do; nothing is gathered.
-fn moved_free<T: InterfaceType>(
-    ty: &T,
-    v: &PassView,
-    k: usize,
-    m: u32,
-    d: f64,
-    ns: &NodeState,
-    st: &mut PairState,
-) -> bool {
-    if ns.off_segs.binary_search(&m).is_ok() {
-        return true;
-    }
-    match ty.free_beyond(v.it, v.p, k, m as usize, ns, st) {
-        Some(reach) if d - 2.0 * v.motion >= reach => {
-            ty.when_free(st);
-            true
-        }
-        _ => false,
-    }
 }
 
 /// Contributions of one pair: +w_j·F on the secondary side's nodes, −N_i·F
@@ -733,7 +724,7 @@ mod tests {
         }
     }
 
-    /// The motion bound of `moved_free`: after any motion of the node and
+    /// The motion bound of `surely_free`: after any motion of the node and
     /// the segment's nodes that differs from a common translation by at
     /// most `motion` (`relative_motion` of their displacements), the
     /// kernel's distance is at least the sort's distance less 2·motion, for

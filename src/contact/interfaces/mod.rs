@@ -523,6 +523,27 @@ pub fn bound_curve(
         .ok_or_else(|| format!("{kw}, field {field}: /FUNCT/{id} is not defined"))
 }
 
+/// [`bound_curve`] for an optional field: id 0 names no curve.
+pub fn optional_curve(
+    m: &model::Model,
+    id: model::Id,
+    kw: &str,
+    field: &str,
+) -> Result<Option<model::Function>, String> {
+    match id {
+        0 => Ok(None),
+        id => bound_curve(m, id, kw, field).map(Some),
+    }
+}
+
+/// An optional curve's value at x over its abscissa scale, `none` without
+/// a curve (a factor's 1, a term's 0).
+pub fn curve_at(f: &Option<model::Function>, x: f64, ascale: f64, none: f64) -> f64 {
+    f.as_ref().map_or(none, |f| {
+        crate::kinematics::function::scaled(f, x, ascale, 1.0)
+    })
+}
+
 /// Work done on a type known at compile time ([`TypeOptions::visit`]).
 pub trait TypeVisitor {
     type Out;

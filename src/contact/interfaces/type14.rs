@@ -89,7 +89,7 @@ impl Type14 {
         if self.damping_of_speed.is_none() && self.damping_of_force.is_none() {
             return self.visc * 2.0 * (k * m).sqrt();
         }
-        let g = |f: &Option<Function>, x: f64| f.as_ref().map_or(1.0, |f| function::eval(f, x));
+        let g = |f: &Option<Function>, x: f64| super::curve_at(f, x, 1.0, 1.0);
         self.visc * g(&self.damping_of_speed, v_n) * g(&self.damping_of_force, f_e)
     }
 
@@ -155,13 +155,7 @@ impl InterfaceType for Type14 {
         if self.fct_id_ld != 0 {
             self.load = Some(super::bound_curve(m, self.fct_id_ld, kw, "fct_IDld")?);
         }
-        let curve = |id: model::Id, field: &str| -> Result<Option<Function>, String> {
-            Ok(if id == 0 {
-                None
-            } else {
-                Some(super::bound_curve(m, id, kw, field)?)
-            })
-        };
+        let curve = |id: model::Id, field: &str| super::optional_curve(m, id, kw, field);
         self.friction_factor = curve(self.fct_ids[0], "fct_IDf")?;
         self.damping_of_speed = curve(self.fct_ids[1], "fct_IDd1")?;
         self.damping_of_force = curve(self.fct_ids[2], "fct_IDd2")?;
@@ -260,10 +254,7 @@ impl InterfaceType for Type14 {
         let f_n = f_e - c_d * v_n;
         let kt = if c.dt > 0.0 { k + 2.0 * c_d / c.dt } else { k };
         let law = &c.it.friction;
-        let mu = match &self.friction_factor {
-            Some(g) => law.fric * function::eval(g, f_e),
-            None => law.fric,
-        };
+        let mu = law.fric * super::curve_at(&self.friction_factor, f_e, 1.0, 1.0);
         let f_t = ellipsoid::friction(law, mu, k, f_n, v_rel, n, c.dt, st);
         PairOutcome::Force(PairForce {
             fs: geo::add(geo::scale(n, f_n), f_t),

@@ -131,12 +131,6 @@ impl Type6 {
         (f, f == along)
     }
 
-    /// A curve of the node curves at x over its abscissa scale, or `none`.
-    fn at(f: &Option<Function>, x: f64, ascale: f64, none: f64) -> f64 {
-        f.as_ref()
-            .map_or(none, |f| function::scaled(f, x, ascale, 1.0))
-    }
-
     /// The normal damper of a penetrated node of elastic share `f_e` and
     /// normal speed `v_n` (positive leaving): −[Visc·v_n +
     /// Fscalev·g_dv(v_n/Ascalev)]·g_df(f_e/Ascalef), added to f_e.
@@ -145,8 +139,8 @@ impl Type6 {
         if self.visc == 0.0 && c.damping_of_speed.is_none() {
             return 0.0;
         }
-        let of_speed = self.fscalev * Self::at(&c.damping_of_speed, v_n, self.ascalev, 0.0);
-        let factor = Self::at(&c.damping_of_force, f_e, self.ascalef, 1.0);
+        let of_speed = self.fscalev * super::curve_at(&c.damping_of_speed, v_n, self.ascalev, 0.0);
+        let factor = super::curve_at(&c.damping_of_force, f_e, self.ascalef, 1.0);
         -(self.visc * v_n + of_speed) * factor
     }
 
@@ -154,8 +148,8 @@ impl Type6 {
     /// g_ff(f_e/Ascalef)·g_fv(speed/Ascalev).
     fn friction_factor(&self, f_e: f64, speed: f64) -> f64 {
         let c = &self.node_curves;
-        Self::at(&c.friction_of_force, f_e, self.ascalef, 1.0)
-            * Self::at(&c.friction_of_speed, speed, self.ascalev, 1.0)
+        super::curve_at(&c.friction_of_force, f_e, self.ascalef, 1.0)
+            * super::curve_at(&c.friction_of_speed, speed, self.ascalev, 1.0)
     }
 }
 
@@ -243,10 +237,7 @@ impl InterfaceType for Type6 {
             self.unload = Some(super::bound_curve(m, self.fct_id_ul, kw, "fct_IDul")?);
         }
         let [ff, fv, dv, df] = self.node_fct_ids;
-        let curve = |id: model::Id, field: &str| match id {
-            0 => Ok(None),
-            id => super::bound_curve(m, id, kw, field).map(Some),
-        };
+        let curve = |id: model::Id, field: &str| super::optional_curve(m, id, kw, field);
         self.node_curves = NodeCurves {
             friction_of_force: curve(ff, "fct_IDff")?,
             friction_of_speed: curve(fv, "fct_IDfv")?,
