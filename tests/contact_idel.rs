@@ -287,22 +287,144 @@ fn type5_idel_2_removes_the_segments_idel_0_keeps_them() {
     assert!(r0b.final_state_bytes() == r0.final_state_bytes());
 }
 
-/// IRM = 1 (always reverse the main normals) is not computed: the run
-/// stops with exit 2 naming it, rather than penetrate the other way.
-#[test]
-fn type5_reversed_main_normals_stop_the_run_by_name() {
-    let dir = scratch("idel-t5-irm1");
-    let d = common::deck_variant("idel_gap_t5", &dir, |i, lines| {
-        (i >= 1 && lines[i - 1].starts_with("#      IBC                 IRM"))
-            .then(|| common::set_cols(lines[i], 20, 30, 1))
+/// idel_gap_t5 (Idel 0) with `edit` applied to its lines as well.
+fn t5_run(tag: &str, edit: impl Fn(usize, &[&str]) -> Option<String>) -> Run {
+    let dir = scratch(&format!("idel-t5-{tag}"));
+    let d = deck_variant("idel_gap_t5", &dir, |i, lines| {
+        let line = edit(i, lines);
+        if inter_line(i, lines, 3) {
+            return Some(set_cols(line.as_deref().unwrap_or(lines[i]), 70, 80, 0));
+        }
+        line
     });
-    let out = common::crashsim(&["run", d.to_str().unwrap(), "--out", dir.to_str().unwrap()]);
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(2), "{err}");
+    let out = dir.join("out");
+    std::fs::create_dir_all(&out).unwrap();
+    let fin = out.join("final_state.csv");
+    let o = common::crashsim(&[
+        "run",
+        d.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--final-state",
+        fin.to_str().unwrap(),
+    ]);
+    let code = o.status.code();
     assert!(
-        err.contains("/INTER/TYPE5/1") && err.contains("IRM = 1"),
-        "{err}"
+        code == Some(0) || code == Some(3),
+        "{tag}: {code:?} {}",
+        String::from_utf8_lossy(&o.stderr)
     );
+    Run {
+        dir: out.clone(),
+        listing: Listing::read(&out.join("idel_gap_t5.out")),
+    }
+}
+
+/// The TYPE5 card line that holds IRM, with IRM = `irm`.
+fn irm(i: usize, lines: &[&str], v: i64) -> Option<String> {
+    (i >= 1 && lines[i - 1].starts_with("#      IBC                 IRM"))
+        .then(|| set_cols(lines[i], 20, 30, v))
+}
+
+/// The plate's shells written the other way round (node2 and node4
+/// swapped): their normals, and the surface's, point down, away from the
+/// cube.
+fn plate_reversed(i: usize, lines: &[&str]) -> Option<String> {
+    let f: Vec<&str> = lines[i].split_whitespace().collect();
+    let shell = f.len() == 5
+        && f[0]
+            .parse::<u32>()
+            .is_ok_and(|id| (101..=132).contains(&id));
+    shell.then(|| {
+        format!(
+            "{:>10}{:>10}{:>10}{:>10}{:>10}",
+            f[0], f[1], f[4], f[3], f[2]
+        )
+    })
+}
+
+/// IRM = 1 turns the main normals round. A plate written facing away from
+/// the cube stops it again under IRM = 1 as the plate facing it does under
+/// IRM = 0 (the shells' own frames differ, so to round-off), while under
+/// IRM = 0 the cube meets the plate's back, which TYPE5 does not see; IRM =
+/// 2 keeps shell segments as given, the same bits as 0.
+#[test]
+fn type5_irm_1_reverses_the_main_normals_2_keeps_them() {
+    let base = t5_run("irm0", |_, _| None);
+    assert!(base.listing.normal_termination());
+    let c0 = cube(&base.final_state());
+    stopped(&c0, "TYPE5, IRM = 0, plate facing the cube");
+    let flipped = t5_run("irm1-rev", |i, l| {
+        irm(i, l, 1).or_else(|| plate_reversed(i, l))
+    });
+    let c1 = cube(&flipped.final_state());
+    stopped(&c1, "TYPE5, IRM = 1, plate facing away");
+    for k in 0..3 {
+        assert!(
+            (c1.v[k] - c0.v[k]).abs() < 1e-6 * (1.0 + c0.v[k].abs()),
+            "IRM = 1 on the reversed plate against IRM = 0: {:?} vs {:?}",
+            c1.v,
+            c0.v
+        );
+    }
+    // The cube's nodes lie behind the plate's segments, deeper than the
+    // gap, from the start: TYPE5 takes that as a penetration and the
+    // energy error stops the run.
+    let back = t5_run("irm0-rev", plate_reversed);
+    assert!(
+        !back.listing.normal_termination() && back.listing.text.contains("ENERGY ERROR LIMIT"),
+        "IRM = 0 on the plate facing away: {}",
+        back.listing.text
+    );
+    let two = t5_run("irm2", |i, l| irm(i, l, 2));
+    assert!(two.final_state_bytes() == base.final_state_bytes());
+}
+
+/// The cube's bottom face as TYPE5's main surface under the plate's nodes
+/// (held in z, so they stop the cube): /SURF/SEG/6 written pointing into
+/// the cube is turned out of it by IRM = 0 (a warning says so), the same
+/// bits as the face written pointing out; IRM = 2 keeps it pointing in,
+/// the same bits as the outward face reversed by IRM = 1.
+#[test]
+fn type5_irm_0_turns_a_solid_face_out_of_its_solid() {
+    let on_face = |i: usize, l: &[&str], inward: bool, flag: i64| {
+        if i >= 1 && l[i - 1].starts_with("#  grnd_IDs  surf_IDm") {
+            return Some(set_cols(&set_cols(l[i], 0, 10, 1), 10, 20, 6));
+        }
+        if inward
+            && l[i].split_whitespace().collect::<Vec<_>>() == ["1", "1001", "1003", "1004", "1002"]
+        {
+            return Some(format!(
+                "{:>10}{:>10}{:>10}{:>10}{:>10}",
+                1, 1001, 1002, 1004, 1003
+            ));
+        }
+        irm(i, l, flag)
+    };
+    let out0 = t5_run("face-out-0", |i, l| on_face(i, l, false, 0));
+    assert!(!out0.listing.text.contains("were reversed"));
+    stopped(
+        &cube(&out0.final_state()),
+        "TYPE5 on the cube's face, IRM = 0",
+    );
+    let in0 = t5_run("face-in-0", |i, l| on_face(i, l, true, 0));
+    assert!(
+        in0.listing.text.contains(
+            "1 segment(s) of the surface of IRM pointed into their solid element and were reversed"
+        ),
+        "{}",
+        in0.listing.text
+    );
+    assert!(in0.final_state_bytes() == out0.final_state_bytes());
+    let in2 = t5_run("face-in-2", |i, l| on_face(i, l, true, 2));
+    let c2 = cube(&in2.final_state());
+    assert!(
+        (c2.v[2] - cube(&out0.final_state()).v[2]).abs() > 0.1,
+        "IRM = 2 keeps the face pointing into the cube: {:?}",
+        c2.v
+    );
+    let out1 = t5_run("face-out-1", |i, l| on_face(i, l, false, 1));
+    assert!(out1.final_state_bytes() == in2.final_state_bytes());
 }
 
 #[test]

@@ -517,3 +517,56 @@ fn an_ellipsoid_with_a_zero_semi_axis_is_a_deck_error_at_its_line() {
         "{err}"
     );
 }
+
+/// IRS and IRm (type6_drop): both surfaces written the other way round
+/// (node2 and node4 of every shell swapped, normals facing away from each
+/// other) with IRS = IRm = 1 give the block the rebound of the deck as
+/// written, 0.5 mm/ms, to round-off; with IRS = IRm = 0 the ground's
+/// segments face away from the block, which then falls through it.
+#[test]
+fn type6_irs_irm_1_turn_both_surfaces_round() {
+    let flags = |v: i64| {
+        move |i: usize, lines: &[&str]| {
+            let f: Vec<&str> = lines[i].split_whitespace().collect();
+            if i >= 1 && lines[i - 1].starts_with("#                 IRS") {
+                return Some(common::set_cols(
+                    &common::set_cols(lines[i], 10, 20, v),
+                    20,
+                    30,
+                    v,
+                ));
+            }
+            let shell = f.len() == 5
+                && f[0]
+                    .parse::<u32>()
+                    .is_ok_and(|id| (1..=25).contains(&id) || (101..=104).contains(&id))
+                && i >= 1
+                && !lines[i].starts_with('#')
+                && (lines[..i].iter().rev().find(|l| l.starts_with('/')) == Some(&"/SHELL/1")
+                    || lines[..i].iter().rev().find(|l| l.starts_with('/')) == Some(&"/SHELL/2"));
+            shell.then(|| {
+                format!(
+                    "{:>10}{:>10}{:>10}{:>10}{:>10}",
+                    f[0], f[1], f[4], f[3], f[2]
+                )
+            })
+        }
+    };
+    let dir = scratch("type6_irs1");
+    let d = common::deck_variant("type6_drop", &dir, flags(1));
+    let r = run(&d, &dir.join("out"), &RunArgs::default());
+    assert!(r.listing.normal_termination());
+    let v = rebound_speed(&r);
+    assert!(
+        (v - 0.5).abs() < 0.005,
+        "IRS = IRm = 1 on the reversed surfaces: rebound {v}"
+    );
+    let dir0 = scratch("type6_irs0_rev");
+    let d0 = common::deck_variant("type6_drop", &dir0, flags(0));
+    let r0 = run(&d0, &dir0.join("out"), &RunArgs::default());
+    let v0 = rebound_speed(&r0);
+    assert!(
+        v0 < -0.99,
+        "IRS = IRm = 0 on the reversed surfaces: the block falls through, v = {v0}"
+    );
+}

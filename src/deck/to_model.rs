@@ -208,11 +208,15 @@ fn build(deck: &Deck) -> Result<Model, InputError> {
         mass: MassSummary::default(),
         engine: deck.engine.clone(),
         warnings: Vec::new(),
+        notes: Vec::new(),
         unsupported: deck.unsupported.clone(),
     };
     // LS-DYNA's tied options without _OFFSET move their secondary nodes onto
     // the main surface before masses and element geometry are computed.
     crate::model::tie_projection::project_secondary_nodes(&mut model);
+    // IRS / IRM: the one-sided types' surfaces face the way their flags say.
+    model.notes = crate::model::segment_orientation::orient_interfaces(&mut model);
+    warnings.extend(model.notes.iter().cloned());
     let mut masses = Vec::new();
     for (set, locs) in model.elements.iter().zip(&element_locs) {
         masses.push(element_masses(&model, set, locs)?);

@@ -23,6 +23,7 @@ mod properties;
 mod property;
 mod rigid;
 pub mod segment_geometry;
+pub mod segment_orientation;
 mod skew;
 mod source_location;
 pub mod tie_projection;
@@ -287,6 +288,11 @@ pub struct Model {
     pub mass: MassSummary,
     pub engine: Option<Engine>,
     pub warnings: Vec<Warning>,
+    /// What the set-up changed of the input as the reference starter does
+    /// (segments it turned round): the run listing prints them as notes,
+    /// `check` as warnings.
+    #[serde(default)]
+    pub notes: Vec<Warning>,
     /// Keywords of the input that nothing computes (the keyword policy):
     /// `run` refuses the input while there are any, unless told to skip them.
     pub unsupported: Vec<Warning>,

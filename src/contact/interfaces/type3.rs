@@ -43,15 +43,6 @@ impl InterfaceType for Type3 {
         CandidateSearch::Walk
     }
 
-    /// IRS or IRM = 1 (always reverse a surface's segment normals) is not
-    /// computed: the one-sided penetration would face the other way.
-    fn unsupported(kind: &InterfaceKind) -> Option<&'static str> {
-        let InterfaceKind::Type3(t) = kind else {
-            return None;
-        };
-        (t.irs == 1 || t.irm == 1).then_some("reversed segment normals (IRS or IRM = 1)")
-    }
-
     fn from_card(kind: &InterfaceKind) -> Option<(Self, CardCommon)> {
         let InterfaceKind::Type3(t) = kind else {
             return None;
@@ -146,38 +137,5 @@ impl InterfaceType for Type3 {
         g: f64,
     ) -> (InitialPenetration, f64) {
         type5::initial_penetration(it, xs, xm, tri, g)
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::model::contact as card;
-
-    /// IRS or IRM = 1 is refused by name; 0 and 2 are computed.
-    #[test]
-    fn reversed_normals_are_refused_by_name() {
-        let with = |irs: i64, irm: i64| {
-            InterfaceKind::Type3(card::Type3 {
-                surf_id1: 1,
-                surf_id2: 2,
-                idel: 0,
-                stfac: 0.2,
-                fric: 0.0,
-                gap: 0.0,
-                tstart: 0.0,
-                tstop: 1e30,
-                ibc: [false; 3],
-                irs,
-                irm,
-                ptlim: 1e30,
-            })
-        };
-        assert_eq!(Type3::unsupported(&with(0, 0)), None);
-        assert_eq!(Type3::unsupported(&with(2, 2)), None);
-        for (irs, irm) in [(1, 0), (0, 1)] {
-            let why = Type3::unsupported(&with(irs, irm)).expect("refused");
-            assert!(why.contains("IRS or IRM = 1"), "{why}");
-        }
     }
 }

@@ -39,10 +39,6 @@ impl InterfaceType for Type5 {
             Some("Inacti (moving nodes out of initial penetrations)")
         } else if t.ptlim < 1e29 {
             Some("a tangential pressure limit (Ptlim)")
-        } else if t.irm == 1 {
-            // Always reversed main normals: the one-sided penetration would
-            // face the other way.
-            Some("reversed main segment normals (IRM = 1)")
         } else {
             None
         }

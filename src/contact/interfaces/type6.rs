@@ -222,8 +222,6 @@ impl InterfaceType for Type6 {
             Some("the force correction of an initial intersection (Icor = 1)")
         } else if t.inacti != 0 {
             Some("Inacti = 5 (variable gap for initial penetrations)")
-        } else if t.irs == 1 || t.irm == 1 {
-            Some("reversed segment normals (IRS or IRm = 1)")
         } else {
             None
         }

@@ -97,6 +97,11 @@ pub(super) fn prepare(opts: &RunOptions, nranks: usize) -> Result<Prepared, Stri
         }
     }
     notes.extend(g.tied.notes());
+    notes.extend(
+        m.notes
+            .iter()
+            .map(|w| format!("{}: {}: {}", w.loc, w.keyword, w.message)),
+    );
     // N = 0 with a law the reference engine does not integrate globally.
     let mut seen = std::collections::BTreeSet::new();
     for part in &m.parts {
