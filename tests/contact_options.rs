@@ -1352,11 +1352,12 @@ fn inacti_5_6_reduce_the_gap() {
 
 // ---------------------------------------------------------------------------
 
-/// Irem_gap = 2 (card comment 14): in self-contact, a segment with a node
-/// closer than 2·Gap (initially) to a secondary node is ignored for it. A flat
-/// strip of 0.25 mm shells in self-contact with a 1 mm gap: every node is
-/// within the gap of its neighbours' neighbours, and the default (Irem_gap 1)
-/// pushes them apart from the first cycle; with Irem_gap = 2 nothing happens.
+/// Irem_gap = 2 (card comment 14): in self-contact, a segment ignores the
+/// secondary nodes within √2·gap of it along the surface, initially (the
+/// reference starter's lists, `contact::close_neighbours`). A flat strip of
+/// 0.25 mm shells in self-contact with a 1 mm gap: every node is within the
+/// gap of its neighbours' neighbours, and the default (Irem_gap 1) pushes
+/// them apart from the first cycle; with Irem_gap = 2 nothing happens.
 #[test]
 fn irem_gap_2_ignores_close_segments_in_self_contact() {
     let run_strip = |tag: &str, irem_gap: i64| -> Run {
@@ -1415,6 +1416,57 @@ fn irem_gap_2_ignores_close_segments_in_self_contact() {
     };
     assert!(moved(&s1) > 1e-3, "default: the strip is pushed apart");
     assert_eq!(moved(&s2), 0.0, "Irem_gap 2: at rest");
+}
+
+/// Irem_gap = 2 on decks/tube_fine (`make_tube.py OUT tube_fine 1 500
+/// 0.01`: 50 × 0.4 mm shells under the 1.2 mm gap of the two half
+/// thicknesses, flying free for 0.01 ms): a node lies exactly 3 × 0.4 mm =
+/// one gap from the segments three rows away, so a rule on the straight
+/// distance at the gap lets round-off decide which of them touch (hundreds
+/// of pairs with forces of 1e-12, and the contact sets the step); along the
+/// surface they are within √2·gap and no pair forms: no force, no internal
+/// energy, the shells' step at every row, the same bytes on 2 ranks. With
+/// Irem_gap = 0 the neighbours push the mesh apart and the energy error
+/// stops the run.
+#[test]
+fn irem_gap_2_leaves_out_the_neighbours_at_the_gap_of_a_fine_mesh() {
+    let d = deck("tube_fine");
+    let r = run(&d, &scratch("tube_fine"), &RunArgs::default());
+    assert!(r.listing.normal_termination());
+    assert!(!r.listing.inter.is_empty());
+    for l in &r.listing.inter {
+        assert_eq!(l.pairs, 0, "no pair at t = {}", l.t);
+        assert_eq!(l.normal, [0.0; 3]);
+    }
+    assert!(!r.listing.cycles.is_empty());
+    for c in &r.listing.cycles {
+        assert_eq!(
+            c.what, "SHELL",
+            "the shells set the step at cycle {}",
+            c.cycle
+        );
+    }
+    assert!(
+        r.listing
+            .text
+            .contains("internal 0.000000E0 (hourglass 0.000000E0 included"),
+        "{}",
+        r.listing.text
+    );
+    assert_same_final_state_on_2_ranks(&d, "tube_fine_2", &r);
+    let dir = scratch("tube_fine_irem0");
+    let d0 = common::deck_variant("tube_fine", &dir, |i, lines| {
+        (i >= 1 && lines[i - 1].contains("Irem_gap")).then(|| common::set_cols(lines[i], 80, 90, 0))
+    });
+    let out = common::crashsim(&[
+        "run",
+        d0.to_str().unwrap(),
+        "--out",
+        dir.join("out").to_str().unwrap(),
+    ]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(3), "{err}");
+    assert!(err.contains("ENERGY ERROR LIMIT"), "{err}");
 }
 
 /// Bumult only sets the sorting margin: the ball drop with Bumult 0.02 and 2

@@ -123,7 +123,6 @@ fn deepest(
     k: usize,
     cands: &[u32],
     x: &[V3],
-    x0: &[V3],
 ) -> Option<(f64, f64, V3)> {
     let s = p.sec[k];
     let xs = x[s as usize];
@@ -131,7 +130,7 @@ fn deepest(
     for &m in cands {
         let seg = &p.segs[m as usize];
         // The engine's exclusions (the sort's).
-        if super::excluded(it, seg, s, x0) {
+        if super::excluded(p, m, s) {
             continue;
         }
         let xm = [
@@ -198,8 +197,7 @@ pub fn depenetrate(m: &Model) -> Result<Depenetrated, String> {
                 for (k, sk) in skip.iter_mut().enumerate() {
                     let c = &cand.segs[cand.ptr[k]..cand.ptr[k + 1]];
                     for &mi in c {
-                        if let Some((pen, g, _)) =
-                            deepest(it, p, k, std::slice::from_ref(&mi), &x, &x0)
+                        if let Some((pen, g, _)) = deepest(it, p, k, std::slice::from_ref(&mi), &x)
                         {
                             if pen >= t7.fpenmax * g {
                                 *sk = true;
@@ -217,7 +215,7 @@ pub fn depenetrate(m: &Model) -> Result<Depenetrated, String> {
                     .filter(|&k| !skip[k])
                     .filter_map(|k| {
                         let c = &cand.segs[cand.ptr[k]..cand.ptr[k + 1]];
-                        deepest(it, p, k, c, &x, &x0)
+                        deepest(it, p, k, c, &x)
                             .map(|(pen, _, dir)| (k as u32, geo::scale(dir, pen)))
                     })
                     .collect();

@@ -13,6 +13,7 @@
 //! node's contact force summed in a fixed global order. It never names an
 //! interface type.
 
+mod close_neighbours;
 pub mod edge_geometry;
 mod edge_setup;
 mod element_data;
@@ -828,7 +829,6 @@ impl ContactSystem {
         let method = search::choose(boxes);
         let raw = search::candidates(&pts, it.max_gap + it.margin, boxes, method);
         // Exclusions.
-        let x0 = &self.setup.x0;
         let mut cand = Candidates {
             ptr: vec![0],
             segs: Vec::with_capacity(raw.segs.len()),
@@ -841,7 +841,7 @@ impl ContactSystem {
                 continue;
             }
             for &m in &raw.segs[raw.ptr[j]..raw.ptr[j + 1]] {
-                if !excluded(it, &p.segs[m as usize], s, x0) {
+                if !excluded(p, m, s) {
                     cand.segs.push(m);
                 }
             }
@@ -1014,17 +1014,11 @@ fn filter_candidates(
     cand
 }
 
-/// The sort's exclusions of node `s` against segment `seg`: the node is one
-/// of the segment's, or (Irem_gap = 2) a node of the segment was initially
-/// closer to it than 2·Gapmin.
-pub(crate) fn excluded(it: &setup::Interface, seg: &[u32; 4], s: u32, x0: &[V3]) -> bool {
-    if seg.contains(&s) {
-        return true;
-    }
-    it.ty().removes_initially_close()
-        && seg
-            .iter()
-            .any(|&c| geo::norm(geo::sub(x0[c as usize], x0[s as usize])) < 2.0 * it.gap.gapmin)
+/// The sort's exclusions of secondary cnode `s` against segment `m` of
+/// pass `p`: the node is one of the segment's, or (Irem_gap = 2) on the
+/// segment's list of close neighbours (`close_neighbours`).
+pub(crate) fn excluded(p: &setup::Pass, m: u32, s: u32) -> bool {
+    p.segs[m as usize].contains(&s) || p.removes(m as usize, s)
 }
 
 /// Inacti on an edge pass at the first sort (/INTER/TYPE11 Inacti): a pair

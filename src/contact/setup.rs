@@ -378,6 +378,16 @@ fn build_interface(
         },
     );
     let max_gap = gap_rule.max_gap(sizes.gs_max, sizes.gm_max);
+    if ty.removes_initially_close() {
+        let x0: Vec<_> = surfaces
+            .all
+            .iter()
+            .map(|&g| m.nodes.x[g as usize])
+            .collect();
+        for p in passes.iter_mut().filter(|p| p.n_sec() == p.sec.len()) {
+            (p.removed_ptr, p.removed) = super::close_neighbours::removal_lists(p, &x0, &gap_rule);
+        }
+    }
     let margin = (ty.sorting_margin() * l_mean)
         .max(0.1 * max_gap)
         .max(1e-12 * l_mean.max(1.0));
@@ -517,6 +527,8 @@ fn build_pass(
         node_segs_key,
         node_segs,
         max_diag,
+        removed_ptr: Vec::new(),
+        removed: Vec::new(),
     };
     if ty.search() == CandidateSearch::Walk {
         pass.sec_start_seg = starter_closest_segments(m, surfaces.all, &pass);

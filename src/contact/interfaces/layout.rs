@@ -78,6 +78,13 @@ pub struct Pass {
     /// index)), by segment. A dormant segment is no candidate until then.
     #[serde(default)]
     pub seg_wakers: Vec<(u32, (u8, u32))>,
+    /// Irem_gap = 2 (`close_neighbours`): the secondary nodes (cnodes,
+    /// ascending) each main segment never pairs with, CSR over `segs`;
+    /// empty when the type removes none.
+    #[serde(default)]
+    pub removed_ptr: Vec<u32>,
+    #[serde(default)]
+    pub removed: Vec<u32>,
 }
 
 impl Pass {
@@ -131,6 +138,15 @@ impl Pass {
                 &self.node_segs[self.node_segs_ptr[i] as usize..self.node_segs_ptr[i + 1] as usize]
             }
             Err(_) => &[],
+        }
+    }
+    /// Irem_gap = 2: segment `m` never pairs with secondary cnode `c`.
+    pub fn removes(&self, m: usize, c: u32) -> bool {
+        match self.removed_ptr.get(m..m + 2) {
+            Some(&[a, b]) => self.removed[a as usize..b as usize]
+                .binary_search(&c)
+                .is_ok(),
+            _ => false,
         }
     }
     pub fn is_tri(&self, s: usize) -> bool {

@@ -301,8 +301,12 @@ impl InterfaceType for Type7 {
 
     /// [`pair`] beyond reach: the friction memory cleared.
     fn when_free(&self, st: &mut PairState) {
-        st.ft = [0.0; 3];
-        st.ff = [0.0; 3];
+        // Written only when not already clear: most pairs beyond reach stay
+        // so cycle after cycle, and an unwritten memory is never written back.
+        if st.ft.iter().chain(&st.ff).any(|x| x.to_bits() != 0) {
+            st.ft = [0.0; 3];
+            st.ff = [0.0; 3];
+        }
     }
 
     /// Penetration g − d on both sides; Inacti and Fpenmax decide.
