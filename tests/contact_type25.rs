@@ -194,3 +194,78 @@ fn a_type25_run_restarted_on_another_rank_count_ends_identically() {
     let whole = run(&d, &scratch("type25_restart_whole"), &RunArgs::default());
     assert_restart_2_to_1_ends_as(&d, "type25_restart_stop", 1000, &whole);
 }
+
+/// decks/tube_fine with its TYPE7 replaced by a TYPE25 self-contact of the
+/// tube's surface (/SURF/PART/5), Igap = `igap` (other fields the defaults).
+fn tube_fine_type25(igap: i64, tag: &str) -> std::path::PathBuf {
+    let i10 = |v: i64| format!("{v:>10}");
+    let r20 = |v: f64| format!("{v:>20}");
+    let card = [
+        "/INTER/TYPE25/1".to_string(),
+        "Tube self-contact".to_string(),
+        i10(5)
+            + &i10(0)
+            + &i10(0)
+            + &i10(0)
+            + &i10(igap)
+            + &i10(0)
+            + &" ".repeat(10)
+            + &i10(0)
+            + &i10(0),
+        i10(0) + &" ".repeat(10) + &r20(0.0).repeat(4),
+        r20(0.0).repeat(2) + &i10(0) + &i10(0) + &r20(0.0),
+        r20(0.0).repeat(5),
+        format!("{:>10}", "000") + &" ".repeat(10) + &i10(0) + &i10(0) + &r20(0.0),
+        i10(0).repeat(2) + &r20(0.0),
+    ]
+    .join("\n");
+    common::deck_variant("tube_fine", &scratch(tag), |i, lines| {
+        let start = lines.iter().position(|l| l.starts_with("/INTER/TYPE7/1"))?;
+        let end = start + 1 + lines[start + 1..].iter().position(|l| l.starts_with('/'))?;
+        if i == start {
+            Some(card.clone())
+        } else if (start + 1..end).contains(&i) {
+            Some("#".to_string())
+        } else {
+            None
+        }
+    })
+}
+
+/// Igap = 2 (reference: the gap of Igap 1, and the Irem_gap = 2 lists of
+/// TYPE7, `contact::close_neighbours`): the fine tube of 50 × 0.4 mm shells
+/// under the 1.2 mm gap of its half thicknesses, flying free for 0.01 ms,
+/// forms no pair (each node's neighbours within the gap lie within √2·gap
+/// along the surface), and the shells set the step at every row; with
+/// Igap = 1 the nodes along the tube's corners pair with the segments of
+/// the next face within the gap from the first printed cycle.
+#[test]
+fn igap_2_leaves_out_the_neighbours_within_the_gap_of_a_fine_mesh() {
+    let d = tube_fine_type25(2, "tube_fine_t25_igap2");
+    let r = run(&d, &d.with_file_name("out"), &RunArgs::default());
+    assert!(r.listing.normal_termination(), "{}", r.listing.text);
+    assert!(!r.listing.inter.is_empty());
+    for l in &r.listing.inter {
+        assert_eq!(l.pairs, 0, "Igap 2: no pair at t = {}", l.t);
+    }
+    for c in &r.listing.cycles {
+        assert_eq!(
+            c.what, "SHELL",
+            "the shells set the step at cycle {}",
+            c.cycle
+        );
+    }
+    let d1 = tube_fine_type25(1, "tube_fine_t25_igap1");
+    let out = d1.with_file_name("out");
+    let o = common::crashsim(&["run", d1.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    let text = String::from_utf8_lossy(&o.stdout);
+    let pairs: Vec<u64> = text
+        .lines()
+        .filter(|l| l.trim_start().starts_with("INTER") && l.contains("PAIRS"))
+        .filter_map(|l| l.split_whitespace().last()?.parse().ok())
+        .collect();
+    assert!(
+        pairs.first().is_some_and(|&p| p > 0),
+        "Igap 1: the neighbours within the gap pair up: {pairs:?}\n{text}"
+    );
+}

@@ -101,6 +101,9 @@ impl InterfaceType for Type24 {
             } else {
                 Impact::Full
             },
+            // TYPE24 removes no neighbours by distance (its Irem_i2 is the
+            // tied nodes of TYPE2: docs/notes/irem_gap2_research.md Q5).
+            remove_close: false,
         };
         Some((Type24 { kernel }, common))
     }

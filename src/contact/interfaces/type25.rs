@@ -72,6 +72,12 @@ pub struct Type25 {
     /// How a new impact starts: TYPE25's rule, or TYPE24's.
     #[serde(default)]
     pub impact: Impact,
+    /// Igap = 2: the gap of Igap 1 (the reference: Gapmin 0, Gapmax
+    /// infinite) and each segment leaves out the secondary nodes within
+    /// √2·gap of it along the surface, as TYPE7's Irem_gap = 2
+    /// (`contact::close_neighbours`).
+    #[serde(default)]
+    pub remove_close: bool,
 }
 
 /// How a node's new impact on a segment starts.
@@ -107,7 +113,7 @@ impl InterfaceType for Type25 {
                 !matches!(t.iedge, 0 | 1 | 1000),
                 "edge-to-edge contact of solid and sharp edges (Iedge 11, 13, 22)",
             ),
-            (!matches!(t.igap, 0 | 1), "a gap option other than the half thicknesses (Igap 2, 3, 5)"),
+            (!matches!(t.igap, 0 | 1 | 2), "a gap option other than the half thicknesses (Igap 3, 5)"),
             (t.ishape == 2, "the rounded gap shape along free edges (Ishape = 2)"),
             (
                 !matches!(t.inacti, 0 | 5 | 1000),
@@ -137,6 +143,7 @@ impl InterfaceType for Type25 {
             mass_stiffness: (t.ipstif == 1).then_some((t.stfac_mdt, t.dtstif)),
             igap0: t.igap0 == 1,
             impact: Impact::Baseline,
+            remove_close: t.igap == 2,
         };
         Some((own, common))
     }
@@ -190,6 +197,10 @@ impl InterfaceType for Type25 {
 
     fn zero_gap_on_free_shell_edges(&self) -> bool {
         self.igap0
+    }
+
+    fn removes_initially_close(&self) -> bool {
+        self.remove_close
     }
 
     /// The reference engine keeps a face between two solids out of contact
