@@ -269,3 +269,45 @@ fn igap_2_leaves_out_the_neighbours_within_the_gap_of_a_fine_mesh() {
         "Igap 1: the neighbours within the gap pair up: {pairs:?}\n{text}"
     );
 }
+
+/// Igap = 3 (type25_edge, Igap0 = 0): each side's gap is at most
+/// %mesh_size times its shortest edge. The plate's edge nodes (2.5 mm
+/// shells, half thickness 0.5 mm) with %mesh_size 0.08 get 0.2 mm, the
+/// block's faces none: starting 0.3 mm over the block they meet the gap at
+/// 0.1 ms and the force grows as 4·½K·v·(t − 0.1), within 1% plus one
+/// step's approach (with Igap 1 they start inside the 0.5 mm gap).
+#[test]
+fn igap_3_caps_the_gap_at_a_fraction_of_the_mesh_size() {
+    let slack = 4.0 * half_k() * 1.0 * 1e-3;
+    let dir = scratch("type25_edge_igap3_deck");
+    let d = common::deck_variant("type25_edge", &dir, |i, lines| {
+        let below = |c: &str| i >= 1 && lines[i - 1].starts_with(c);
+        if below("#  surf_ID1") {
+            Some(common::set_cols(lines[i], 40, 50, 3))
+        } else if below("#  grnd_IDs") {
+            Some(format!(
+                "{}{:>20}{}",
+                &lines[i][..40],
+                "0.08",
+                &lines[i][60..]
+            ))
+        } else if below("#              Stmin") {
+            Some(common::set_cols(lines[i], 40, 50, 0))
+        } else {
+            None
+        }
+    });
+    let r = run(&d, &scratch("type25_edge_igap3"), &RunArgs::default());
+    assert!(r.listing.normal_termination(), "{}", r.listing.text);
+    let lines = r.listing.of(1);
+    assert!(lines.len() >= 4);
+    for l in &lines {
+        let expect = 4.0 * half_k() * 1.0 * (l.t - 0.1).max(0.0);
+        let f = l.normal[2];
+        assert!(
+            (f - expect).abs() < 0.01 * expect + slack,
+            "Igap 3, t = {}: force {f}, expected {expect}",
+            l.t
+        );
+    }
+}

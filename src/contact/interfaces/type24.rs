@@ -104,6 +104,7 @@ impl InterfaceType for Type24 {
             // TYPE24 removes no neighbours by distance (its Irem_i2 is the
             // tied nodes of TYPE2: docs/notes/irem_gap2_research.md Q5).
             remove_close: false,
+            mesh_gap: None,
         };
         Some((Type24 { kernel }, common))
     }

@@ -78,6 +78,12 @@ pub struct Type25 {
     /// (`contact::close_neighbours`).
     #[serde(default)]
     pub remove_close: bool,
+    /// Igap = 3: %mesh_size; each side's gap is then at most that fraction
+    /// of its shortest edge (the node's: of the edges around it; the
+    /// segment's: of its own), as the reference starter's i25sti3.F limits
+    /// g_s and g_m (docs/notes/type24_type25_research.md §2.4).
+    #[serde(default)]
+    pub mesh_gap: Option<f64>,
 }
 
 /// How a node's new impact on a segment starts.
@@ -113,7 +119,11 @@ impl InterfaceType for Type25 {
                 !matches!(t.iedge, 0 | 1 | 1000),
                 "edge-to-edge contact of solid and sharp edges (Iedge 11, 13, 22)",
             ),
-            (!matches!(t.igap, 0 | 1 | 2), "a gap option other than the half thicknesses (Igap 3, 5)"),
+            (!matches!(t.igap, 0 | 1 | 2 | 3), "a gap option other than the half thicknesses (Igap 5)"),
+            (
+                t.igap == 3 && t.iedge == 1,
+                "the mesh-size gap (Igap 3) on the edge-to-edge part (Iedge 1)",
+            ),
             (t.ishape == 2, "the rounded gap shape along free edges (Ishape = 2)"),
             (
                 !matches!(t.inacti, 0 | 5 | 1000),
@@ -144,6 +154,7 @@ impl InterfaceType for Type25 {
             igap0: t.igap0 == 1,
             impact: Impact::Baseline,
             remove_close: t.igap == 2,
+            mesh_gap: (t.igap == 3).then_some(t.mesh_size_pct),
         };
         Some((own, common))
     }
@@ -415,7 +426,15 @@ pub fn edge_pair(e: &EdgePair, q: &Penalty25, st: &mut PairState) -> EdgeOutcome
 impl Type25 {
     /// The pair's gap: the half thicknesses, each scaled and capped.
     fn gap(&self, p: &Pass, k: usize, m: usize) -> f64 {
-        pair_gap(&self.law, p.sec_gap[k], p.seg_gap[m])
+        match self.mesh_gap {
+            None => pair_gap(&self.law, p.sec_gap[k], p.seg_gap[m]),
+            Some(pct) => {
+                let q = &self.law;
+                let gs = (q.gap_scale * p.sec_gap[k]).min(q.gap_max_s);
+                let gm = (q.gap_scale * p.seg_gap[m]).min(q.gap_max_m);
+                gs.min(pct * p.sec_lmin[k]) + gm.min(pct * p.seg_lmin[m])
+            }
+        }
     }
 }
 
