@@ -423,19 +423,24 @@ pub(crate) fn full_b(g: &Ha8Geometry, p: usize) -> [[[f64; 3]; 8]; 6] {
     m
 }
 
-/// The point matrices of a configuration for this section.
+/// Point p's matrix of a configuration for this section.
+fn point_matrix(sec: &SolidSection, g: &Ha8Geometry, nu: f64, p: usize) -> [[[f64; 3]; 8]; 6] {
+    let mut m = if sec.isolid == 14 {
+        bbar(g, p, nu)
+    } else {
+        full_b(g, p)
+    };
+    if sec.icpre == 1 {
+        mean_dilatation(&mut m, g);
+    }
+    m
+}
+
+/// The point matrices of a configuration for this section (the step takes
+/// them one at a time, [`point_matrix`]: the whole set is 9 KB to copy).
+#[cfg(test)]
 fn point_matrices(sec: &SolidSection, g: &Ha8Geometry, nu: f64) -> [[[[f64; 3]; 8]; 6]; 8] {
-    std::array::from_fn(|p| {
-        let mut m = if sec.isolid == 14 {
-            bbar(g, p, nu)
-        } else {
-            full_b(g, p)
-        };
-        if sec.icpre == 1 {
-            mean_dilatation(&mut m, g);
-        }
-        m
-    })
+    std::array::from_fn(|p| point_matrix(sec, g, nu, p))
 }
 
 /// Strain rate [ε̇xx ε̇yy ε̇zz 2ε̇xy 2ε̇yz 2ε̇zx] of a point matrix.
@@ -470,7 +475,8 @@ fn update_points(
     st.eps_dot = mat.filter_strain_rate(st.eps_dot, mat.solid_strain_rate(&d6), dt);
     let temp = mat.temperature(st.eint / volm);
     let (mut work, mut wplas, mut failed) = (0.0, 0.0, false);
-    for (p, m) in point_matrices(sec, &g, nu).iter().enumerate() {
+    for p in 0..8 {
+        let m = &point_matrix(sec, &g, nu, p);
         let deps = rate(m, &vl).map(|d| d * dt);
         let old = st.sig_p[p];
         let (sig, ep) = (&mut st.sig_p[p], &mut st.eps_p_p[p]);
@@ -565,7 +571,8 @@ pub fn ha8_step(
     st.vol = vol;
     let mut fl = [[0.0; 3]; 8];
     let mut mean = [0.0; 6];
-    for (p, m) in point_matrices(sec, &g1, nu).iter().enumerate() {
+    for p in 0..8 {
+        let m = &point_matrix(sec, &g1, nu, p);
         let mut s = st.sig_p[p];
         for k in 0..6 {
             mean[k] += s[k] * g1.vol_p[p] / vol;
