@@ -326,25 +326,8 @@ fn irm(i: usize, lines: &[&str], v: i64) -> Option<String> {
         .then(|| set_cols(lines[i], 20, 30, v))
 }
 
-/// The plate's shells written the other way round (node2 and node4
-/// swapped): their normals, and the surface's, point down, away from the
-/// cube.
-fn plate_reversed(i: usize, lines: &[&str]) -> Option<String> {
-    let f: Vec<&str> = lines[i].split_whitespace().collect();
-    let shell = f.len() == 5
-        && f[0]
-            .parse::<u32>()
-            .is_ok_and(|id| (101..=132).contains(&id));
-    shell.then(|| {
-        format!(
-            "{:>10}{:>10}{:>10}{:>10}{:>10}",
-            f[0], f[1], f[4], f[3], f[2]
-        )
-    })
-}
-
 /// IRM = 1 turns the main normals round. A plate written facing away from
-/// the cube stops it again under IRM = 1 as the plate facing it does under
+/// the cube (its shells, /SHELL/1 and /SHELL/2, node2 and node4 swapped) stops it again under IRM = 1 as the plate facing it does under
 /// IRM = 0 (the shells' own frames differ, so to round-off), while under
 /// IRM = 0 the cube meets the plate's back, which TYPE5 does not see; IRM =
 /// 2 keeps shell segments as given, the same bits as 0.
@@ -355,7 +338,7 @@ fn type5_irm_1_reverses_the_main_normals_2_keeps_them() {
     let c0 = cube(&base.final_state());
     stopped(&c0, "TYPE5, IRM = 0, plate facing the cube");
     let flipped = t5_run("irm1-rev", |i, l| {
-        irm(i, l, 1).or_else(|| plate_reversed(i, l))
+        irm(i, l, 1).or_else(|| common::shell_reversed(i, l))
     });
     let c1 = cube(&flipped.final_state());
     stopped(&c1, "TYPE5, IRM = 1, plate facing away");
@@ -370,7 +353,7 @@ fn type5_irm_1_reverses_the_main_normals_2_keeps_them() {
     // The cube's nodes lie behind the plate's segments, deeper than the
     // gap, from the start: TYPE5 takes that as a penetration and the
     // energy error stops the run.
-    let back = t5_run("irm0-rev", plate_reversed);
+    let back = t5_run("irm0-rev", common::shell_reversed);
     assert!(
         !back.listing.normal_termination() && back.listing.text.contains("ENERGY ERROR LIMIT"),
         "IRM = 0 on the plate facing away: {}",

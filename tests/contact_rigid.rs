@@ -527,7 +527,6 @@ fn an_ellipsoid_with_a_zero_semi_axis_is_a_deck_error_at_its_line() {
 fn type6_irs_irm_1_turn_both_surfaces_round() {
     let flags = |v: i64| {
         move |i: usize, lines: &[&str]| {
-            let f: Vec<&str> = lines[i].split_whitespace().collect();
             if i >= 1 && lines[i - 1].starts_with("#                 IRS") {
                 return Some(common::set_cols(
                     &common::set_cols(lines[i], 10, 20, v),
@@ -536,20 +535,7 @@ fn type6_irs_irm_1_turn_both_surfaces_round() {
                     v,
                 ));
             }
-            let shell = f.len() == 5
-                && f[0]
-                    .parse::<u32>()
-                    .is_ok_and(|id| (1..=25).contains(&id) || (101..=104).contains(&id))
-                && i >= 1
-                && !lines[i].starts_with('#')
-                && (lines[..i].iter().rev().find(|l| l.starts_with('/')) == Some(&"/SHELL/1")
-                    || lines[..i].iter().rev().find(|l| l.starts_with('/')) == Some(&"/SHELL/2"));
-            shell.then(|| {
-                format!(
-                    "{:>10}{:>10}{:>10}{:>10}{:>10}",
-                    f[0], f[1], f[4], f[3], f[2]
-                )
-            })
+            common::shell_reversed(i, lines)
         }
     };
     let dir = scratch("type6_irs1");

@@ -109,10 +109,11 @@ impl Surface<'_> {
 
     /// The search limit around segment i.
     fn reach(&self, i: usize) -> f64 {
-        let g = if self.gap.igap == 1000 || self.gap.igap == 0 {
-            self.gap.gapmin
-        } else {
+        // Constant gap unless Igap 1-3, as `GapRule::pair_gap` reads it.
+        let g = if matches!(self.gap.igap, 1..=3) {
             self.p.seg_gap[i] + self.gs_max
+        } else {
+            self.gap.gapmin
         };
         std::f64::consts::SQRT_2 * g
     }
@@ -167,11 +168,10 @@ impl Surface<'_> {
                             continue;
                         }
                         let d = dn + self.lengths[g as usize][PAIR[a][b]];
-                        let old = sc.dist(m, i);
-                        if old == f64::INFINITY && !found.contains(&m) {
+                        if sc.stamp[m as usize] != i {
                             found.push(m);
                         }
-                        let new = old.min(d);
+                        let new = sc.dist(m, i).min(d);
                         sc.set_dist(m, i, new);
                         nearest = nearest.min(new);
                     }
@@ -197,9 +197,9 @@ impl Surface<'_> {
             level += 1;
             (frontier, nearest) = self.ring(sc, iu, level, &frontier, &mut found);
         }
+        // The segment's own nodes are stamped from the start: never found.
         let mut out: Vec<u32> = found
             .into_iter()
-            .filter(|m| !own.contains(m))
             .filter(|&m| {
                 let k = self.sec_index(m).expect("a secondary node");
                 sc.dist(m, iu) <= self.threshold(k, i)

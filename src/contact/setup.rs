@@ -384,7 +384,10 @@ fn build_interface(
             .iter()
             .map(|&g| m.nodes.x[g as usize])
             .collect();
-        for p in passes.iter_mut().filter(|p| p.n_sec() == p.sec.len()) {
+        for p in passes
+            .iter_mut()
+            .filter(|p| !p.is_edge_pass() && !p.is_segment_pass())
+        {
             (p.removed_ptr, p.removed) = super::close_neighbours::removal_lists(p, &x0, &gap_rule);
         }
     }

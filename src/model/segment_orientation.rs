@@ -16,7 +16,7 @@
 //! triangle [a, b, c, c] → [a, c, b, b].
 
 use super::{ElementKind, InterfaceKind, Model, Warning};
-use crate::vec3::{cross, dot, scale, sub, V3};
+use crate::vec3::{dot, scale, sub, V3};
 use std::collections::HashMap;
 
 /// The rule of one surface's flag.
@@ -61,14 +61,9 @@ pub fn reversed(s: [u32; 4]) -> [u32; 4] {
     }
 }
 
-/// The segment's normal, not normalised (right-hand rule on its nodes).
+/// The segment's unit normal (`segment_geometry::segment_normal`).
 fn normal(x: &[V3], s: &[u32; 4]) -> V3 {
-    let p = |i: usize| x[s[i] as usize];
-    if s[3] == s[2] {
-        cross(sub(p(1), p(0)), sub(p(2), p(0)))
-    } else {
-        cross(sub(p(2), p(0)), sub(p(3), p(1)))
-    }
+    super::segment_geometry::segment_normal(&s.map(|n| x[n as usize]), s[3] == s[2])
 }
 
 fn mean(x: &[V3], nodes: &[u32]) -> V3 {

@@ -213,6 +213,20 @@ pub fn set_cols(l: &str, a: usize, b: usize, v: i64) -> String {
     format!("{}{:>w$}{}", &l[..a], v, &l[b..], w = b - a)
 }
 
+/// Line `i` of a deck written the other way round when it is a 4-node
+/// shell of a /SHELL block (node2 and node4 swapped: the shell's normal,
+/// and its contact segment's, reversed); `None` for any other line.
+pub fn shell_reversed(i: usize, lines: &[&str]) -> Option<String> {
+    let block = lines[..i].iter().rev().find(|l| l.starts_with('/'))?;
+    let f: Vec<&str> = lines[i].split_whitespace().collect();
+    (block.starts_with("/SHELL/") && f.len() == 5 && !lines[i].starts_with('#')).then(|| {
+        format!(
+            "{:>10}{:>10}{:>10}{:>10}{:>10}",
+            f[0], f[1], f[4], f[3], f[2]
+        )
+    })
+}
+
 /// CSV rows as numbers (a non-numeric field such as `kind` reads as NaN),
 /// with the header.
 pub fn read_csv(path: &Path) -> (Vec<String>, Vec<Vec<f64>>) {

@@ -233,7 +233,7 @@ impl InterfaceType for Type11 {
             mm: [mass(&c.main, 0), mass(&c.main, 1)],
             k: self.pair_stiffness(it, p, k, m),
             gap: match &self.penalty25 {
-                Some(q) => super::type25::pair_gap(q, p.sec_gap[k], p.seg_gap[m]),
+                Some(q) => super::type25::pair_gap(q, p.sec_gap[k], p.seg_gap[m], [f64::INFINITY; 2]),
                 None => it.pair_gap(p, k, m),
             },
             viss: self.viss,

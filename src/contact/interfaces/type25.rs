@@ -355,9 +355,11 @@ pub fn gap_rule(q: &Penalty25) -> GapRule {
 }
 
 /// A pair's gap from the two sides' half shell thicknesses: each times
-/// Gap_scale and at most Gap_max_s, Gap_max_m.
-pub fn pair_gap(q: &Penalty25, gs: f64, gm: f64) -> f64 {
-    (q.gap_scale * gs).min(q.gap_max_s) + (q.gap_scale * gm).min(q.gap_max_m)
+/// Gap_scale and at most Gap_max_s, Gap_max_m, and at most its cap (Igap
+/// 3's share of the mesh size; infinite otherwise).
+pub fn pair_gap(q: &Penalty25, gs: f64, gm: f64, caps: [f64; 2]) -> f64 {
+    (q.gap_scale * gs).min(q.gap_max_s).min(caps[0])
+        + (q.gap_scale * gm).min(q.gap_max_m).min(caps[1])
 }
 
 /// TYPE25's penalty on an edge pair (Iedge; the reference engine's
@@ -424,17 +426,13 @@ pub fn edge_pair(e: &EdgePair, q: &Penalty25, st: &mut PairState) -> EdgeOutcome
 }
 
 impl Type25 {
-    /// The pair's gap: the half thicknesses, each scaled and capped.
+    /// The pair's gap: the half thicknesses, each scaled and capped (Igap 3:
+    /// also at most %mesh_size times its side's shortest edge).
     fn gap(&self, p: &Pass, k: usize, m: usize) -> f64 {
-        match self.mesh_gap {
-            None => pair_gap(&self.law, p.sec_gap[k], p.seg_gap[m]),
-            Some(pct) => {
-                let q = &self.law;
-                let gs = (q.gap_scale * p.sec_gap[k]).min(q.gap_max_s);
-                let gm = (q.gap_scale * p.seg_gap[m]).min(q.gap_max_m);
-                gs.min(pct * p.sec_lmin[k]) + gm.min(pct * p.seg_lmin[m])
-            }
-        }
+        let caps = self.mesh_gap.map_or([f64::INFINITY; 2], |pct| {
+            [pct * p.sec_lmin[k], pct * p.seg_lmin[m]]
+        });
+        pair_gap(&self.law, p.sec_gap[k], p.seg_gap[m], caps)
     }
 }
 
