@@ -468,6 +468,11 @@ fn build_pass(
     }
     let sec = &sides.sec;
     let nd = node_data(m, sec, ty);
+    let assembled = if ty.assembled_node_stiffness() {
+        super::element_data::assembled_node_stiffness(m, sec)
+    } else {
+        HashMap::new()
+    };
     let own_k: HashMap<u32, f64> = match sides.own {
         Some(own) => {
             let mut h: HashMap<u32, f64> = HashMap::new();
@@ -493,6 +498,7 @@ fn build_pass(
     };
     for &n in sec {
         let (k, g, l) = nd[&n];
+        let k = assembled.get(&n).copied().unwrap_or(k);
         sec_k.push(own_k.get(&n).copied().unwrap_or(k));
         let g = if border.contains(&n) { 0.0 } else { g };
         sec_gap.push(g);

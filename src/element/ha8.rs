@@ -28,10 +28,13 @@
 //! * **Material** per point: `Material::solid_update_at`, the element's
 //!   filtered equivalent rate and adiabatic temperature; /FAIL per point.
 //!   One failed point (Ifail_so = 1, or EPS_p_max) releases the element
-//!   progressively, as the reference engine does with its OFF flag: its
-//!   forces (and their work) are scaled by 0.8, 0.64, … and it is deleted
-//!   when the factor falls below 0.1 (11 cycles); a sudden release would
-//!   throw the nodes it held.
+//!   as the reference engine does with its OFF flag, point by point
+//!   (`docs/notes/idel_release_timing_research.md`): OFF = 0.8 after the
+//!   failed point, ×0.8 at each later point's update (the element's points
+//!   in order, cycle after cycle), 0 once below 0.1; each released point's
+//!   stress is multiplied by OFF after its update, and the element is
+//!   deleted at the end of the cycle in which OFF reaches 0 (the cycle of
+//!   the failure or the next).
 //! * **Bulk viscosity** q from the centre dilatation, as `hex8`.
 //! * **Time step** (note eq. 17): Δx = min_p 8 det J(ξ_p) / A_med with A_med
 //!   the largest median cross-section |j_η × j_ζ|/16 (…); 1 on a unit cube.
@@ -353,9 +356,9 @@ pub struct Ha8State {
     /// Filtered equivalent strain rate of the element.
     pub eps_dot: f64,
     /// Release after failure, as the reference engine does it (its OFF
-    /// flag): 0 while no point has failed; then the factor of the element's
-    /// forces, 0.8 at the failure and ×0.8 per cycle, the element deleted
-    /// below 0.1 (about 11 cycles).
+    /// flag): 0 while no point has failed; then OFF, 0.8 after the failed
+    /// point and ×0.8 at each later point update, the element deleted in
+    /// the cycle it falls below 0.1 (`release_at_point`).
     pub off: f64,
     pub deleted: bool,
 }
@@ -482,22 +485,46 @@ fn update_points(
         let (sig, ep) = (&mut st.sig_p[p], &mut st.eps_p_p[p]);
         let ep0 = *ep;
         let wp = mat.solid_update_at(sig, ep, deps, st.eps_dot, temp);
-        let mut gone = mat.has_failed(*ep);
-        if let (Some(f), false) = (&sec.failure, gone) {
-            let tstar = mat.homologous_temperature(temp);
-            let at = FailAt {
-                rate: st.eps_dot,
-                tstar,
-                ..Default::default()
-            };
-            gone = f.solid(sig, &mut st.dmg_p[p], *ep - ep0, &at);
+        if st.off != 0.0 {
+            // Released: the stress scaled by OFF (0 once it reached 0),
+            // which then decays.
+            let off = st.off.max(0.0);
+            *sig = sig.map(|c| c * off);
+            if st.off > 0.0 {
+                st.off = release_at_point(st.off);
+            }
+        } else {
+            let mut gone = mat.has_failed(*ep);
+            if let (Some(f), false) = (&sec.failure, gone) {
+                let tstar = mat.homologous_temperature(temp);
+                let at = FailAt {
+                    rate: st.eps_dot,
+                    tstar,
+                    ..Default::default()
+                };
+                gone = f.solid(sig, &mut st.dmg_p[p], *ep - ep0, &at);
+            }
+            if gone {
+                st.off = 0.8;
+            }
         }
-        failed |= gone;
+        failed |= st.off < 0.0;
         let w: f64 = (0..6).map(|k| 0.5 * (old[k] + sig[k]) * deps[k]).sum();
         work += w * g.vol_p[p];
         wplas += wp * g.vol_p[p];
     }
     Some((work, wplas, failed, (-(d6[0] + d6[1] + d6[2])).max(0.0)))
+}
+
+/// OFF after one more point update of a released element (reference
+/// FAIL_JOHNSON, at each call: 0 below 0.1, else ×0.8); a negative value
+/// marks it reached 0 (no stress from the next point on).
+fn release_at_point(off: f64) -> f64 {
+    if off < 0.1 {
+        -1.0
+    } else {
+        off * 0.8
+    }
 }
 
 /// One explicit step of one HA8 brick: stresses from x^{n+1} and v^{n+½},
@@ -536,36 +563,19 @@ pub fn ha8_step(
         compress = c;
         out.d_eint = work;
         out.d_eplas = wplas;
-        if failed && st.off == 0.0 {
-            st.off = 1.0;
-        }
-    }
-    // Progressive release of a failed element (reference engine: OFF
-    // starts at 0.8 and decays by 0.8 per cycle; forces and the work they
-    // do are scaled by it).
-    let factor = if st.off > 0.0 {
-        if dt > 0.0 {
-            st.off *= 0.8;
-        }
-        if st.off < 0.1 {
-            st.eint += out.d_eint * st.off;
-            st.eplas += out.d_eplas;
+        // OFF reached 0 at one of the points: this cycle's forces are the
+        // last (the points after it carry no stress), then the element is gone.
+        if failed {
             st.deleted = true;
             out.failed = true;
-            out.f = [[0.0; 3]; 8];
-            return out;
         }
-        st.off
-    } else {
-        1.0
-    };
+    }
     // Bulk viscosity (MQVISCB) from the centre dilatation.
     let mut q = 0.0;
     if compress > 0.0 {
         q = super::hex8::bulk_viscosity(sec, st.vol0, vol, compress);
         out.d_eint += q * compress * vol * dt;
     }
-    out.d_eint *= factor;
     st.eint += out.d_eint;
     st.eplas += out.d_eplas;
     st.vol = vol;
@@ -588,7 +598,7 @@ pub fn ha8_step(
     }
     let rt = crate::kinematics::rigid_body::transpose(&r1);
     for a in 0..8 {
-        out.f[a] = mat_vec(&rt, fl[a].map(|f| f * factor));
+        out.f[a] = mat_vec(&rt, fl[a]);
     }
     st.sig = super::hex8::rotate_voigt(&rt, &mean);
     st.eps_p = st.eps_p_p.iter().sum::<f64>() / 8.0;
@@ -786,6 +796,68 @@ mod tests {
         let mut r = resolved(14, 0.0, 0.0, 0.0);
         r.icpre = icpre;
         ha8_section(&r, &m).unwrap()
+    }
+
+    /// /FAIL/JOHNSON (Ifail_so 1) on an HA8 in homogeneous pure shear: the
+    /// eight points reach ε_f in one step; the first (point 0) fails and
+    /// each later point's stress is scaled by OFF = 0.8, 0.64, … (the
+    /// reference's OFF per point call), OFF ends the step at 0.8⁸; in the
+    /// next step it falls below 0.1 at point 2, point 3 takes the last
+    /// factor, points 4-7 no stress, and the element is deleted then.
+    #[test]
+    fn failure_releases_the_element_point_by_point() {
+        use crate::element::hex8::tests::{jc_aluminium, jc_failure_at_0_2};
+        let mut s = ha8_section(&resolved(14, 0.0, 0.0, 0.0), &jc_aluminium()).unwrap();
+        s.failure = Some(jc_failure_at_0_2());
+        let mut x = crate::element::hex8::tests::unit_cube();
+        let mut st = ha8_init(&s, &x);
+        let (rate, dt) = (1.0, 1e-4);
+        let shear = |x: &[[f64; 3]; 8]| -> [[f64; 3]; 8] {
+            std::array::from_fn(|a| {
+                [
+                    0.5 * rate * (x[a][1] - 0.5),
+                    0.5 * rate * (x[a][0] - 0.5),
+                    0.0,
+                ]
+            })
+        };
+        let step = |x: &mut [[f64; 3]; 8], st: &mut Ha8State| {
+            let v = shear(x);
+            for a in 0..8 {
+                for k in 0..3 {
+                    x[a][k] += dt * v[a][k];
+                }
+            }
+            ha8_step(&s, x, &shear(x), dt, st)
+        };
+        let mut n = 0;
+        while st.off == 0.0 {
+            assert!(!step(&mut x, &mut st).failed);
+            n += 1;
+            assert!(n < 100_000, "never failed: eps_p {}", st.eps_p);
+        }
+        assert!(
+            st.eps_p_p.iter().all(|&e| e >= 0.2 - 1e-9),
+            "{:?}",
+            st.eps_p_p
+        );
+        assert!((st.off - 0.8f64.powi(8)).abs() < 1e-12, "{}", st.off);
+        let s0 = st.sig_p[0][3];
+        assert!(s0.abs() > 0.1, "the shear stress at failure: {s0}");
+        for p in 1..8 {
+            let want = s0 * 0.8f64.powi(p as i32);
+            assert!((st.sig_p[p][3] - want).abs() < 1e-9 * s0.abs(), "point {p}");
+        }
+        let o = step(&mut x, &mut st);
+        assert!(o.failed && st.deleted && st.off < 0.0);
+        assert!(st.sig_p[3][3].abs() > 0.0);
+        assert!(st.sig_p[4..].iter().all(|s| s.iter().all(|&c| c == 0.0)));
+        assert!(
+            o.f.iter().flatten().any(|&f| f != 0.0),
+            "the last step's forces"
+        );
+        let o = step(&mut x, &mut st);
+        assert!(o.failed && o.f.iter().flatten().all(|&f| f == 0.0));
     }
 
     /// A rigid rotation of a stressed element keeps its stress in the

@@ -1571,13 +1571,9 @@ pub(crate) mod tests {
         assert_eq!(SolidSection::for_tetra(&r, &m).unwrap().isolid, 0);
     }
 
-    /// /FAIL/JOHNSON on a brick in pure shear, D3 = 0: ε_f = D1 + D2 whatever
-    /// the small pressure of the (not exactly isochoric) prescribed motion;
-    /// the damage is ε_p/ε_f all along and the element is deleted in the
-    /// step where its plastic strain passes ε_f, not before.
-    #[test]
-    fn johnson_cook_failure_deletes_at_the_failure_strain() {
-        let card = crate::model::MaterialSpec {
+    /// A Johnson-Cook aluminium (E 70, ν 0.3; a 0.15, b 0.2, n 0.6).
+    pub(crate) fn jc_aluminium() -> Material {
+        Material::from_card(&crate::model::MaterialSpec {
             id: 1,
             unit_id: 0,
             title: String::new(),
@@ -1590,9 +1586,12 @@ pub(crate) mod tests {
             )),
             failures: vec![],
             loc: Default::default(),
-        };
-        let m = Material::from_card(&card);
-        let mut s = SolidSection::new(&resolved(1, 0.0, 0.0, 0.0), &m).unwrap();
+        })
+    }
+
+    /// /FAIL/JOHNSON D1 = D2 = 0.1, D3 = 0 (ε_f = 0.2 whatever the
+    /// triaxiality), Ifail_so 1.
+    pub(crate) fn jc_failure_at_0_2() -> Failure {
         let jc = crate::model::JohnsonFailure {
             d: [0.1, 0.1, 0.0, 0.0, 0.0],
             eps_dot_0: 1.0,
@@ -1601,9 +1600,17 @@ pub(crate) mod tests {
             epsf_min: 0.0,
             ixfem: 0,
         };
-        s.failure = Some(Failure::Johnson(
-            crate::material::FailJohnson::new(&jc).unwrap(),
-        ));
+        Failure::Johnson(crate::material::FailJohnson::new(&jc).unwrap())
+    }
+
+    /// /FAIL/JOHNSON on a brick in pure shear, D3 = 0: ε_f = D1 + D2 whatever
+    /// the small pressure of the (not exactly isochoric) prescribed motion;
+    /// the damage is ε_p/ε_f all along and the element is deleted in the
+    /// step where its plastic strain passes ε_f, not before.
+    #[test]
+    fn johnson_cook_failure_deletes_at_the_failure_strain() {
+        let mut s = SolidSection::new(&resolved(1, 0.0, 0.0, 0.0), &jc_aluminium()).unwrap();
+        s.failure = Some(jc_failure_at_0_2());
         let mut x = unit_cube();
         let mut st = hex8_init(&s, &x);
         let (rate, dt) = (1.0, 1e-4);

@@ -380,6 +380,14 @@ pub trait InterfaceType: Sync {
         true
     }
 
+    /// Whether the secondary nodes' stiffness is the reference starter's
+    /// assembled nodal stiffness (solids' B̄·(2·V_n)^(1/3) plus the shells'
+    /// mean E·t, `element_data::assembled_node_stiffness`) instead of the
+    /// largest of TYPE7's per-element rules.
+    fn assembled_node_stiffness(&self) -> bool {
+        false
+    }
+
     /// Whether a secondary node takes the force of one main segment only,
     /// the nearest of its candidates in contact ([`Self::nearness`]), with
     /// one pair memory per node (TYPE25: the reference engine keeps one

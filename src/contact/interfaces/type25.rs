@@ -199,6 +199,13 @@ impl InterfaceType for Type25 {
         true
     }
 
+    /// With Istf > 1 the reference starter gives each secondary node its
+    /// assembled stiffness (I25STSECND: Stfac·STIFINT, ASSTIFI; research
+    /// note type24_type25_research.md §8.1); Istf 0, 1, 1000 never read it.
+    fn assembled_node_stiffness(&self) -> bool {
+        true
+    }
+
     fn nearness(&self, c: &PairContext, side: i8) -> Option<(f64, i8)> {
         let (p, m) = (c.p, c.m as usize);
         let g = self.gap(p, c.k, m);

@@ -14,6 +14,11 @@ use std::collections::HashMap;
 /// Element, external and contact forces at the state's positions; `dt` is
 /// the step that led there (0 at cycle 0).
 pub(super) fn all_forces(cx: &Ctx, s: &mut State, dt: f64) -> Found {
+    // Idel: the elements deleted in the last cycle leave the interfaces
+    // now, before this cycle's contact, as the reference engine removes
+    // them after its element forces and computes contact before them
+    // (docs/notes/idel_release_timing_research.md, Q1 and Q3).
+    let dead = newly_deleted(s);
     let element = compute_all(
         &mut s.blocks,
         &cx.offsets,
@@ -33,7 +38,6 @@ pub(super) fn all_forces(cx: &Ctx, s: &mut State, dt: f64) -> Found {
         };
         super::pressure::add(&on, p, &s.blocks, &s.x, s.t, &mut s.fext);
     }
-    let dead = newly_deleted(s);
     let contact = contact_forces(cx, s, dt, &dead);
     Found {
         element,
