@@ -9,6 +9,7 @@
 //! trait's byte and number primitives.
 
 pub mod exact_sum;
+pub mod keep_awake;
 mod mpi_world;
 mod serial;
 mod threads;

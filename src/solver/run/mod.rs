@@ -130,6 +130,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
         ));
     }
     let loop_started = Instant::now();
+    let awake = crate::parallel::keep_awake::KeepAwake::start();
     let mut stopped: Option<String> = None;
     let result: Result<(), RunError> = loop {
         if s.t >= cx.tstop {
@@ -151,6 +152,7 @@ pub fn run(world: &World, opts: &RunOptions) -> Result<(), RunError> {
             Err(e) => break Err(e),
         }
     };
+    drop(awake);
     // Output hook: last state and samples, XDMF (collective, also after a stop).
     ensure_at_n(&cx, &mut s);
     let result = match (result, out.finish(&octx, &mut loop_state(&mut s, &ke_of))) {
