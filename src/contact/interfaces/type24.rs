@@ -141,6 +141,14 @@ impl InterfaceType for Type24 {
         self.kernel.one_segment_per_node()
     }
 
+    /// As TYPE25: with Istf > 1 the reference starter gives each secondary
+    /// node Stfac·STIFINT, its assembled stiffness (ININTR1 → I24STSECND,
+    /// i24stslav.F); Istf 0, 1, 1000 never read it, Istf 7 takes the mass
+    /// and time-step stiffness alone.
+    fn assembled_node_stiffness(&self) -> bool {
+        true
+    }
+
     fn nearness(&self, c: &PairContext, side: i8) -> Option<(f64, i8)> {
         self.kernel.nearness(c, side)
     }
