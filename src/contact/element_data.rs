@@ -105,59 +105,43 @@ pub(super) fn solid_size(mat: &MaterialSpec, area: f64, volume: f64) -> ElementS
 
 /// The reference starter's nodal contact stiffness (ASSTIFI, with SBULK3 and
 /// CINMAS; `docs/notes/type24_type25_research.md` §8.1), the secondary node
-/// stiffness of TYPE25 with Istf > 1, before Stfac:
-/// K_s = B̄·(2·V_n)^(1/3) + Σ(E·t)/n_shells, where V_n is the node's share of
-/// its solids' volumes (V/8 of a brick, V/4 of a tetrahedron) and B̄ the
-/// bulk modulus weighted by those shares; a node on both solids and shells
-/// gets the sum, a node on neither 0.
-pub(super) fn assembled_node_stiffness(m: &Model, nodes: &[u32]) -> HashMap<u32, f64> {
-    // Per node: (Σ V share, Σ B·V share, Σ E·t, shells).
-    let mut acc: HashMap<u32, [f64; 4]> = nodes.iter().map(|&n| (n, [0.0; 4])).collect();
-    for (ki, set) in m.elements.iter().enumerate() {
-        let shell = matches!(set.kind, ElementKind::Shell4 | ElementKind::Shell3);
-        let corners = match set.kind {
-            ElementKind::Brick8 => 8.0,
-            ElementKind::Tetra4 => 4.0,
-            _ if shell => 0.0,
-            _ => continue,
-        };
-        for e in 0..set.len() {
-            let n = set.nodes_of(e);
-            if !n.iter().any(|q| acc.contains_key(q)) {
-                continue;
-            }
-            let part = &m.parts[set.part[e] as usize];
-            let Some(mat) = part.mat.map(|i| &m.materials[i as usize]) else {
-                continue;
-            };
-            let add = if shell {
-                [0.0, 0.0, mat.e * set.thick[e], 1.0]
-            } else {
-                let share = element_volume(m, ki, e).max(0.0) / corners;
-                [share, bulk(mat) * share, 0.0, 0.0]
-            };
-            for (i, q) in n.iter().enumerate() {
-                // A degenerate element repeats a node: its share counts once per corner.
-                if shell && n[..i].contains(q) {
-                    continue;
-                }
-                if let Some(a) = acc.get_mut(q) {
-                    for j in 0..4 {
-                        a[j] += add[j];
-                    }
-                }
-            }
-        }
+/// stiffness of TYPE24/25 with Istf > 1, before Stfac, summed over a node's
+/// elements: K_s = B̄·(2·V_n)^(1/3) + Σ(E·t)/n_shells, where V_n is the
+/// node's share of its solids' volumes (V/8 of a brick, V/4 of a
+/// tetrahedron) and B̄ the bulk modulus weighted by those shares; a node on
+/// both solids and shells gets the sum, a node on neither 0.
+#[derive(Clone, Copy, Default)]
+pub(super) struct AssembledStiffness {
+    volume: f64,
+    bulk_volume: f64,
+    et: f64,
+    shells: f64,
+}
+
+impl AssembledStiffness {
+    /// One solid's share: its volume over its corners, with its bulk modulus.
+    pub(super) fn add_solid(&mut self, bulk: f64, share: f64) {
+        self.volume += share;
+        self.bulk_volume += bulk * share;
     }
-    acc.into_iter()
-        .map(|(n, [v, bv, et, ns])| {
-            let solid = if v > 0.0 {
-                bv / v * (2.0 * v).cbrt()
-            } else {
-                0.0
-            };
-            let shell = if ns > 0.0 { et / ns } else { 0.0 };
-            (n, solid + shell)
-        })
-        .collect()
+
+    /// One shell's E·t.
+    pub(super) fn add_shell(&mut self, et: f64) {
+        self.et += et;
+        self.shells += 1.0;
+    }
+
+    pub(super) fn stiffness(&self) -> f64 {
+        let solid = if self.volume > 0.0 {
+            self.bulk_volume / self.volume * (2.0 * self.volume).cbrt()
+        } else {
+            0.0
+        };
+        let shell = if self.shells > 0.0 {
+            self.et / self.shells
+        } else {
+            0.0
+        };
+        solid + shell
+    }
 }

@@ -16,7 +16,7 @@ use crate::model::{ElementKind, InterfaceKind};
 use std::collections::HashMap;
 
 use super::element_data::{
-    bulk, element_volume, face_points, node_elements, shell_size, solid_size,
+    bulk, element_volume, face_points, node_elements, shell_size, solid_size, AssembledStiffness,
 };
 use super::inner_faces::{self, InnerFace};
 
@@ -101,13 +101,21 @@ impl FaceIndex {
 
 /// Per-node data from the elements touching it: (Ks, g_s, smallest edge):
 /// Ks = 0.5·E·t on shells, B·V^(1/3) on solids (card eq. (6), (7)), the largest
-/// over the node's elements; g_s = half the largest shell thickness (card
-/// comment 11); the smallest edge of the node's elements.
+/// over the node's elements, or where the type asks for it
+/// ([`InterfaceType::assembled_node_stiffness`]) the reference starter's
+/// assembled value (`element_data::AssembledStiffness`); g_s = half the
+/// largest shell thickness (card comment 11); the smallest edge of the
+/// node's elements.
 fn node_data(m: &Model, nodes: &[u32], ty: &dyn InterfaceType) -> HashMap<u32, (f64, f64, f64)> {
     let mut out: HashMap<u32, (f64, f64, f64)> = nodes
         .iter()
         .map(|&n| (n, (0.0, 0.0, f64::INFINITY)))
         .collect();
+    let mut assembled: HashMap<u32, AssembledStiffness> = if ty.assembled_node_stiffness() {
+        nodes.iter().map(|&n| (n, Default::default())).collect()
+    } else {
+        HashMap::new()
+    };
     for (ki, set) in m.elements.iter().enumerate() {
         let shell = matches!(set.kind, ElementKind::Shell4 | ElementKind::Shell3);
         let solid = matches!(set.kind, ElementKind::Brick8 | ElementKind::Tetra4);
@@ -124,6 +132,12 @@ fn node_data(m: &Model, nodes: &[u32], ty: &dyn InterfaceType) -> HashMap<u32, (
                 continue;
             };
             let (stiff, g) = if shell {
+                for (i, q) in n.iter().enumerate() {
+                    // A degenerate shell repeats a node: it counts once.
+                    if let (false, Some(a)) = (n[..i].contains(q), assembled.get_mut(q)) {
+                        a.add_shell(mat.e * set.thick[e]);
+                    }
+                }
                 let size = shell_size(mat, &face_points(m, n), n.len() == 3, set.thick[e]);
                 let k = ty.element_stiffness(&size, false);
                 (
@@ -132,6 +146,11 @@ fn node_data(m: &Model, nodes: &[u32], ty: &dyn InterfaceType) -> HashMap<u32, (
                 )
             } else {
                 let v = element_volume(m, ki, e);
+                for q in n {
+                    if let Some(a) = assembled.get_mut(q) {
+                        a.add_solid(bulk(mat), v.max(0.0) / n.len() as f64);
+                    }
+                }
                 let size = solid_size(mat, v.max(0.0).powf(2.0 / 3.0), v);
                 let k = ty.element_stiffness(&size, false);
                 (
@@ -154,6 +173,11 @@ fn node_data(m: &Model, nodes: &[u32], ty: &dyn InterfaceType) -> HashMap<u32, (
                     d.2 = d.2.min(lmin);
                 }
             }
+        }
+    }
+    for (n, a) in assembled {
+        if let Some(d) = out.get_mut(&n) {
+            d.0 = a.stiffness();
         }
     }
     out
@@ -468,11 +492,6 @@ fn build_pass(
     }
     let sec = &sides.sec;
     let nd = node_data(m, sec, ty);
-    let assembled = if ty.assembled_node_stiffness() {
-        super::element_data::assembled_node_stiffness(m, sec)
-    } else {
-        HashMap::new()
-    };
     let own_k: HashMap<u32, f64> = match sides.own {
         Some(own) => {
             let mut h: HashMap<u32, f64> = HashMap::new();
@@ -498,7 +517,6 @@ fn build_pass(
     };
     for &n in sec {
         let (k, g, l) = nd[&n];
-        let k = assembled.get(&n).copied().unwrap_or(k);
         sec_k.push(own_k.get(&n).copied().unwrap_or(k));
         let g = if border.contains(&n) { 0.0 } else { g };
         sec_gap.push(g);
