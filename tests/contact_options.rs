@@ -1780,3 +1780,70 @@ fn inacti_3_frees_a_node_from_two_segments() {
         .fold(0.0, f64::max);
     assert!(f < 1e-9, "no force: {f}");
 }
+
+/// `decks/free_plate` (10 mm LAW1 steel shells, ν = 0.3) with Ishell
+/// `ishell` and a TYPE7 self-contact on it from `tstart` (no pair ever
+/// forms: its gap is under the mesh size). Returns what set the first
+/// step (the listing) and the step (the energies file, every digit).
+fn plate_step(tag: &str, ishell: i64, tstart: Option<f64>) -> (String, f64) {
+    let dir = common::scratch(&format!("t7-nodal-step-{tag}"));
+    let deck = common::deck_variant("free_plate", &dir, |i, lines| {
+        if i >= 2 && lines[i - 2].starts_with("/PROP/SHELL/") {
+            return Some(common::set_cols(lines[i], 0, 10, ishell));
+        }
+        let tstart = tstart?;
+        (lines[i] == "/NODE").then(|| {
+            [
+                "/GRNOD/PART/7".to_string(),
+                "plate nodes".into(),
+                i10(1),
+                "/SURF/PART/8".into(),
+                "plate".into(),
+                i10(1),
+                "/INTER/TYPE7/1".into(),
+                "self-contact".into(),
+                i10(7) + &i10(8) + &i10(0).repeat(7),
+                r20(0.0).repeat(3),
+                r20(0.0).repeat(4) + &i10(0).repeat(2),
+                r20(0.0).repeat(3) + &r20(tstart) + &r20(0.0),
+                format!("{:>10}", "000") + &" ".repeat(20) + &i10(0) + &r20(0.0).repeat(3),
+                i10(0).repeat(2) + &r20(0.0) + &i10(0).repeat(3) + &r20(0.0) + &i10(0),
+                "/NODE".into(),
+            ]
+            .join("\n")
+        })
+    });
+    let args = RunArgs {
+        energies: true,
+        ..Default::default()
+    };
+    let r = run(&deck, &dir.join("out"), &args);
+    assert!(r.listing.normal_termination(), "{tag}");
+    (r.listing.cycles[0].what.clone(), r.energies().1[0][2])
+}
+
+/// With a TYPE7 active the step is also every node's own √(2M/(K_el + K_c))
+/// (the reference's dtnoda with I7KGLO; `solver::run::interface_nodal_step`).
+/// A QEPH node gets ½·V0·A11/L² from each of its shells: its step is
+/// √(1 − ν²) times the shell step and sets the first cycle (NODE), as
+/// INTERF_INT_25_hexa8's first row does in the reference listing; a
+/// Belytschko-Tsay node gets 0.81·½·V0·E/L², a step 1/0.9 of the shell's,
+/// which keeps the shell's; before Tstart neither applies.
+#[test]
+fn an_active_type7_makes_every_node_a_time_step_candidate() {
+    let alone = plate_step("qeph-alone", 24, None);
+    let qeph = plate_step("qeph", 24, Some(0.0));
+    let later = plate_step("qeph-later", 24, Some(1.0));
+    let bt = plate_step("bt", 1, Some(0.0));
+    let bt_alone = plate_step("bt-alone", 1, None);
+    assert_eq!(alone.0, "SHELL");
+    assert_eq!(qeph.0, "NODE");
+    let want = alone.1 * (1.0f64 - 0.3 * 0.3).sqrt();
+    assert!(
+        rel(qeph.1, want) < 1e-12,
+        "QEPH with TYPE7: {} against {want}",
+        qeph.1
+    );
+    assert_eq!(later, alone, "Tstart after the end");
+    assert_eq!(bt, bt_alone, "BT with TYPE7");
+}

@@ -25,5 +25,6 @@ pub mod spring;
 pub mod spring_beam;
 pub mod spring_general;
 pub mod spring_law;
+pub mod step_stiffness;
 pub mod tet4;
 pub mod truss;

@@ -194,7 +194,40 @@ impl AssemblyPlan {
             *o = acc;
         });
     }
+
+    /// One value per slot (the nodal time step's element stiffness,
+    /// `solver::run::interface_nodal_step`), first half: sends each
+    /// neighbour `value(slot)` of the slots it shares, returns what came.
+    pub fn exchange_scalar(&self, world: &World, value: impl Fn(usize) -> f64) -> ScalarRemote {
+        let send: Vec<Vec<f64>> = self
+            .send_slots
+            .iter()
+            .map(|slots| slots.iter().map(|&s| value(s as usize)).collect())
+            .collect();
+        let mut recv: Vec<Vec<f64>> = self.recv_len.iter().map(|&n| vec![0.0; n]).collect();
+        if !self.neighbours.is_empty() {
+            world.exchange_f64(&self.neighbours, &send, &mut recv);
+        }
+        ScalarRemote(recv.concat())
+    }
+
+    /// Second half: node `n`'s sum of `value(slot)` over its local slots
+    /// and what `remote` brought, in the forces' key order (the same bits
+    /// on any partition).
+    pub fn node_sum(&self, n: usize, value: impl Fn(usize) -> f64, remote: &ScalarRemote) -> f64 {
+        let mut acc = 0.0;
+        for s in &self.src[self.ptr[n] as usize..self.ptr[n + 1] as usize] {
+            acc += match *s {
+                Source::Local(i) => value(i as usize),
+                Source::Remote(i) => remote.0[i as usize],
+            };
+        }
+        acc
+    }
 }
+
+/// The values a scalar exchange brought, in the order of the plan's remote sources.
+pub struct ScalarRemote(Vec<f64>);
 
 #[cfg(test)]
 mod tests {

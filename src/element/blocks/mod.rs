@@ -112,6 +112,15 @@ pub trait Block: Send + Sync {
     fn nodal_stiffness(&self, _x: &[[f64; 3]], _contrib: &mut [[f64; SLOT]]) -> bool {
         false
     }
+    /// The element's part in its nodes' stiffness for the nodal time step
+    /// taken while a TYPE7-family interface is active
+    /// (`solver::run::interface_nodal_step`): each corner gets
+    /// c·2·(m_e/corners)/Δt_e², Δt_e the element's unscaled step; this is
+    /// c. Solids 1: the reference's ρV/Δt² per brick, a quarter to each
+    /// node (mqviscb.F, scumu3.F; `docs/notes/type25_nodal_step_research.md` §1).
+    fn nodal_step_factor(&self, _e: usize) -> f64 {
+        1.0
+    }
     /// Everything the element needs to continue after a restart (its state,
     /// integration-point stresses and strains, deleted flag), as bytes; the
     /// restart file keys it by the element's global index (`local().global[e]`).

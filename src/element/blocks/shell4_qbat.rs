@@ -108,6 +108,10 @@ impl Block for QbatBlock {
     fn steps(&self) -> &[ElemStep] {
         &self.steps
     }
+    fn nodal_step_factor(&self, e: usize) -> f64 {
+        let sec = &self.sections[self.section[e] as usize];
+        crate::element::step_stiffness::quad_physical_factor(sec.material.poisson())
+    }
     fn settle(&mut self) -> Option<(u32, &'static str)> {
         settle_common(
             &mut self.alive,

@@ -150,6 +150,12 @@ macro_rules! shell_block {
             fn steps(&self) -> &[ElemStep] {
                 &self.steps
             }
+            fn nodal_step_factor(&self, e: usize) -> f64 {
+                crate::element::step_stiffness::shell_factor(
+                    $kind,
+                    &self.sections[self.section[e] as usize],
+                )
+            }
             fn nodal_stiffness(&self, x: &[[f64; 3]], contrib: &mut [[f64; SLOT]]) -> bool {
                 let stiff: Option<NodalStiffnessFn<$nn>> = $stiff;
                 let Some(f) = stiff else {

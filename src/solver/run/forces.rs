@@ -44,6 +44,7 @@ pub(super) fn all_forces(cx: &Ctx, s: &mut State, dt: f64) -> Found {
         node: None,
         contact,
         nodal: None,
+        interface_nodal: None,
     }
 }
 

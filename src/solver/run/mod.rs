@@ -12,6 +12,7 @@ mod energy;
 mod files;
 mod forces;
 mod integrate;
+mod interface_nodal_step;
 mod kinematics;
 mod nodal_step;
 mod peak_memory;
@@ -179,6 +180,7 @@ fn cycle_zero(cx: &Ctx, s: &mut State, report: &mut Report) -> Result<(), RunErr
     }
     let mut found = forces::all_forces(cx, s, 0.0);
     found.nodal = nodal_step::nodal_steps(cx, s)?;
+    found.interface_nodal = interface_nodal_step::interface_nodal_step(cx, s);
     s.step = time_step::global_step(cx, s, found)?;
     s.dt = s.step.dt;
     let (ke0, ker0) = energy::kinetic(cx, &s.v, &s.vr, &s.bodies, &s.walls.v);
@@ -226,6 +228,7 @@ fn cycle(
     let mut found = forces::all_forces(cx, s, s.dt);
     found.node = node;
     found.nodal = nodal_step::nodal_steps(cx, s)?;
+    found.interface_nodal = interface_nodal_step::interface_nodal_step(cx, s);
     report.removals(s);
     contact_samples(s);
     s.step = time_step::global_step(cx, s, found)?;

@@ -140,6 +140,9 @@ pub(super) struct State {
     pub mass_added: f64,
     /// The stiffness slots of elements inside a rigid body (no stiffness).
     pub kinactive: Vec<u32>,
+    /// The nodal step while a TYPE7-family interface is active
+    /// (`super::interface_nodal_step`).
+    pub interface_step: InterfaceStep,
     /// Per block, the elements inside one rigid body (deactivated: no time
     /// step), `elements_in_bodies`.
     pub in_body: Vec<Vec<bool>>,
@@ -423,6 +426,25 @@ pub(super) struct DampState {
     pub primed: Vec<bool>,
 }
 
+/// The nodal step while a TYPE7-family interface is active
+/// (`super::interface_nodal_step`), built at its first use.
+#[derive(Default)]
+pub(super) struct InterfaceStep {
+    /// Per element (blocks one after the other): c·2·m_e/corners, 0 inside
+    /// a rigid body (the reference deactivates those elements).
+    pub coef: Vec<f64>,
+    /// Each block's first element in `coef`.
+    pub first: Vec<usize>,
+    /// Each contribution slot's element in `coef`.
+    pub elem_of_slot: Vec<u32>,
+    /// This cycle's element stiffness coef/Δt_e² (every element: `c_max` > 1).
+    pub k: Vec<f64>,
+    /// The largest c over every rank's elements.
+    pub c_max: f64,
+    /// Built (every rank at the same cycle: a rank without elements too).
+    pub ready: bool,
+}
+
 /// The loop's state at t = 0 before any force: initial velocities, rigid
 /// bodies' nodes at their bodies, element blocks and their assembly plan,
 /// contact, walls.
@@ -487,6 +509,7 @@ pub(super) fn initial_state(
         added: Vec::new(),
         mass_added: 0.0,
         kinactive: Vec::new(),
+        interface_step: Default::default(),
         in_body: elements_in_bodies(&cx, &blocks),
         was_alive: blocks
             .iter()

@@ -24,6 +24,11 @@ pub(super) struct Found {
     /// /DT/NODA/CST: this rank's smallest nodal step and its node id
     /// (the element steps are then not used).
     pub nodal: Option<(f64, u64)>,
+    /// While a TYPE7-family interface is active: this rank's smallest
+    /// unscaled nodal step over every node and its node id
+    /// (`super::interface_nodal_step`); the contact's own nodal term is
+    /// then in it.
+    pub interface_nodal: Option<(f64, u64)>,
 }
 
 /// The kind index that names a node (NODE) in the step's candidates.
@@ -90,10 +95,13 @@ pub(super) fn global_step(cx: &Ctx, s: &State, found: Found) -> Result<Step, Run
     let (cycle, t) = (s.cycle, s.t);
     // The nodal step carries its own scale (ΔTsca): undo the /DT one applied below.
     let none = (f64::INFINITY, usize::MAX, u64::MAX);
-    let (best, body) = match found.nodal {
+    let (mut best, body) = match found.nodal {
         Some((d, id)) => ((d / cx.g.engine.dt_scale, NODE, id), none),
         None => smallest_element_step(cx, &s.blocks, &s.in_body),
     };
+    if let Some((d, id)) = found.interface_nodal {
+        best = smaller(best, (d, NODE, id));
+    }
     let prob = found.element.map(|(k, ge, m)| {
         format!(
             "{} {} {m} at cycle {cycle}, time {t:e}",
@@ -102,10 +110,14 @@ pub(super) fn global_step(cx: &Ctx, s: &State, found: Found) -> Result<Step, Run
         )
     });
     let prob = found.node.or(prob);
-    let cs = found.contact.unwrap_or(ContactStep {
+    let mut cs = found.contact.unwrap_or(ContactStep {
         kin_dt: f64::INFINITY,
         ..Default::default()
     });
+    if found.interface_nodal.is_some() {
+        // Already in the nodal step over every node.
+        cs.nodal_q = 0.0;
+    }
     let all: Vec<(Candidate, Candidate, Option<String>, ContactStep)> =
         cx.world.allgather(&(best, body, prob, cs));
     if let Some(m) = all.iter().find_map(|(_, _, p, _)| p.clone()) {
@@ -174,7 +186,10 @@ pub(super) fn global_step(cx: &Ctx, s: &State, found: Found) -> Result<Step, Run
 /// 0.81·2M/Δt_el²: a node alone has the step Δt_el/0.9.
 const ELEMENT_PART: f64 = 0.81;
 
-/// Contact (EQ. 8.8.5.1–2; note `contact_time_step_research.md` §6): a
+/// Contact (EQ. 8.8.5.1–2; note `contact_time_step_research.md` §6): with
+/// a TYPE7-family interface active every node's own step is already a
+/// candidate (`super::interface_nodal_step`, `nodal_q` is then 0); with the
+/// other types alone a
 /// contact node's step √(2M/(K_el + K_c)) = 1/√(0.81/Δt_el² + K_c/(2M)),
 /// with Δt_el the smallest element step (no node's own is larger: the
 /// step is never overestimated), a candidate beside the element step, not
