@@ -24,6 +24,8 @@
 
 use super::setup::{Ctx, InterfaceStep, State};
 use crate::element::blocks::Block;
+use crate::element::SLOT;
+use crate::model::ElementKind;
 use rayon::prelude::*;
 
 /// The interface types whose activity makes the step nodal (I7KGLO).
@@ -101,7 +103,7 @@ fn prepare(cx: &Ctx, s: &State) -> InterfaceStep {
     for (i, (b, inside)) in s.blocks.iter().zip(&s.in_body).enumerate() {
         let nc = b.corners();
         first.push(coef.len());
-        let m = crate::output::history::element_masses(cx.g, &cx.sd.x, b.as_ref());
+        let m = element_masses(cx, s, b.as_ref());
         for (e, &m) in m.iter().enumerate() {
             let c = b.nodal_step_factor(e);
             if m > 0.0 && !inside[e] {
@@ -125,6 +127,29 @@ fn prepare(cx: &Ctx, s: &State) -> InterfaceStep {
         c_max: c_max[0],
         ready: true,
     }
+}
+
+/// Each element's mass. Trusses and beams, whose mass the output's
+/// element masses leave out, take it from their nodal stiffness when the
+/// rule first applies (`Block::nodal_stiffness`, EA/l at each end, which
+/// gives a lone element's nodes its own step: m_e = K·Δt_e²·corners/2, so
+/// c = 1 for them). Left out, a line element's nodes in contact would step
+/// as √(2M/(K_s + K_c)) instead of √(2M/(K_s + K_t + K_c)): too long.
+fn element_masses(cx: &Ctx, s: &State, b: &dyn Block) -> Vec<f64> {
+    let nc = b.corners();
+    if matches!(b.kind(), ElementKind::Truss | ElementKind::Beam) {
+        let mut k = vec![[0.0; SLOT]; nc * b.local().global.len()];
+        if b.nodal_stiffness(&s.x, &mut k) {
+            return b
+                .steps()
+                .iter()
+                .enumerate()
+                .map(|(e, st)| k[e * nc][0] * st.dt * st.dt * nc as f64 / 2.0)
+                .map(|m| if m.is_finite() { m } else { 0.0 })
+                .collect();
+        }
+    }
+    crate::output::history::element_masses(cx.g, &cx.sd.x, b)
 }
 
 /// Element `e` of `b`: coef/Δt_e², 0 once it is deleted.
