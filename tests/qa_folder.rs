@@ -35,15 +35,8 @@ fn reference_rows(listing: &Path) -> Vec<[f64; 3]> {
 /// (cycle, time) of an engine listing's last row.
 fn reference_last_cycle(listing: &Path) -> Option<(f64, f64)> {
     let text = std::fs::read_to_string(listing).unwrap_or_default();
-    text.lines()
-        .filter_map(|l| {
-            let t: Vec<&str> = l.split_whitespace().collect();
-            if t.len() < 9 || !t[5].ends_with('%') {
-                return None;
-            }
-            Some((t[0].parse::<u64>().ok()? as f64, t[1].parse::<f64>().ok()?))
-        })
-        .last()
+    let last = common::cycle_table(&text).pop()?;
+    Some((common::num(last[0]), common::num(last[1])))
 }
 
 /// Our cycles to the reference's last row over its cycles there (`None`

@@ -12,7 +12,7 @@ use crate::model::ElementKind;
 
 /// Belytschko-Tsay (Ishell 1-4; cdt3.F): STI = 0.81·½·V0·E/L² to each of the
 /// four nodes; with the corner mass ¼ρV0 that is 0.81·2·(m_e/4)/Δt_e².
-const BELYTSCHKO_TSAY: f64 = 0.81;
+pub const BELYTSCHKO_TSAY: f64 = 0.81;
 
 /// C0 triangle (Ish3n 1, 2; c3dt3.F): 0.81²·A·t·A11/L² to each of the three
 /// nodes, no ½: over 2·(ρAt/3)/Δt_e² that is 0.6561·(3/2)/(1 − ν²).

@@ -33,7 +33,7 @@ const NODAL_TYPES: [u32; 5] = [7, 11, 19, 24, 25];
 
 /// Whether some TYPE7-family interface is active at `t` (t ≥ Tstart), and
 /// no /DT/NODA takes the step instead.
-pub(super) fn nodal_rule_on(cx: &Ctx, s: &State) -> bool {
+fn nodal_rule_on(cx: &Ctx, s: &State) -> bool {
     cx.g.engine.nodal.is_none()
         && cx.g.engine.nodal_cst.is_none()
         && s.contact

@@ -180,11 +180,10 @@ pub(super) fn global_step(cx: &Ctx, s: &State, found: Found) -> Result<Step, Run
 }
 
 /// The element part of a contact node's stiffness, over 2M/Δt_el²: the
-/// reference shell gives each of its nodes K_el = 0.81·½·V·E/L² (its CDT3,
-/// research note `docs/notes/contact_time_step_research.md` §3), which with
-/// the nodal mass ¼ρV of each element and Δt_el = L/√(E/ρ) is
-/// 0.81·2M/Δt_el²: a node alone has the step Δt_el/0.9.
-const ELEMENT_PART: f64 = 0.81;
+/// Belytschko-Tsay shell's CDT3 factor (`element::step_stiffness`, research
+/// note `docs/notes/contact_time_step_research.md` §3): 0.81·2M/Δt_el², a
+/// node alone has the step Δt_el/0.9.
+const ELEMENT_PART: f64 = crate::element::step_stiffness::BELYTSCHKO_TSAY;
 
 /// Contact (EQ. 8.8.5.1–2; note `contact_time_step_research.md` §6): with
 /// a TYPE7-family interface active every node's own step is already a
